@@ -1,0 +1,69 @@
+/* servo_bc: contact laws as kernels on per-pair state (paper Sect. 2.2.2).
+ *
+ * 2D convention: for a contact between particles i and j, n is the unit
+ * vector from the centre of i to the centre of j and t = e3 x n = (-n2, n1).
+ * The overlap is dn = R_i + R_j - |x_j - x_i| (m, positive in contact). The
+ * tangential displacement increment of j relative to i at the contact is
+ *   dus = (dx_j - dx_i) . t - (R_i dtheta_i + R_j dtheta_j)          (m).
+ * Forces: on i, -fn n + fs t; on j, +fn n - fs t. Contact moments from the
+ * tangential force: m_i = R_i fs, m_j = R_j fs (N m, about e3). */
+#ifndef SBC_CONTACT_H
+#define SBC_CONTACT_H
+
+#include <math.h>
+
+/* Frictional contact law, eq. 6. */
+typedef struct sbc_frictional {
+    double kn; /* normal stiffness, N/m */
+    double ks; /* tangential stiffness, N/m; 0 = frictionless, no history */
+    double mu; /* Coulomb friction coefficient, - */
+} sbc_frictional;
+
+/* The paper's Table 4 values: kn = 1e4 N/m, ks = 2e3 N/m, mu = 0.4. */
+sbc_frictional sbc_frictional_default(void);
+
+/* 1 when the law needs a tangential spring per contact. */
+static inline int sbc_frictional_has_history(const sbc_frictional *law)
+{
+    return law->ks > 0.0 && law->mu > 0.0;
+}
+
+/* Eq. 6 with an incremental tangential spring: fn = kn dn; the spring force
+ * fs (N, in/out per-contact state) is advanced by ks dus and capped at
+ * mu fn (sliding). A contact with dn <= 0 is lost: fs is reset to 0.
+ * Returns fn (N); *sliding (may be NULL) is set to 1 when the cap acts. */
+static inline double sbc_frictional_force(const sbc_frictional *law, double dn, double dus, double *fs,
+                                          int *sliding)
+{
+    double fn, trial, limit;
+    int slide = 0;
+    if (dn <= 0.0) {
+        *fs = 0.0;
+        if (sliding)
+            *sliding = 0;
+        return 0.0;
+    }
+    fn = law->kn * dn;
+    trial = *fs + law->ks * dus;
+    limit = law->mu * fn;
+    if (fabs(trial) > limit) {
+        trial = trial < 0.0 ? -limit : limit;
+        slide = 1;
+    }
+    *fs = trial;
+    if (sliding)
+        *sliding = slide;
+    return fn;
+}
+
+/* Elastic energy stored in a contact, eq. 12: kn dn^2/2 + ks dus_e^2/2 with
+ * the elastic tangential displacement dus_e = fs/ks (J). */
+static inline double sbc_frictional_energy(const sbc_frictional *law, double dn, double fs)
+{
+    double e = dn > 0.0 ? 0.5 * law->kn * dn * dn : 0.0;
+    if (law->ks > 0.0)
+        e += 0.5 * fs * fs / law->ks;
+    return e;
+}
+
+#endif

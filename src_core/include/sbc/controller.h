@@ -1,0 +1,87 @@
+/* servo_bc: the host-agnostic controller (paper Sect. 3, Table 1).
+ *
+ * A host calls sbc_controller_step once per time step with a frame snapshot
+ * (positions, rotations and contact reactions of the frame particles, the
+ * interior's energies) and applies the frame commands it then reads from
+ * sbc_controller_commands before its next step: frame particles are moved
+ * to the target positions and rotations within that one step (velocity =
+ * (target - current)/dt), interior particles are integrated by the host.
+ *
+ * Every rank of a parallel host runs the controller on identical, reduced
+ * snapshots and therefore takes identical decisions. */
+#ifndef SBC_CONTROLLER_H
+#define SBC_CONTROLLER_H
+
+#include "sbc/frame.h"
+#include "sbc/settings.h"
+
+typedef enum sbc_event {
+    SBC_EVENT_RELAXING = 0, /* keep stepping with the same commands */
+    SBC_EVENT_CORRECTED,    /* new commands within the increment (servo correction) */
+    SBC_EVENT_INCREMENT,    /* increment accepted: a result is ready; new commands */
+    SBC_EVENT_FINISHED,     /* last increment accepted: a result is ready; stop */
+    SBC_EVENT_FAILED        /* diverged or invalid state: stop, see the error */
+} sbc_event;
+
+/* What a host measures each step. Per-frame arrays are in frame order. */
+typedef struct sbc_snapshot {
+    const double *x;         /* [2Q] frame centre positions, m */
+    const double *theta;     /* [Q] frame rotations, rad */
+    const double *force;     /* [2Q] resultant contact force on each frame particle, N */
+    const double *torque;    /* [Q] resultant contact moment on each frame particle, N m */
+    double kinetic_energy;   /* Ek of the interior particles, eq. 12, J */
+    double potential_energy; /* Ep of all contacts, eq. 12, J */
+    double overlap_sum;      /* sum over contacts of dn_c / Rbar_c (eq. 39), - */
+    long contact_count;      /* N_c, contacts with dn > 0 */
+    double rotation_sum;     /* sum over particles of |theta_i| (eq. 41), rad */
+    long particle_count;     /* P + Q */
+} sbc_snapshot;
+
+/* What the host applies to the frame before its next step. */
+typedef struct sbc_commands {
+    const double *x;                    /* [2Q] target positions, m */
+    const double *theta;                /* [Q] target rotations, rad */
+    const unsigned char *free_rotation; /* [Q] 1: the host integrates this rotation freely */
+} sbc_commands;
+
+/* One converged increment: the CSV row of DESIGN.md plus the Hill-Mandel residual. */
+typedef struct sbc_result {
+    int increment;
+    double F[4];          /* eq. 15, - */
+    double P[4];          /* eq. 23, N/m */
+    double sigma[4];      /* eq. 31, N/m */
+    double overlap_mean;  /* eq. 39, - */
+    double rotation_mean; /* eq. 41, rad */
+    int iterations;       /* servo iterations (0 for D) */
+    long relax_steps;     /* host steps spent on this increment */
+    double r_force, r_moment, r_deformation; /* final residual norms (0 for D) */
+    double hill_mandel;   /* eq. 30 relative to sbc_homogenize_work_scale */
+} sbc_result;
+
+typedef struct sbc_controller sbc_controller;
+
+/* Creates a controller for a frame (which must outlive it). mass is [Q]
+ * frame-particle masses in kg and dt the host's time step in s (both enter
+ * the servo gains of eq. 37). Returns NULL and sets err on failure. */
+sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings *settings,
+                                      const double *mass, double dt, sbc_error *err);
+void sbc_controller_free(sbc_controller *c);
+
+/* Frame commands in force now (valid until the next step call). */
+sbc_commands sbc_controller_commands(const sbc_controller *c);
+
+/* Advances the state machine by one host step. On SBC_EVENT_FAILED, err
+ * holds a message naming the BC, the increment, the step or iteration and
+ * the offending value. */
+sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err);
+
+/* The result of the last accepted increment. */
+const sbc_result *sbc_controller_result(const sbc_controller *c);
+
+/* Macroscopic F imposed at increment i: I + (i / i_tot) (F_final - I). */
+void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4]);
+
+/* Increment now being relaxed, 0 .. i_tot. */
+int sbc_controller_increment(const sbc_controller *c);
+
+#endif

@@ -1,0 +1,73 @@
+/* servo_bc: the embedded reference engine (2D discs).
+ *
+ * Explicit integration of eq. 9 (mass M = rho pi R^2, disc inertia
+ * I = M R^2 / 2), local non-viscous damping of eq. 10 on interior particles,
+ * frictional contacts of eq. 6, cell-list neighbour search. Frame particles
+ * are kinematic: each step they move to the controller's targets. The engine
+ * drives the controller exactly as an external host does:
+ *
+ *   loop: sbc_engine_forces -> sbc_engine_snapshot -> sbc_controller_step
+ *         -> sbc_engine_advance(commands)
+ */
+#ifndef SBC_ENGINE_H
+#define SBC_ENGINE_H
+
+#include "sbc/contact.h"
+#include "sbc/controller.h"
+#include "sbc/frame.h"
+
+typedef struct sbc_engine_def {
+    int n;               /* particles */
+    const double *x;     /* [2n] initial centres, m */
+    const double *r;     /* [n] radii, m */
+    double density;      /* mass per area, kg/m^2 */
+    sbc_frictional law;  /* contact law, eq. 6 */
+    double dt;           /* time step, s */
+    double alpha, beta;  /* local damping of eq. 10 (0 = none) */
+    double skin;         /* neighbour-list skin, m; <= 0: a quarter of the smallest radius */
+} sbc_engine_def;
+
+/* Paper values: density 2e3 kg/m^2, Table 4 law, dt 1e-6 s, alpha = beta = 0.7. */
+sbc_engine_def sbc_engine_def_default(void);
+
+typedef struct sbc_engine sbc_engine;
+
+sbc_engine *sbc_engine_create(const sbc_engine_def *def, sbc_error *err);
+void sbc_engine_free(sbc_engine *e);
+
+/* Makes the frame's particles kinematic (driven by commands); may be NULL
+ * for a free packing. The frame must outlive the engine. */
+void sbc_engine_set_frame(sbc_engine *e, const sbc_frame *frame);
+
+/* Contact forces, moments and energies at the current positions. */
+sbc_status sbc_engine_forces(sbc_engine *e, sbc_error *err);
+
+/* Fills a snapshot from the last sbc_engine_forces (arrays owned by the engine). */
+void sbc_engine_snapshot(sbc_engine *e, sbc_snapshot *snap);
+
+/* Advances one time step: interior particles by the equations of motion with
+ * damping, frame particles to the commanded targets (cmd may be NULL). */
+void sbc_engine_advance(sbc_engine *e, const sbc_commands *cmd);
+
+/* Read access for output writers. */
+typedef struct sbc_engine_view {
+    int n;
+    const double *x, *v, *r, *theta, *omega, *mass;
+    const unsigned char *kinematic;
+    int pair_count;
+    const int *pair_i, *pair_j;
+    sbc_frictional law;
+    long step;
+    double time; /* s */
+} sbc_engine_view;
+
+sbc_engine_view sbc_engine_get_view(const sbc_engine *e);
+
+/* Masses of the frame particles in frame order, [Q] kg (for the controller). */
+void sbc_engine_frame_masses(const sbc_engine *e, double *mass);
+
+/* Critical time step estimate 2 sqrt(M_min / (2 kn)) (s): the period limit
+ * of the stiffest particle-contact oscillator. */
+double sbc_engine_critical_dt(const sbc_engine *e);
+
+#endif

@@ -1,0 +1,55 @@
+/* servo_bc: the frame of boundary particles (paper Sect. 2.1).
+ *
+ * The frame is stored in "frame order": anticlockwise, starting at the
+ * bottom-left corner, i.e. BL, bottom edge (x ascending), BR, right edge
+ * (y ascending), TR, top edge (x descending), TL, left edge (y descending).
+ * All per-frame arrays of the library are indexed by this frame position. */
+#ifndef SBC_FRAME_H
+#define SBC_FRAME_H
+
+#include "sbc/status.h"
+
+typedef enum sbc_side {
+    SBC_SIDE_CORNER = 0,
+    SBC_SIDE_BOTTOM,
+    SBC_SIDE_RIGHT,
+    SBC_SIDE_TOP,
+    SBC_SIDE_LEFT
+} sbc_side;
+
+enum { SBC_CORNER_BL = 0, SBC_CORNER_BR, SBC_CORNER_TR, SBC_CORNER_TL };
+
+typedef struct sbc_frame {
+    int n;          /* Q, number of frame particles */
+    int *particle;  /* [Q] index of the particle in the host's packing */
+    int *side;      /* [Q] sbc_side of each frame position */
+    int *partner;   /* [Q] frame position of the periodic partner (+/-), -1 for corners */
+    int corner[4];  /* frame positions of the corners BL, BR, TR, TL */
+    double *X;      /* [2Q] reference centre positions X_q, m */
+    double *R;      /* [Q] radii R_q, m */
+    double *A;      /* [2Q] area vectors A_q of eq. 2, m (a length in 2D) */
+    double V;       /* reference volume from the corner centres, m^2 */
+} sbc_frame;
+
+/* Detects the frame from the particles' centres: particles whose centre lies
+ * within `band` (m) of the bounding box of all centres form the edges; the
+ * particle on two adjacent edges is that corner. band <= 0 selects half the
+ * smallest radius. Fails with SBC_ERR_FRAME when the four corners are not
+ * unique or an edge is empty. x is [2n], r is [n]. */
+sbc_status sbc_frame_detect(sbc_frame *frame, int n, const double *x,
+                            const double *r, double band, sbc_error *err);
+
+/* Builds the frame from an explicit list of particle indices (a host's frame
+ * group): corners and edges are found as in sbc_frame_detect, with the
+ * bounding box of the listed centres, and a listed particle outside every
+ * band is assigned to its nearest edge. */
+sbc_status sbc_frame_from_list(sbc_frame *frame, int count, const int *list,
+                               const double *x, const double *r, sbc_error *err);
+
+/* Recomputes A_q (eq. 2) and V from frame->X and frame->R. */
+void sbc_frame_update_geometry(sbc_frame *frame);
+
+/* Frees the arrays of frame and zeroes it. */
+void sbc_frame_free(sbc_frame *frame);
+
+#endif

@@ -1,0 +1,17 @@
+/* servo_bc: a line chart as a self-contained SVG file (no dependencies). */
+#ifndef SBC_PLOT_H
+#define SBC_PLOT_H
+
+#include "sbc/status.h"
+
+typedef struct sbc_series {
+    const char *label;
+    const double *y; /* [n] */
+} sbc_series;
+
+/* Writes an SVG chart of the series against x [n], with axis labels, ticks
+ * and a legend. Non-finite points are skipped. */
+sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel, const char *ylabel, int n,
+                        const double *x, int nseries, const sbc_series *series, sbc_error *err);
+
+#endif

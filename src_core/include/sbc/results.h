@@ -1,0 +1,19 @@
+/* servo_bc: the results file (DESIGN.md column order), one row per converged
+ * increment, flushed at once so that nothing is lost if a run stops. */
+#ifndef SBC_RESULTS_H
+#define SBC_RESULTS_H
+
+#include <stdio.h>
+
+#include "sbc/controller.h"
+
+/* The CSV header line (no newline). */
+extern const char sbc_csv_header[];
+
+/* Opens path for writing and writes the header. */
+sbc_status sbc_csv_open(FILE **fp, const char *path, sbc_error *err);
+
+/* Writes one row with 17 significant digits and flushes. */
+sbc_status sbc_csv_write(FILE *fp, const sbc_result *r, sbc_error *err);
+
+#endif

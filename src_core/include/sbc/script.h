@@ -1,0 +1,31 @@
+/* servo_bc: the embedded runner's script language (LAMMPS-like, one command
+ * per line, '#' comments):
+ *
+ *   dimension 2
+ *   lattice square NX NY spacing D radius R        (m)
+ *   read_packing FILE                               (x y r per line, m)
+ *   contact frictional kn KN ks KS mu MU            (N/m, N/m, -)
+ *   density RHO                                     (mass per area, kg/m^2)
+ *   timestep DT                                     (s)
+ *   servo_bc BC keyword value ...                   (DESIGN.md grammar)
+ *   vtk EVERY PREFIX                                (snapshot every EVERY increments and the last)
+ *   plot FILE.svg                                   (sigma~11, sigma~12 against F12 at the end)
+ *   run
+ *
+ * Errors name the script, line, command or keyword, the offending value and
+ * what was expected. */
+#ifndef SBC_SCRIPT_H
+#define SBC_SCRIPT_H
+
+#include <stdio.h>
+
+#include "sbc/status.h"
+
+/* Runs the script text; `name` labels error messages; progress goes to log
+ * (may be NULL). */
+sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, sbc_error *err);
+
+/* Reads and runs the script file at path. */
+sbc_status sbc_script_run_file(const char *path, FILE *log, sbc_error *err);
+
+#endif

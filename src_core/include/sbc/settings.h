@@ -1,0 +1,54 @@
+/* servo_bc: the keyword grammar shared by every host (DESIGN.md).
+ *
+ *   servo_bc BC keyword value ...        BC = D | P | T | mixed
+ *
+ * Hosts pass the words after "servo_bc" (LAMMPS: after the fix style) to
+ * sbc_settings_parse; the same words mean the same thing everywhere. */
+#ifndef SBC_SETTINGS_H
+#define SBC_SETTINGS_H
+
+#include "sbc/status.h"
+
+typedef enum sbc_bc { SBC_BC_D = 0, SBC_BC_P, SBC_BC_T, SBC_BC_MIXED } sbc_bc;
+
+#define SBC_NAME_LEN 256
+
+typedef struct sbc_settings {
+    sbc_bc bc;
+    double F[4];             /* final macroscopic F, row-major; F ramps from I; default I */
+    int increments;          /* loading increments i_tot; default 1 */
+    double tol_E;            /* relaxation: Ek/Ep <= tol_E (eq. 11); 1e-3 */
+    int window;              /* ... held for this many consecutive steps; 20 */
+    long max_relax_steps;    /* a relaxation longer than this stops the run; 1e7 */
+    int damping;             /* 1: local non-viscous damping of eq. 10 on interior particles */
+    double alpha, beta;      /* translational, rotational damping of eq. 10; 0.7, 0.7 */
+    double gain_force;       /* dimensionless g_a M / dt^2 (Table 4); 1e2 */
+    double gain_moment;      /* dimensionless g_m M R^2 / dt^2 (Table 4); 2e2 */
+    double gain_deformation; /* dimensionless g_F R^2 (Table 4); 2e-5 */
+    double tol_force;        /* eps_a (Table 4); 1e-6 */
+    double tol_moment;       /* eps for the moment part of r_a; 1e-6 */
+    double tol_deformation;  /* eps_F (Table 4); 1e-2 */
+    double predict;          /* inheritance factor n_f in [0, 1]; 0 = no prediction */
+    int max_iterations;      /* servo iterations per increment; 10000 */
+    char frame_group[SBC_NAME_LEN]; /* host group of frame particles; "" = detect */
+    char file[SBC_NAME_LEN];        /* CSV path; "" = none */
+} sbc_settings;
+
+/* The defaults listed above (paper Table 4 where it gives a value). */
+sbc_settings sbc_settings_default(void);
+
+/* Parses words[0] = BC and the keyword/value pairs after it into *s, which
+ * is first reset to the defaults. On error the message names the keyword,
+ * the offending value and what was expected, e.g.
+ *   keyword 'relax': tolE value 'abc' is not a number (expected a real > 0) */
+sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *words, sbc_error *err);
+
+/* Name of a BC ("D", "P", "T", "mixed"). */
+const char *sbc_bc_name(sbc_bc bc);
+
+/* Checked conversions used by every parser of the project. `what` names the
+ * value in the error message. */
+sbc_status sbc_parse_real(const char *word, const char *what, double *out, sbc_error *err);
+sbc_status sbc_parse_int(const char *word, const char *what, long lo, long hi, long *out, sbc_error *err);
+
+#endif

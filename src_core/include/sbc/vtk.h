@@ -1,0 +1,16 @@
+/* servo_bc: VTK snapshots of the embedded engine, for ParaView.
+ *
+ * Two legacy ASCII POLYDATA files per snapshot:
+ *   PREFIX_particles_NNNNNN.vtk  points with radius (m), rotation (rad),
+ *                                velocity (m/s) and frame flag; render with
+ *                                Glyph (sphere/disc) scaled by "radius";
+ *   PREFIX_contacts_NNNNNN.vtk   one line per contact between the centres,
+ *                                cell data normal_force (N) and overlap (m). */
+#ifndef SBC_VTK_H
+#define SBC_VTK_H
+
+#include "sbc/engine.h"
+
+sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_view *view, sbc_error *err);
+
+#endif

@@ -1,0 +1,321 @@
+/* Embedded 2D disc engine (paper Sect. 2.2). */
+#include "sbc/engine.h"
+
+#include "neighbor.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+struct sbc_engine {
+    int n;
+    double *x, *v, *f;           /* [2n] m, m/s, N */
+    double *theta, *omega, *tq;  /* [n] rad, rad/s, N m */
+    double *r, *mass, *inv_m, *inv_I;
+    unsigned char *kinematic;
+    double rmax, rmin;
+    sbc_frictional law;
+    int history;
+    double dt, alpha, beta;
+    sbc_pairs pairs;
+    const sbc_frame *frame;
+    /* per-step measures */
+    double ek, ep, overlap_sum, rotation_sum;
+    long contact_count, step;
+    /* frame-ordered snapshot buffers */
+    double *snap_x, *snap_theta, *snap_f, *snap_tq;
+};
+
+sbc_engine_def sbc_engine_def_default(void)
+{
+    sbc_engine_def d;
+    memset(&d, 0, sizeof d);
+    d.density = 2.0e3;
+    d.law = sbc_frictional_default();
+    d.dt = 1.0e-6;
+    d.alpha = d.beta = 0.7;
+    return d;
+}
+
+void sbc_engine_free(sbc_engine *e)
+{
+    if (!e)
+        return;
+    free(e->x); free(e->v); free(e->f);
+    free(e->theta); free(e->omega); free(e->tq);
+    free(e->r); free(e->mass); free(e->inv_m); free(e->inv_I);
+    free(e->kinematic);
+    free(e->snap_x); free(e->snap_theta); free(e->snap_f); free(e->snap_tq);
+    sbc_pairs_free(&e->pairs);
+    free(e);
+}
+
+sbc_engine *sbc_engine_create(const sbc_engine_def *d, sbc_error *err)
+{
+    sbc_engine *e;
+    size_t n = (size_t)d->n;
+    int k;
+    if (d->n < 1) {
+        sbc_fail(err, SBC_ERR_INPUT, "engine: no particles");
+        return NULL;
+    }
+    if (!(d->density > 0.0) || !(d->dt > 0.0) || !(d->law.kn > 0.0) || !(d->law.ks >= 0.0) || !(d->law.mu >= 0.0)) {
+        sbc_fail(err, SBC_ERR_INPUT, "engine: density, time step and kn must be positive, ks and mu non-negative");
+        return NULL;
+    }
+    e = calloc(1, sizeof *e);
+    if (!e) {
+        sbc_fail(err, SBC_ERR_NOMEM, "engine: out of memory");
+        return NULL;
+    }
+    e->n = d->n;
+    e->x = malloc(sizeof(double) * 2 * n);
+    e->v = calloc(2 * n, sizeof(double));
+    e->f = calloc(2 * n, sizeof(double));
+    e->theta = calloc(n, sizeof(double));
+    e->omega = calloc(n, sizeof(double));
+    e->tq = calloc(n, sizeof(double));
+    e->r = malloc(sizeof(double) * n);
+    e->mass = malloc(sizeof(double) * n);
+    e->inv_m = malloc(sizeof(double) * n);
+    e->inv_I = malloc(sizeof(double) * n);
+    e->kinematic = calloc(n, 1);
+    if (!e->x || !e->v || !e->f || !e->theta || !e->omega || !e->tq || !e->r || !e->mass || !e->inv_m ||
+        !e->inv_I || !e->kinematic) {
+        sbc_engine_free(e);
+        sbc_fail(err, SBC_ERR_NOMEM, "engine: out of memory for %d particles", d->n);
+        return NULL;
+    }
+    memcpy(e->x, d->x, sizeof(double) * 2 * n);
+    e->rmax = 0.0;
+    e->rmin = DBL_MAX;
+    for (k = 0; k < d->n; ++k) {
+        double R = d->r[k];
+        if (!(R > 0.0) || !isfinite(R) || !isfinite(d->x[2 * k]) || !isfinite(d->x[2 * k + 1])) {
+            sbc_fail(err, SBC_ERR_INPUT, "engine: particle %d has radius %g (expected > 0) or a non-finite centre", k,
+                     R);
+            sbc_engine_free(e);
+            return NULL;
+        }
+        e->r[k] = R;
+        e->mass[k] = d->density * M_PI * R * R;          /* M = rho pi R^2, kg */
+        e->inv_m[k] = 1.0 / e->mass[k];
+        e->inv_I[k] = 1.0 / (0.5 * e->mass[k] * R * R); /* I = M R^2 / 2 (eq. 9) */
+        if (R > e->rmax) e->rmax = R;
+        if (R < e->rmin) e->rmin = R;
+    }
+    e->law = d->law;
+    e->history = sbc_frictional_has_history(&d->law);
+    e->dt = d->dt;
+    e->alpha = d->alpha;
+    e->beta = d->beta;
+    if (sbc_pairs_init(&e->pairs, d->n, d->skin > 0.0 ? d->skin : 0.25 * e->rmin, e->history, err) != SBC_OK ||
+        sbc_pairs_build(&e->pairs, e->x, e->r, e->rmax, err) != SBC_OK) {
+        sbc_engine_free(e);
+        return NULL;
+    }
+    return e;
+}
+
+void sbc_engine_set_frame(sbc_engine *e, const sbc_frame *frame)
+{
+    int q;
+    size_t nq = frame ? (size_t)frame->n : 0;
+    memset(e->kinematic, 0, (size_t)e->n);
+    free(e->snap_x); free(e->snap_theta); free(e->snap_f); free(e->snap_tq);
+    e->snap_x = e->snap_theta = e->snap_f = e->snap_tq = NULL;
+    e->frame = frame;
+    if (!frame)
+        return;
+    for (q = 0; q < frame->n; ++q)
+        e->kinematic[frame->particle[q]] = 1;
+    e->snap_x = malloc(sizeof(double) * 2 * nq);
+    e->snap_theta = malloc(sizeof(double) * nq);
+    e->snap_f = malloc(sizeof(double) * 2 * nq);
+    e->snap_tq = malloc(sizeof(double) * nq);
+}
+
+/* Pair loop: eq. 6 forces and moments, eq. 12 energy, eq. 39 overlap sum. */
+sbc_status sbc_engine_forces(sbc_engine *e, sbc_error *err)
+{
+    const double dt = e->dt;
+    const sbc_frictional law = e->law;
+    double *restrict x = e->x, *restrict v = e->v, *restrict f = e->f;
+    double *restrict om = e->omega, *restrict tq = e->tq, *restrict r = e->r;
+    double ep = 0.0, ov = 0.0;
+    long nc = 0;
+    int k;
+    if (sbc_pairs_stale(&e->pairs, x) && sbc_pairs_build(&e->pairs, x, r, e->rmax, err) != SBC_OK)
+        return SBC_ERR_NOMEM;
+    memset(f, 0, sizeof(double) * 2 * (size_t)e->n);
+    memset(tq, 0, sizeof(double) * (size_t)e->n);
+    for (k = 0; k < e->pairs.count; ++k) {
+        int i = e->pairs.i[k], j = e->pairs.j[k];
+        double dx = x[2 * j] - x[2 * i], dy = x[2 * j + 1] - x[2 * i + 1];
+        double rs = r[i] + r[j], d2 = dx * dx + dy * dy, d, nx, ny, dn, fn, fs = 0.0, fx, fy;
+        if (d2 >= rs * rs) {
+            if (e->history)
+                e->pairs.fs[k] = 0.0;
+            continue;
+        }
+        d = sqrt(d2);
+        nx = dx / d;
+        ny = dy / d;
+        dn = rs - d;
+        if (e->history) {
+            /* t = (-ny, nx); dus = ((v_j - v_i).t - (R_i w_i + R_j w_j)) dt */
+            double dus = ((v[2 * j + 1] - v[2 * i + 1]) * nx - (v[2 * j] - v[2 * i]) * ny -
+                          (r[i] * om[i] + r[j] * om[j])) * dt;
+            fs = e->pairs.fs[k];
+            fn = sbc_frictional_force(&law, dn, dus, &fs, NULL);
+            e->pairs.fs[k] = fs;
+            tq[i] += r[i] * fs;
+            tq[j] += r[j] * fs;
+        } else {
+            fn = law.kn * dn;
+        }
+        /* force on i: -fn n + fs t */
+        fx = -fn * nx - fs * ny;
+        fy = -fn * ny + fs * nx;
+        f[2 * i] += fx;
+        f[2 * i + 1] += fy;
+        f[2 * j] -= fx;
+        f[2 * j + 1] -= fy;
+        ep += sbc_frictional_energy(&law, dn, fs);
+        ov += dn / (0.5 * rs); /* eq. 39: dn / Rbar_c */
+        ++nc;
+    }
+    e->ep = ep;
+    e->overlap_sum = ov;
+    e->contact_count = nc;
+    return SBC_OK;
+}
+
+void sbc_engine_snapshot(sbc_engine *e, sbc_snapshot *s)
+{
+    const sbc_frame *fr = e->frame;
+    int q;
+    memset(s, 0, sizeof *s);
+    if (fr) {
+        for (q = 0; q < fr->n; ++q) {
+            int p = fr->particle[q];
+            e->snap_x[2 * q] = e->x[2 * p];
+            e->snap_x[2 * q + 1] = e->x[2 * p + 1];
+            e->snap_f[2 * q] = e->f[2 * p];
+            e->snap_f[2 * q + 1] = e->f[2 * p + 1];
+            e->snap_theta[q] = e->theta[p];
+            e->snap_tq[q] = e->tq[p];
+        }
+    }
+    s->x = e->snap_x;
+    s->theta = e->snap_theta;
+    s->force = e->snap_f;
+    s->torque = e->snap_tq;
+    s->kinetic_energy = e->ek;
+    s->potential_energy = e->ep;
+    s->overlap_sum = e->overlap_sum;
+    s->contact_count = e->contact_count;
+    s->rotation_sum = e->rotation_sum;
+    s->particle_count = e->n;
+}
+
+static double sign(double a) { return (a > 0.0) - (a < 0.0); }
+
+/* Explicit first-order update of eq. 9 with the damping of eq. 10:
+ *   v += dt (f - alpha |f| sign(v)) / M,  x += dt v
+ *   w += dt (m - beta |m| sign(w)) / I,   theta += dt w
+ * Frame particles are placed on their targets, with the velocity that moves
+ * them there in this step (so that contact increments see the motion). */
+void sbc_engine_advance(sbc_engine *e, const sbc_commands *cmd)
+{
+    const double dt = e->dt, a = e->alpha, b = e->beta;
+    double *restrict x = e->x, *restrict v = e->v, *restrict f = e->f;
+    double *restrict th = e->theta, *restrict om = e->omega, *restrict tq = e->tq;
+    double ek = 0.0, rot = 0.0;
+    int k, q;
+    for (k = 0; k < e->n; ++k) {
+        double fx, fy, m;
+        if (e->kinematic[k])
+            continue;
+        fx = f[2 * k];
+        fy = f[2 * k + 1];
+        m = tq[k];
+        fx -= a * fabs(fx) * sign(v[2 * k]);
+        fy -= a * fabs(fy) * sign(v[2 * k + 1]);
+        m -= b * fabs(m) * sign(om[k]);
+        v[2 * k] += dt * fx * e->inv_m[k];
+        v[2 * k + 1] += dt * fy * e->inv_m[k];
+        om[k] += dt * m * e->inv_I[k];
+        x[2 * k] += dt * v[2 * k];
+        x[2 * k + 1] += dt * v[2 * k + 1];
+        th[k] += dt * om[k];
+        ek += 0.5 * e->mass[k] * (v[2 * k] * v[2 * k] + v[2 * k + 1] * v[2 * k + 1]) +
+              0.25 * e->mass[k] * e->r[k] * e->r[k] * om[k] * om[k];
+        rot += fabs(th[k]);
+    }
+    if (e->frame) {
+        for (q = 0; q < e->frame->n; ++q) {
+            int p = e->frame->particle[q];
+            if (cmd) {
+                v[2 * p] = (cmd->x[2 * q] - x[2 * p]) / dt;
+                v[2 * p + 1] = (cmd->x[2 * q + 1] - x[2 * p + 1]) / dt;
+                x[2 * p] = cmd->x[2 * q];
+                x[2 * p + 1] = cmd->x[2 * q + 1];
+                if (cmd->free_rotation[q]) {
+                    om[p] += dt * tq[p] * e->inv_I[p];
+                    th[p] += dt * om[p];
+                } else {
+                    om[p] = (cmd->theta[q] - th[p]) / dt;
+                    th[p] = cmd->theta[q];
+                }
+            } else {
+                v[2 * p] = v[2 * p + 1] = om[p] = 0.0;
+            }
+            rot += fabs(th[p]);
+        }
+    }
+    e->ek = ek;
+    e->rotation_sum = rot;
+    e->step++;
+}
+
+sbc_engine_view sbc_engine_get_view(const sbc_engine *e)
+{
+    sbc_engine_view w;
+    w.n = e->n;
+    w.x = e->x;
+    w.v = e->v;
+    w.r = e->r;
+    w.theta = e->theta;
+    w.omega = e->omega;
+    w.mass = e->mass;
+    w.kinematic = e->kinematic;
+    w.pair_count = e->pairs.count;
+    w.pair_i = e->pairs.i;
+    w.pair_j = e->pairs.j;
+    w.law = e->law;
+    w.step = e->step;
+    w.time = (double)e->step * e->dt;
+    return w;
+}
+
+void sbc_engine_frame_masses(const sbc_engine *e, double *mass)
+{
+    int q;
+    for (q = 0; e->frame && q < e->frame->n; ++q)
+        mass[q] = e->mass[e->frame->particle[q]];
+}
+
+double sbc_engine_critical_dt(const sbc_engine *e)
+{
+    double mmin = DBL_MAX;
+    int k;
+    for (k = 0; k < e->n; ++k)
+        if (e->mass[k] < mmin) mmin = e->mass[k];
+    return 2.0 * sqrt(mmin / (2.0 * e->law.kn));
+}

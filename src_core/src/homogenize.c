@@ -1,0 +1,93 @@
+/* Homogenized measures of the particle aggregate (paper eqs. 15, 23, 30, 31, 42). */
+#include "sbc/homogenize.h"
+
+#include <math.h>
+
+double sbc_det2(const double T[4]) { return T[0] * T[3] - T[1] * T[2]; }
+
+/* eq. 15: F_ij = (1/V) sum_q x_qi A_qj */
+void sbc_homogenize_F(const sbc_frame *f, const double *x, double F[4])
+{
+    double s[4] = {0.0, 0.0, 0.0, 0.0};
+    int q;
+    for (q = 0; q < f->n; ++q) {
+        const double *xq = &x[2 * q], *A = &f->A[2 * q];
+        s[0] += xq[0] * A[0];
+        s[1] += xq[0] * A[1];
+        s[2] += xq[1] * A[0];
+        s[3] += xq[1] * A[1];
+    }
+    for (q = 0; q < 4; ++q)
+        F[q] = s[q] / f->V;
+}
+
+/* eq. 23: P_ij = (1/V) sum_q a_qi X_qj */
+void sbc_homogenize_P(const sbc_frame *f, const double *a, double P[4])
+{
+    double s[4] = {0.0, 0.0, 0.0, 0.0};
+    int q;
+    for (q = 0; q < f->n; ++q) {
+        const double *aq = &a[2 * q], *X = &f->X[2 * q];
+        s[0] += aq[0] * X[0];
+        s[1] += aq[0] * X[1];
+        s[2] += aq[1] * X[0];
+        s[3] += aq[1] * X[1];
+    }
+    for (q = 0; q < 4; ++q)
+        P[q] = s[q] / f->V;
+}
+
+/* eq. 31: sigma = (1/det F) P F^T, i.e. sigma_ij = P_ik F_jk / det F */
+sbc_status sbc_homogenize_cauchy(const double P[4], const double F[4], double sigma[4], sbc_error *err)
+{
+    double J = sbc_det2(F);
+    if (!(J > 0.0))
+        return sbc_fail(err, SBC_ERR_GEOMETRY,
+                        "det F = %g <= 0 (F = [%g %g; %g %g]): the frame is inverted or collapsed", J, F[0],
+                        F[1], F[2], F[3]);
+    sigma[0] = (P[0] * F[0] + P[1] * F[1]) / J;
+    sigma[1] = (P[0] * F[2] + P[1] * F[3]) / J;
+    sigma[2] = (P[2] * F[0] + P[3] * F[1]) / J;
+    sigma[3] = (P[2] * F[2] + P[3] * F[3]) / J;
+    return SBC_OK;
+}
+
+/* eq. 30 with delta w_q -> w_q = x_q - F X_q (eq. 14) */
+double sbc_homogenize_hill_mandel(const sbc_frame *f, const double *a, const double *x, const double F[4],
+                                  const double P[4])
+{
+    double sum = 0.0;
+    int q;
+    for (q = 0; q < f->n; ++q) {
+        const double *X = &f->X[2 * q], *A = &f->A[2 * q], *aq = &a[2 * q], *xq = &x[2 * q];
+        double r0 = aq[0] - (P[0] * A[0] + P[1] * A[1]);
+        double r1 = aq[1] - (P[2] * A[0] + P[3] * A[1]);
+        double w0 = xq[0] - (F[0] * X[0] + F[1] * X[1]);
+        double w1 = xq[1] - (F[2] * X[0] + F[3] * X[1]);
+        sum += r0 * w0 + r1 * w1;
+    }
+    return sum / f->V;
+}
+
+double sbc_homogenize_work_scale(const double P[4], const double F[4])
+{
+    double p = sqrt(P[0] * P[0] + P[1] * P[1] + P[2] * P[2] + P[3] * P[3]);
+    double d0 = F[0] - 1.0, d3 = F[3] - 1.0;
+    double u = sqrt(d0 * d0 + F[1] * F[1] + F[2] * F[2] + d3 * d3);
+    return p * (1.0 + u);
+}
+
+/* eq. 42, trapezoidal rule in F12 */
+double sbc_homogenize_path_norm(int n, const double *param, const double *sigma)
+{
+    double sum = 0.0;
+    int k, c;
+    for (k = 1; k < n; ++k) {
+        double h = fabs(param[k] - param[k - 1]);
+        for (c = 0; c < 4; ++c) {
+            double s0 = sigma[4 * (k - 1) + c], s1 = sigma[4 * k + c];
+            sum += 0.5 * h * (s0 * s0 + s1 * s1);
+        }
+    }
+    return sqrt(sum);
+}

@@ -1,0 +1,100 @@
+#include "sbc/plot.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+
+#define W 720.0
+#define H 480.0
+#define LEFT 90.0
+#define RIGHT 20.0
+#define TOP 40.0
+#define BOTTOM 60.0
+
+/* A "nice" tick step near range/6: 1, 2 or 5 times a power of ten. */
+static double tick_step(double range)
+{
+    double raw = range / 6.0, p = pow(10.0, floor(log10(raw))), m = raw / p;
+    return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
+}
+
+static void widen(double *lo, double *hi)
+{
+    if (!(*hi > *lo)) {
+        double d = fabs(*lo) > 0.0 ? 0.1 * fabs(*lo) : 1.0;
+        *lo -= d;
+        *hi += d;
+    }
+}
+
+sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel, const char *ylabel, int n,
+                        const double *x, int nseries, const sbc_series *series, sbc_error *err)
+{
+    static const char *colors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b"};
+    double xlo = DBL_MAX, xhi = -DBL_MAX, ylo = DBL_MAX, yhi = -DBL_MAX, step, t;
+    double pw = W - LEFT - RIGHT, ph = H - TOP - BOTTOM;
+    FILE *fp;
+    int k, s;
+    for (k = 0; k < n; ++k) {
+        if (!isfinite(x[k])) continue;
+        if (x[k] < xlo) xlo = x[k];
+        if (x[k] > xhi) xhi = x[k];
+        for (s = 0; s < nseries; ++s) {
+            double y = series[s].y[k];
+            if (!isfinite(y)) continue;
+            if (y < ylo) ylo = y;
+            if (y > yhi) yhi = y;
+        }
+    }
+    if (xlo > xhi) xlo = xhi = 0.0;
+    if (ylo > yhi) ylo = yhi = 0.0;
+    widen(&xlo, &xhi);
+    widen(&ylo, &yhi);
+    fp = fopen(path, "w");
+    if (!fp)
+        return sbc_fail(err, SBC_ERR_IO, "plot: cannot open '%s' for writing", path);
+#define PX(v) (LEFT + ((v) - xlo) / (xhi - xlo) * pw)
+#define PY(v) (TOP + (yhi - (v)) / (yhi - ylo) * ph)
+    fprintf(fp, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" font-family=\"sans-serif\" "
+                "font-size=\"13\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n", W, H);
+    fprintf(fp, "<text x=\"%g\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">%s</text>\n", W / 2, title);
+    step = tick_step(xhi - xlo);
+    for (t = ceil(xlo / step) * step; t <= xhi + 1e-9 * step; t += step) {
+        double tv = fabs(t) < 1e-12 * step ? 0.0 : t;
+        fprintf(fp, "<line x1=\"%.2f\" y1=\"%g\" x2=\"%.2f\" y2=\"%g\" stroke=\"#ddd\"/>\n", PX(t), TOP, PX(t),
+                TOP + ph);
+        fprintf(fp, "<text x=\"%.2f\" y=\"%g\" text-anchor=\"middle\">%g</text>\n", PX(t), TOP + ph + 18, tv);
+    }
+    step = tick_step(yhi - ylo);
+    for (t = ceil(ylo / step) * step; t <= yhi + 1e-9 * step; t += step) {
+        double tv = fabs(t) < 1e-12 * step ? 0.0 : t;
+        fprintf(fp, "<line x1=\"%g\" y1=\"%.2f\" x2=\"%g\" y2=\"%.2f\" stroke=\"#ddd\"/>\n", LEFT, PY(t),
+                LEFT + pw, PY(t));
+        fprintf(fp, "<text x=\"%g\" y=\"%.2f\" text-anchor=\"end\">%g</text>\n", LEFT - 6, PY(t) + 4, tv);
+    }
+    fprintf(fp, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"black\"/>\n", LEFT, TOP,
+            pw, ph);
+    fprintf(fp, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">%s</text>\n", LEFT + pw / 2, H - 14, xlabel);
+    fprintf(fp, "<text x=\"18\" y=\"%g\" text-anchor=\"middle\" transform=\"rotate(-90 18 %g)\">%s</text>\n",
+            TOP + ph / 2, TOP + ph / 2, ylabel);
+    for (s = 0; s < nseries; ++s) {
+        const char *c = colors[s % 6];
+        int first = 1;
+        fprintf(fp, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.8\" points=\"", c);
+        for (k = 0; k < n; ++k) {
+            if (!isfinite(x[k]) || !isfinite(series[s].y[k])) continue;
+            fprintf(fp, "%s%.2f,%.2f", first ? "" : " ", PX(x[k]), PY(series[s].y[k]));
+            first = 0;
+        }
+        fprintf(fp, "\"/>\n");
+        fprintf(fp, "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"%s\" stroke-width=\"2\"/>\n",
+                LEFT + 14, TOP + 16 + 18.0 * s, LEFT + 40, TOP + 16 + 18.0 * s, c);
+        fprintf(fp, "<text x=\"%g\" y=\"%g\">%s</text>\n", LEFT + 46, TOP + 20 + 18.0 * s, series[s].label);
+    }
+#undef PX
+#undef PY
+    fprintf(fp, "</svg>\n");
+    if (fclose(fp) != 0)
+        return sbc_fail(err, SBC_ERR_IO, "plot: write to '%s' failed", path);
+    return SBC_OK;
+}

@@ -1,0 +1,33 @@
+#include "sbc/relax.h"
+
+void sbc_relax_start(sbc_relax *r, double tol_E, int window)
+{
+    r->tol_E = tol_E;
+    r->window = window;
+    r->steps = 0;
+    r->count = 0;
+    r->rising = 0;
+    r->past_peak = 0;
+    r->ek_prev = 0.0;
+}
+
+/* eq. 11: Ek/Ep <= tolE, held for r->window consecutive steps after a
+ * kinetic-energy maximum (see relax.h). */
+int sbc_relax_update(sbc_relax *r, double ek, double ep)
+{
+    int ok;
+    if (r->steps > 0) {
+        if (ek > r->ek_prev)
+            r->rising = 1;
+        else if (r->rising)
+            r->past_peak = 1;
+    }
+    r->ek_prev = ek;
+    r->steps++;
+    if (ek == 0.0)
+        ok = 1;
+    else
+        ok = r->past_peak && ep > 0.0 && ek <= r->tol_E * ep;
+    r->count = ok ? r->count + 1 : 0;
+    return r->count >= r->window;
+}

@@ -1,0 +1,216 @@
+/* The servo_bc keyword parser shared by every host. */
+#include "sbc/settings.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+sbc_settings sbc_settings_default(void)
+{
+    sbc_settings s;
+    memset(&s, 0, sizeof s);
+    s.bc = SBC_BC_D;
+    s.F[0] = s.F[3] = 1.0;
+    s.increments = 1;
+    s.tol_E = 1.0e-3;
+    s.window = 20;
+    s.max_relax_steps = 10000000L;
+    s.damping = 1;
+    s.alpha = s.beta = 0.7;
+    s.gain_force = 1.0e2;
+    s.gain_moment = 2.0e2;
+    s.gain_deformation = 2.0e-5;
+    s.tol_force = 1.0e-6;
+    s.tol_moment = 1.0e-6;
+    s.tol_deformation = 1.0e-2;
+    s.predict = 0.0;
+    s.max_iterations = 10000;
+    return s;
+}
+
+const char *sbc_bc_name(sbc_bc bc)
+{
+    static const char *names[] = {"D", "P", "T", "mixed"};
+    return (bc >= SBC_BC_D && bc <= SBC_BC_MIXED) ? names[bc] : "?";
+}
+
+sbc_status sbc_parse_real(const char *word, const char *what, double *out, sbc_error *err)
+{
+    char *end = NULL;
+    double v;
+    errno = 0;
+    v = strtod(word, &end);
+    if (end == word || *end != '\0')
+        return sbc_fail(err, SBC_ERR_INPUT, "%s '%s' is not a number", what, word);
+    if (errno == ERANGE || !isfinite(v))
+        return sbc_fail(err, SBC_ERR_INPUT, "%s '%s' is out of the range of a double", what, word);
+    *out = v;
+    return SBC_OK;
+}
+
+sbc_status sbc_parse_int(const char *word, const char *what, long lo, long hi, long *out, sbc_error *err)
+{
+    char *end = NULL;
+    long v;
+    errno = 0;
+    v = strtol(word, &end, 10);
+    if (end == word || *end != '\0')
+        return sbc_fail(err, SBC_ERR_INPUT, "%s '%s' is not an integer", what, word);
+    if (errno == ERANGE || v < lo || v > hi)
+        return sbc_fail(err, SBC_ERR_INPUT, "%s '%s' is out of range (expected %ld to %ld)", what, word, lo, hi);
+    *out = v;
+    return SBC_OK;
+}
+
+typedef struct cursor {
+    int n, i;
+    const char *const *w;
+    const char *key;
+    sbc_error *err;
+} cursor;
+
+static const char *next_word(cursor *c, const char *what, sbc_status *st)
+{
+    if (c->i >= c->n) {
+        *st = sbc_fail(c->err, SBC_ERR_INPUT, "keyword '%s': missing %s", c->key, what);
+        return NULL;
+    }
+    return c->w[c->i++];
+}
+
+/* Reads a real for keyword c->key with lo < v (strict when lo_open) and v <= hi. */
+static sbc_status read_real(cursor *c, const char *what, double lo, int lo_open, double hi, const char *expect,
+                            double *out)
+{
+    sbc_status st = SBC_OK;
+    const char *w = next_word(c, what, &st);
+    double v;
+    if (!w)
+        return st;
+    if (sbc_parse_real(w, what, &v, NULL) != SBC_OK || (lo_open ? !(v > lo) : !(v >= lo)) || !(v <= hi))
+        return sbc_fail(c->err, SBC_ERR_INPUT, "keyword '%s': %s '%s' is not valid (expected %s)", c->key, what, w,
+                        expect);
+    *out = v;
+    return SBC_OK;
+}
+
+static sbc_status read_int(cursor *c, const char *what, long lo, long hi, long *out)
+{
+    sbc_status st = SBC_OK;
+    const char *w = next_word(c, what, &st);
+    if (!w)
+        return st;
+    if (sbc_parse_int(w, what, lo, hi, out, NULL) != SBC_OK)
+        return sbc_fail(c->err, SBC_ERR_INPUT, "keyword '%s': %s '%s' is not valid (expected an integer from %ld to %ld)",
+                        c->key, what, w, lo, hi);
+    return SBC_OK;
+}
+
+static sbc_status read_name(cursor *c, const char *what, char *dst)
+{
+    sbc_status st = SBC_OK;
+    const char *w = next_word(c, what, &st);
+    if (!w)
+        return st;
+    if (strlen(w) >= SBC_NAME_LEN)
+        return sbc_fail(c->err, SBC_ERR_INPUT, "keyword '%s': %s is longer than %d characters", c->key, what,
+                        SBC_NAME_LEN - 1);
+    strcpy(dst, w);
+    return SBC_OK;
+}
+
+static const char *const gain_keys[] = {"gain_force", "gain_moment", "gain_deformation"};
+static const char *const tol_keys[] = {"tol_force", "tol_moment", "tol_deformation"};
+
+sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *words, sbc_error *err)
+{
+    cursor c;
+    sbc_status st = SBC_OK;
+    long iv;
+    int k;
+    *s = sbc_settings_default();
+    if (nwords < 1)
+        return sbc_fail(err, SBC_ERR_INPUT, "missing boundary condition (expected D, P, T or mixed)");
+    if (strcmp(words[0], "D") == 0)
+        s->bc = SBC_BC_D;
+    else if (strcmp(words[0], "P") == 0 || strcmp(words[0], "T") == 0 || strcmp(words[0], "mixed") == 0)
+        return sbc_fail(err, SBC_ERR_INPUT,
+                        "boundary condition '%s' is not implemented in this version (available: D)", words[0]);
+    else
+        return sbc_fail(err, SBC_ERR_INPUT, "unknown boundary condition '%s' (expected D, P, T or mixed)", words[0]);
+
+    c.n = nwords;
+    c.i = 1;
+    c.w = words;
+    c.err = err;
+    while (c.i < c.n && st == SBC_OK) {
+        const char *key = c.w[c.i++];
+        c.key = key;
+        if (strcmp(key, "F") == 0) {
+            static const char *names[4] = {"F11", "F12", "F21", "F22"};
+            for (k = 0; k < 4 && st == SBC_OK; ++k)
+                st = read_real(&c, names[k], -HUGE_VAL, 0, HUGE_VAL, "a real number", &s->F[k]);
+            if (st == SBC_OK && !(s->F[0] * s->F[3] - s->F[1] * s->F[2] > 0.0))
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': det F = %g is not positive (expected det F > 0)",
+                              s->F[0] * s->F[3] - s->F[1] * s->F[2]);
+        } else if (strcmp(key, "increments") == 0) {
+            st = read_int(&c, "N", 1, 100000000L, &iv);
+            s->increments = (int)iv;
+        } else if (strcmp(key, "relax") == 0) {
+            st = read_real(&c, "tolE", 0.0, 1, HUGE_VAL, "a real > 0", &s->tol_E);
+            if (st == SBC_OK)
+                st = read_int(&c, "window", 1, 1000000000L, &iv);
+            s->window = (int)iv;
+        } else if (strcmp(key, "max_relax_steps") == 0) {
+            st = read_int(&c, "steps", 1, 2000000000L, &s->max_relax_steps);
+        } else if (strcmp(key, "damping") == 0) {
+            if (c.i < c.n && strcmp(c.w[c.i], "none") == 0) {
+                ++c.i;
+                s->damping = 0;
+                s->alpha = s->beta = 0.0;
+            } else {
+                s->damping = 1;
+                st = read_real(&c, "alpha", 0.0, 0, 1.0, "a real in [0, 1), or 'none'", &s->alpha);
+                if (st == SBC_OK)
+                    st = read_real(&c, "beta", 0.0, 0, 1.0, "a real in [0, 1)", &s->beta);
+                if (st == SBC_OK && (s->alpha >= 1.0 || s->beta >= 1.0))
+                    st = sbc_fail(err, SBC_ERR_INPUT,
+                                  "keyword 'damping': values %g %g must be below 1 (damping 1 cancels every force)",
+                                  s->alpha, s->beta);
+            }
+        } else if (strcmp(key, "predict") == 0) {
+            st = read_real(&c, "n_f", 0.0, 0, 1.0, "an inheritance factor in [0, 1]", &s->predict);
+        } else if (strcmp(key, "max_iterations") == 0) {
+            st = read_int(&c, "K", 1, 1000000000L, &iv);
+            s->max_iterations = (int)iv;
+        } else if (strcmp(key, "frame") == 0) {
+            st = read_name(&c, "group-ID", s->frame_group);
+        } else if (strcmp(key, "file") == 0) {
+            st = read_name(&c, "path", s->file);
+        } else if (strcmp(key, "stress") == 0) {
+            st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'stress' needs boundary condition mixed (got %s)",
+                          sbc_bc_name(s->bc));
+        } else {
+            double *gain[3] = {&s->gain_force, &s->gain_moment, &s->gain_deformation};
+            double *tol[3] = {&s->tol_force, &s->tol_moment, &s->tol_deformation};
+            int found = 0;
+            for (k = 0; k < 3 && !found; ++k) {
+                if (strcmp(key, gain_keys[k]) == 0) {
+                    st = read_real(&c, "g", 0.0, 1, HUGE_VAL, "a real > 0", gain[k]);
+                    found = 1;
+                } else if (strcmp(key, tol_keys[k]) == 0) {
+                    st = read_real(&c, "eps", 0.0, 1, HUGE_VAL, "a real > 0", tol[k]);
+                    found = 1;
+                }
+            }
+            if (!found)
+                st = sbc_fail(err, SBC_ERR_INPUT,
+                              "unknown keyword '%s' (expected F, increments, relax, max_relax_steps, damping, "
+                              "gain_force, gain_moment, gain_deformation, tol_force, tol_moment, tol_deformation, "
+                              "predict, stress, max_iterations, frame or file)",
+                              key);
+        }
+    }
+    return st;
+}

@@ -1,0 +1,84 @@
+#include "sbc/vtk.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+static FILE *open_file(const char *prefix, const char *what, int increment, char *name, size_t len, sbc_error *err)
+{
+    FILE *fp;
+    snprintf(name, len, "%s_%s_%06d.vtk", prefix, what, increment);
+    fp = fopen(name, "w");
+    if (!fp)
+        sbc_fail(err, SBC_ERR_IO, "vtk: cannot open '%s' for writing", name);
+    return fp;
+}
+
+static double overlap(const sbc_engine_view *w, int i, int j)
+{
+    double dx = w->x[2 * j] - w->x[2 * i], dy = w->x[2 * j + 1] - w->x[2 * i + 1];
+    return w->r[i] + w->r[j] - sqrt(dx * dx + dy * dy);
+}
+
+sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_view *w, sbc_error *err)
+{
+    char name[1024];
+    FILE *fp;
+    int k, nc = 0;
+
+    fp = open_file(prefix, "particles", increment, name, sizeof name, err);
+    if (!fp)
+        return SBC_ERR_IO;
+    fprintf(fp, "# vtk DataFile Version 3.0\nservo_bc particles, increment %d, t = %.9g s\nASCII\nDATASET POLYDATA\n",
+            increment, w->time);
+    fprintf(fp, "POINTS %d double\n", w->n);
+    for (k = 0; k < w->n; ++k)
+        fprintf(fp, "%.12g %.12g 0\n", w->x[2 * k], w->x[2 * k + 1]);
+    fprintf(fp, "VERTICES %d %d\n", w->n, 2 * w->n);
+    for (k = 0; k < w->n; ++k)
+        fprintf(fp, "1 %d\n", k);
+    fprintf(fp, "POINT_DATA %d\nSCALARS radius double 1\nLOOKUP_TABLE default\n", w->n);
+    for (k = 0; k < w->n; ++k)
+        fprintf(fp, "%.12g\n", w->r[k]);
+    fprintf(fp, "SCALARS rotation double 1\nLOOKUP_TABLE default\n");
+    for (k = 0; k < w->n; ++k)
+        fprintf(fp, "%.12g\n", w->theta[k]);
+    fprintf(fp, "SCALARS frame int 1\nLOOKUP_TABLE default\n");
+    for (k = 0; k < w->n; ++k)
+        fprintf(fp, "%d\n", (int)w->kinematic[k]);
+    fprintf(fp, "VECTORS velocity double\n");
+    for (k = 0; k < w->n; ++k)
+        fprintf(fp, "%.12g %.12g 0\n", w->v[2 * k], w->v[2 * k + 1]);
+    if (fclose(fp) != 0)
+        return sbc_fail(err, SBC_ERR_IO, "vtk: write to '%s' failed", name);
+
+    for (k = 0; k < w->pair_count; ++k)
+        nc += overlap(w, w->pair_i[k], w->pair_j[k]) > 0.0;
+    fp = open_file(prefix, "contacts", increment, name, sizeof name, err);
+    if (!fp)
+        return SBC_ERR_IO;
+    fprintf(fp, "# vtk DataFile Version 3.0\nservo_bc contact network, increment %d\nASCII\nDATASET POLYDATA\n",
+            increment);
+    fprintf(fp, "POINTS %d double\n", w->n);
+    for (k = 0; k < w->n; ++k)
+        fprintf(fp, "%.12g %.12g 0\n", w->x[2 * k], w->x[2 * k + 1]);
+    fprintf(fp, "LINES %d %d\n", nc, 3 * nc);
+    for (k = 0; k < w->pair_count; ++k)
+        if (overlap(w, w->pair_i[k], w->pair_j[k]) > 0.0)
+            fprintf(fp, "2 %d %d\n", w->pair_i[k], w->pair_j[k]);
+    fprintf(fp, "CELL_DATA %d\nSCALARS normal_force double 1\nLOOKUP_TABLE default\n", nc);
+    for (k = 0; k < w->pair_count; ++k) {
+        double dn = overlap(w, w->pair_i[k], w->pair_j[k]);
+        if (dn > 0.0)
+            fprintf(fp, "%.12g\n", w->law.kn * dn);
+    }
+    fprintf(fp, "SCALARS overlap double 1\nLOOKUP_TABLE default\n");
+    for (k = 0; k < w->pair_count; ++k) {
+        double dn = overlap(w, w->pair_i[k], w->pair_j[k]);
+        if (dn > 0.0)
+            fprintf(fp, "%.12g\n", dn);
+    }
+    if (fclose(fp) != 0)
+        return sbc_fail(err, SBC_ERR_IO, "vtk: write to '%s' failed", name);
+    return SBC_OK;
+}
