@@ -294,6 +294,8 @@ sbc_engine_view sbc_engine_get_view(const sbc_engine *e)
     w.theta = e->theta;
     w.omega = e->omega;
     w.mass = e->mass;
+    w.f = e->f;
+    w.torque = e->tq;
     w.kinematic = e->kinematic;
     w.pair_count = e->pairs.count;
     w.pair_i = e->pairs.i;

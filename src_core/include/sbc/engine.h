@@ -53,6 +53,7 @@ void sbc_engine_advance(sbc_engine *e, const sbc_commands *cmd);
 typedef struct sbc_engine_view {
     int n;
     const double *x, *v, *r, *theta, *omega, *mass;
+    const double *f, *torque; /* contact forces (N) and moments (N m) of the last sbc_engine_forces */
     const unsigned char *kinematic;
     int pair_count;
     const int *pair_i, *pair_j;

@@ -1,0 +1,14 @@
+/* Test helper: reads the servo_bc CSV back. */
+#ifndef SBC_TEST_CSV_READ_H
+#define SBC_TEST_CSV_READ_H
+
+#define CSV_COLS 20
+
+/* Reads up to max rows of CSV_COLS numbers after the header; returns the
+ * row count, -1 when the file is missing or a field is not a finite number. */
+int csv_read(const char *path, double rows[][CSV_COLS], int max);
+
+/* Writes text to path; returns 0 on success. */
+int write_text(const char *path, const char *text);
+
+#endif

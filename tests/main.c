@@ -1,0 +1,35 @@
+/* Test runner: run_tests [SERVO_BC_BINARY [TMPDIR]]; last line "N passed, N failed". */
+#define _POSIX_C_SOURCE 200809L
+#include "check.h"
+#include "tests.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/stat.h>
+
+int check_passed = 0, check_failed = 0;
+const char *test_tmpdir = "build/test-tmp";
+const char *test_runner = "build/servo-bc";
+
+int main(int argc, char **argv)
+{
+    struct {
+        const char *name;
+        void (*fn)(void);
+    } suites[] = {{"frame", test_frame},     {"homogenize", test_homogenize}, {"contact", test_contact},
+                  {"relax", test_relax},     {"lattice", test_lattice},       {"input", test_input},
+                  {"outputs", test_outputs}};
+    size_t k;
+    if (argc > 1) test_runner = argv[1];
+    if (argc > 2) test_tmpdir = argv[2];
+    mkdir(test_tmpdir, 0777);
+    for (k = 0; k < sizeof suites / sizeof suites[0]; ++k) {
+        int f0 = check_failed, p0 = check_passed;
+        suites[k].fn();
+        printf("%-12s %4d checks, %d failed\n", suites[k].name, check_passed - p0 + check_failed - f0,
+               check_failed - f0);
+        fflush(stdout);
+    }
+    printf("%d passed, %d failed\n", check_passed, check_failed);
+    return check_failed ? 1 : 0;
+}

@@ -1,0 +1,139 @@
+/* Bad input: every error names the line, the command or keyword, the value
+ * and what was expected; nothing crashes; the runner exits non-zero. */
+#define _POSIX_C_SOURCE 200809L
+#include "check.h"
+#include "csv_read.h"
+#include "tests.h"
+
+#include "sbc/script.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define HEAD "dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\ncontact frictional kn 1e4 ks 2e3 mu 0.4\n" \
+             "density 2e3\ntimestep 1e-5\n"
+
+typedef struct bad_case {
+    const char *script;
+    const char *expect[3]; /* substrings the message must contain */
+} bad_case;
+
+static const bad_case cases[] = {
+    {"dimension 2\nfoo 1\n", {"bad:2:", "unknown command 'foo'", "expected dimension"}},
+    {"dimension 3\n", {"bad:1:", "dimension", "'3'"}},
+    {"lattice square 5 5 spacing 2e-3\n", {"bad:1:", "lattice: missing values", "radius R"}},
+    {"density 2e3 5\n", {"bad:1:", "extra value '5'", "density RHO"}},
+    {"timestep abc\n", {"bad:1:", "'abc' is not a number", "timestep"}},
+    {"timestep -1e-6\n", {"bad:1:", "DT -1e-6 is not positive", "> 0"}},
+    {"density 0\n", {"bad:1:", "RHO 0 is not positive", "density"}},
+    {"lattice square 5 5 spacing 2e-3 radius -1\n", {"bad:1:", "radius -1 is not positive", "lattice"}},
+    {"lattice square 2 5 spacing 2e-3 radius 1e-3\n", {"bad:1:", "NX '2'", "3 to 100000"}},
+    {"lattice hex 5 5 spacing 2e-3 radius 1e-3\n", {"bad:1:", "style 'hex'", "'square'"}},
+    {"contact frictional kn 0 ks 2e3 mu 0.4\n", {"bad:1:", "kn 0 is not positive", "contact"}},
+    {"contact frictional kn 1e4 ks -2 mu 0.4\n", {"bad:1:", "ks '-2'", ">= 0"}},
+    {"contact frictional kn 1e4 kt 2e3 mu 0.4\n", {"bad:1:", "expected keyword 'ks' but found 'kt'", "usage"}},
+    {"servo_bc Q\n", {"bad:1:", "unknown boundary condition 'Q'", "D, P, T or mixed"}},
+    {"servo_bc D bogus 1\n", {"bad:1:", "unknown keyword 'bogus'", "increments"}},
+    {"servo_bc D F 1 2 2 1\n", {"bad:1:", "keyword 'F'", "det F = -3"}},
+    {"servo_bc D F 1 0 0\n", {"bad:1:", "keyword 'F'", "missing F22"}},
+    {"servo_bc D F 1 0 x 1\n", {"bad:1:", "F21 'x'", "a real number"}},
+    {"servo_bc D increments 0\n", {"bad:1:", "keyword 'increments'", "'0'"}},
+    {"servo_bc D relax 1e-3\n", {"bad:1:", "keyword 'relax'", "missing window"}},
+    {"servo_bc D relax -1 20\n", {"bad:1:", "tolE '-1'", "> 0"}},
+    {"servo_bc D damping 1.5 0.7\n", {"bad:1:", "keyword 'damping'", "'1.5'"}},
+    {"servo_bc D stress P22 -1e6 6\n", {"bad:1:", "keyword 'stress'", "mixed"}},
+    {"servo_bc D gain_force 0\n", {"bad:1:", "keyword 'gain_force'", "'0'"}},
+    {"servo_bc D predict 2\n", {"bad:1:", "keyword 'predict'", "[0, 1]"}},
+    {HEAD "run\n", {"bad:6:", "run", "no boundary condition"}},
+    {"dimension 2\nservo_bc D\nrun\n", {"bad:3:", "run", "no packing"}},
+    {HEAD "servo_bc D frame boundary\nrun\n", {"bad:7:", "keyword 'frame'", "'boundary'"}},
+    {"dimension 2\nlattice square 5 5 spacing 3e-3 radius 1e-3\ncontact frictional kn 1e4 ks 2e3 mu 0.4\n"
+     "density 2e3\ntimestep 1e-5\nservo_bc D\nrun\n",
+     {"bad:7:", "no contacts", "radius and spacing"}},
+    {"dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\ncontact frictional kn 1e4 ks 2e3 mu 0.4\n"
+     "density 2e3\ntimestep 1e-2\nservo_bc D\nrun\n",
+     {"bad:7:", "timestep 0.01", "critical step"}},
+    {HEAD "servo_bc D F 0.99 0 0 0.99 damping none max_relax_steps 500\nrun\n",
+     {"bad:7:", "increment 1", "did not reach Ek/Ep"}},
+    {"read_packing /nonexistent/packing.txt\n", {"bad:1:", "read_packing", "cannot open"}},
+};
+
+static void check_case(const bad_case *c)
+{
+    sbc_error err;
+    sbc_status st = sbc_script_run_string(c->script, "bad", NULL, &err);
+    int k, ok = st != SBC_OK;
+    for (k = 0; k < 3 && ok; ++k)
+        ok = c->expect[k] == NULL || strstr(err.message, c->expect[k]) != NULL;
+    CHECK(ok);
+    if (!ok)
+        printf("  script:\n%s  message: %s\n", c->script, st != SBC_OK ? err.message : "(none: accepted)");
+}
+
+/* Packing-file errors name the file and line; a frame that cannot be found is reported. */
+static void packing_files(void)
+{
+    char path[512], script[1024];
+    sbc_error err;
+    snprintf(path, sizeof path, "%s/bad_packing.txt", test_tmpdir);
+    write_text(path, "# x y r\n0 0 1e-3\n1e-3 0 abc\n");
+    snprintf(script, sizeof script, "read_packing %s\n", path);
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_INPUT);
+    CHECK(strstr(err.message, "line 3") && strstr(err.message, "'abc'"));
+    write_text(path, "0 0 1e-3\n1e-3 0 0\n");
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_INPUT);
+    CHECK(strstr(err.message, "line 2") && strstr(err.message, "radius 0"));
+    write_text(path, "0 0 1e-3 7\n");
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_INPUT);
+    CHECK(strstr(err.message, "4 values") != NULL);
+    /* a packing without a top-right corner particle */
+    write_text(path, "0 0 1.02e-3\n2e-3 0 1.02e-3\n4e-3 0 1.02e-3\n0 2e-3 1.02e-3\n2e-3 2e-3 1.02e-3\n"
+                     "4e-3 2e-3 1.02e-3\n0 4e-3 1.02e-3\n2e-3 4e-3 1.02e-3\n");
+    snprintf(script, sizeof script,
+             "read_packing %s\ncontact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\ntimestep 1e-5\nservo_bc D\nrun\n",
+             path);
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_FRAME);
+    CHECK(strstr(err.message, "bad:6:") && strstr(err.message, "top-right corner"));
+}
+
+/* The executable: non-zero exit, "ERROR:" with the line on stderr, and the
+ * CSV keeps every increment converged before a failure. */
+static void runner_exit(void)
+{
+    char script[512], csv[512], cmd[1400], out[1024] = "";
+    static double rows[8][CSV_COLS];
+    FILE *pp;
+    int status;
+    snprintf(script, sizeof script, "%s/fail.sbc", test_tmpdir);
+    snprintf(csv, sizeof csv, "%s/fail.csv", test_tmpdir);
+    {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 HEAD "servo_bc D F 0.99 0 0 0.99 increments 3 damping none max_relax_steps 3000 file %s\nrun\n", csv);
+        write_text(script, text);
+    }
+    snprintf(cmd, sizeof cmd, "%s %s 2>&1 >/dev/null", test_runner, script);
+    pp = popen(cmd, "r");
+    CHECK(pp != NULL);
+    if (!pp)
+        return;
+    if (!fgets(out, sizeof out, pp))
+        out[0] = '\0';
+    status = pclose(pp);
+    CHECK(status != 0);
+    CHECK(strstr(out, "ERROR: ") == out && strstr(out, "fail.sbc:7:") && strstr(out, "increment 1"));
+    /* increment 0 (F = I, already in equilibrium) converged and was kept */
+    CHECK(csv_read(csv, rows, 8) == 1);
+    snprintf(cmd, sizeof cmd, "%s 2>/dev/null", test_runner);
+    CHECK(system(cmd) != 0); /* usage error */
+}
+
+void test_input(void)
+{
+    size_t k;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; ++k)
+        check_case(&cases[k]);
+    packing_files();
+    runner_exit();
+}

@@ -1,0 +1,53 @@
+/* Outputs: CSV header and rows, VTK and SVG files of a short run. */
+#include "check.h"
+#include "csv_read.h"
+#include "tests.h"
+
+#include "sbc/script.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static int file_contains(const char *path, const char *needle)
+{
+    FILE *fp = fopen(path, "r");
+    char buf[256];
+    int found = 0;
+    if (!fp)
+        return 0;
+    while (!found && fgets(buf, sizeof buf, fp))
+        found = strstr(buf, needle) != NULL;
+    fclose(fp);
+    return found;
+}
+
+void test_outputs(void)
+{
+    char script[2048], csv[512], path[600], prefix[512], svg[512];
+    static double rows[16][CSV_COLS];
+    sbc_error err;
+    int n;
+    snprintf(csv, sizeof csv, "%s/outputs.csv", test_tmpdir);
+    snprintf(prefix, sizeof prefix, "%s/outputs", test_tmpdir);
+    snprintf(svg, sizeof svg, "%s/outputs.svg", test_tmpdir);
+    snprintf(script, sizeof script,
+             "dimension 2\nlattice square 4 4 spacing 2e-3 radius 1.02e-3\n"
+             "contact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\ntimestep 1e-5\n"
+             "servo_bc D F 0.99 -0.02 -0.02 0.99 increments 4 file %s\n"
+             "vtk 2 %s\nplot %s\nrun\n",
+             csv, prefix, svg);
+    CHECK(sbc_script_run_string(script, "outputs", NULL, &err) == SBC_OK);
+    n = csv_read(csv, rows, 16);
+    CHECK(n == 5); /* increments 0..4, all fields finite */
+    CHECK(n == 5 && rows[4][0] == 4.0 && rows[4][16] > 0.0);
+    snprintf(path, sizeof path, "%s_particles_000002.vtk", prefix);
+    CHECK(file_contains(path, "POINTS 16 double"));
+    CHECK(file_contains(path, "SCALARS radius double 1"));
+    snprintf(path, sizeof path, "%s_contacts_000004.vtk", prefix);
+    CHECK(file_contains(path, "LINES 24 72")); /* 2 * 4 * 3 lattice contacts */
+    CHECK(file_contains(path, "SCALARS normal_force double 1"));
+    snprintf(path, sizeof path, "%s_particles_000001.vtk", prefix);
+    CHECK(!file_contains(path, "POINTS")); /* not a chosen increment */
+    CHECK(file_contains(svg, "<polyline"));
+    CHECK(!file_contains(svg, "nan"));
+}

@@ -1,0 +1,10 @@
+#ifndef SBC_TESTS_H
+#define SBC_TESTS_H
+void test_frame(void);
+void test_homogenize(void);
+void test_contact(void);
+void test_relax(void);
+void test_lattice(void);
+void test_input(void);
+void test_outputs(void);
+#endif
