@@ -87,7 +87,7 @@ static void perturbed_packing(double tol, double dt, double offset, long *stop_o
     ratio = malloc(sizeof(double) * (size_t)maxsteps);
     sbc_relax_start(&r, tol, WINDOW);
     for (k = 0; k < maxsteps; ++k) {
-        sbc_engine_forces(e, &err);
+        sbc_engine_step(e, &err);
         sbc_engine_snapshot(e, &snap);
         ratio[k] = snap.kinetic_energy / snap.potential_energy;
         run = ratio[k] <= tol ? run + 1 : 0;
@@ -96,7 +96,7 @@ static void perturbed_packing(double tol, double dt, double offset, long *stop_o
             stop = k;
             break;
         }
-        sbc_engine_advance(e, &cmd);
+        sbc_engine_move_frame(e, &cmd);
     }
     CHECK(stop > 0);
     if (stop > 0) {

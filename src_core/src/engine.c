@@ -23,6 +23,7 @@ struct sbc_engine {
     int history;
     double dt, alpha, beta;
     sbc_pairs pairs;
+    int stale; /* the pair list must be rebuilt before the next force evaluation */
     const sbc_frame *frame;
     /* per-step measures */
     double ek, ep, overlap_sum, rotation_sum;
@@ -140,59 +141,149 @@ void sbc_engine_set_frame(sbc_engine *e, const sbc_frame *frame)
     e->snap_tq = malloc(sizeof(double) * nq);
 }
 
-/* Pair loop: eq. 6 forces and moments, eq. 12 energy, eq. 39 overlap sum. */
-sbc_status sbc_engine_forces(sbc_engine *e, sbc_error *err)
+/* Velocities below 1e-120 (m/s, rad/s) and spring forces below 1e-120 N
+ * carry no physics (their squares must stay above the subnormal range too);
+ * in a packing held
+ * in exact equilibrium, round-off seeds decay geometrically towards the
+ * subnormal range, where x86 arithmetic is about 2x slower (measured: 48 vs
+ * 26 ns per particle-step at 1e5 particles). Flushing them here keeps the
+ * library free of global floating-point state (no FTZ/DAZ flags). */
+static inline double flush(double a) { return fabs(a) < 1e-120 ? 0.0 : a; }
+
+/* Pair loop: eq. 6 forces and moments, eq. 12 energy, eq. 39 overlap sum.
+ * HISTORY is a compile-time constant in each instance, so that frictionless
+ * scenes run without the tangential spring. */
+static inline void pair_loop(sbc_engine *e, const int history)
 {
-    const double dt = e->dt;
-    const sbc_frictional law = e->law;
-    double *restrict x = e->x, *restrict v = e->v, *restrict f = e->f;
-    double *restrict om = e->omega, *restrict tq = e->tq, *restrict r = e->r;
+    const double dt = e->dt, kn = e->law.kn, inv_ks = e->law.ks > 0.0 ? 1.0 / e->law.ks : 0.0;
+    const double *restrict x = e->x, *restrict v = e->v, *restrict om = e->omega, *restrict r = e->r;
+    const int *restrict start = e->pairs.start, *restrict pj = e->pairs.j;
+    double *restrict f = e->f, *restrict tq = e->tq, *restrict fsv = e->pairs.fs;
     double ep = 0.0, ov = 0.0;
     long nc = 0;
-    int k;
-    if (sbc_pairs_stale(&e->pairs, x) && sbc_pairs_build(&e->pairs, x, r, e->rmax, err) != SBC_OK)
-        return SBC_ERR_NOMEM;
-    memset(f, 0, sizeof(double) * 2 * (size_t)e->n);
-    memset(tq, 0, sizeof(double) * (size_t)e->n);
-    for (k = 0; k < e->pairs.count; ++k) {
-        int i = e->pairs.i[k], j = e->pairs.j[k];
-        double dx = x[2 * j] - x[2 * i], dy = x[2 * j + 1] - x[2 * i + 1];
-        double rs = r[i] + r[j], d2 = dx * dx + dy * dy, d, nx, ny, dn, fn, fs = 0.0, fx, fy;
-        if (d2 >= rs * rs) {
-            if (e->history)
-                e->pairs.fs[k] = 0.0;
-            continue;
+    int i, k, n = e->n;
+    for (i = 0; i < n; ++i) {
+        /* pairs (i, j > i) are contiguous: particle i's sums stay in registers */
+        const double xi = x[2 * i], yi = x[2 * i + 1], ri = r[i];
+        const double vxi = v[2 * i], vyi = v[2 * i + 1], wri = ri * om[i];
+        double fxi = 0.0, fyi = 0.0, tqi = 0.0;
+        const int end = start[i + 1];
+        for (k = start[i]; k < end; ++k) {
+            const int j = pj[k];
+            const double dx = x[2 * j] - xi, dy = x[2 * j + 1] - yi;
+            const double rs = ri + r[j], d2 = dx * dx + dy * dy;
+            double d, inv_d, nx, ny, dn, fn, fs = 0.0, fx, fy;
+            if (d2 >= rs * rs) {
+                if (history)
+                    fsv[k] = 0.0; /* contact lost: history cleared */
+                continue;
+            }
+            d = sqrt(d2);
+            inv_d = 1.0 / d;
+            nx = dx * inv_d;
+            ny = dy * inv_d;
+            dn = rs - d;
+            fn = kn * dn;
+            if (history) {
+                /* t = (-ny, nx); dus = ((v_j - v_i).t - (R_i w_i + R_j w_j)) dt; eq. 6 */
+                const double dus =
+                    ((v[2 * j + 1] - vyi) * nx - (v[2 * j] - vxi) * ny - (wri + r[j] * om[j])) * dt;
+                fs = fsv[k];
+                sbc_frictional_force(&e->law, dn, dus, &fs, NULL);
+                fs = flush(fs);
+                fsv[k] = fs;
+                tqi += ri * fs;
+                tq[j] += r[j] * fs;
+                ep += 0.5 * fs * fs * inv_ks; /* eq. 12, tangential part (sbc_frictional_energy) */
+            }
+            /* force on i: -fn n + fs t */
+            fx = -fn * nx - fs * ny;
+            fy = -fn * ny + fs * nx;
+            fxi += fx;
+            fyi += fy;
+            f[2 * j] -= fx;
+            f[2 * j + 1] -= fy;
+            ep += 0.5 * fn * dn; /* eq. 12, normal part */
+            ov += dn / rs;       /* eq. 39 sums dn / Rbar_c = 2 dn / rs: the 2 is applied below */
+            ++nc;
         }
-        d = sqrt(d2);
-        nx = dx / d;
-        ny = dy / d;
-        dn = rs - d;
-        if (e->history) {
-            /* t = (-ny, nx); dus = ((v_j - v_i).t - (R_i w_i + R_j w_j)) dt */
-            double dus = ((v[2 * j + 1] - v[2 * i + 1]) * nx - (v[2 * j] - v[2 * i]) * ny -
-                          (r[i] * om[i] + r[j] * om[j])) * dt;
-            fs = e->pairs.fs[k];
-            fn = sbc_frictional_force(&law, dn, dus, &fs, NULL);
-            e->pairs.fs[k] = fs;
-            tq[i] += r[i] * fs;
-            tq[j] += r[j] * fs;
-        } else {
-            fn = law.kn * dn;
-        }
-        /* force on i: -fn n + fs t */
-        fx = -fn * nx - fs * ny;
-        fy = -fn * ny + fs * nx;
-        f[2 * i] += fx;
-        f[2 * i + 1] += fy;
-        f[2 * j] -= fx;
-        f[2 * j + 1] -= fy;
-        ep += sbc_frictional_energy(&law, dn, fs);
-        ov += dn / (0.5 * rs); /* eq. 39: dn / Rbar_c */
-        ++nc;
+        f[2 * i] += fxi;
+        f[2 * i + 1] += fyi;
+        tq[i] += tqi;
     }
     e->ep = ep;
-    e->overlap_sum = ov;
+    e->overlap_sum = 2.0 * ov;
     e->contact_count = nc;
+}
+
+/* Explicit first-order update of eq. 9 with the local damping of eq. 10:
+ *   v += dt (f - alpha |f| sign(v)) / M,  x += dt v
+ *   w += dt (m - beta |m| sign(w)) / I,   theta += dt w
+ * DAMPED is a compile-time constant in each instance. Also records Ek of the
+ * interior (eq. 12), sum |theta| (eq. 41) and whether a particle has moved
+ * more than half the skin since the last neighbour build. */
+static inline void integrate_interior(sbc_engine *e, const int damped)
+{
+    const double dt = e->dt, a = e->alpha, b = e->beta;
+    const double lim = 0.25 * e->pairs.skin * e->pairs.skin;
+    double *restrict x = e->x, *restrict v = e->v, *restrict th = e->theta, *restrict om = e->omega;
+    const double *restrict f = e->f, *restrict tq = e->tq, *restrict xb = e->pairs.x_build;
+    const double *restrict inv_m = e->inv_m, *restrict inv_I = e->inv_I, *restrict mass = e->mass;
+    const double *restrict r = e->r;
+    const unsigned char *restrict kin = e->kinematic;
+    double ek = 0.0, rot = 0.0, moved = 0.0;
+    int k;
+    for (k = 0; k < e->n; ++k) {
+        double fx = f[2 * k], fy = f[2 * k + 1], m = tq[k], vx, vy, w, ddx, ddy;
+        if (kin[k])
+            continue;
+        vx = v[2 * k];
+        vy = v[2 * k + 1];
+        w = om[k];
+        if (damped) {
+            fx -= a * fabs(fx) * ((vx > 0.0) - (vx < 0.0));
+            fy -= a * fabs(fy) * ((vy > 0.0) - (vy < 0.0));
+            m -= b * fabs(m) * ((w > 0.0) - (w < 0.0));
+        }
+        vx = flush(vx + dt * fx * inv_m[k]);
+        vy = flush(vy + dt * fy * inv_m[k]);
+        w = flush(w + dt * m * inv_I[k]);
+        v[2 * k] = vx;
+        v[2 * k + 1] = vy;
+        om[k] = w;
+        x[2 * k] += dt * vx;
+        x[2 * k + 1] += dt * vy;
+        th[k] += dt * w;
+        ek += mass[k] * (0.5 * (vx * vx + vy * vy) + 0.25 * r[k] * r[k] * w * w);
+        rot += fabs(th[k]);
+        ddx = x[2 * k] - xb[2 * k];
+        ddy = x[2 * k + 1] - xb[2 * k + 1];
+        if (ddx * ddx + ddy * ddy > moved)
+            moved = ddx * ddx + ddy * ddy;
+    }
+    e->ek = ek;
+    e->rotation_sum = rot;
+    if (moved > lim)
+        e->stale = 1;
+}
+
+/* One time step: forces at x^n, then the interior to x^(n+1). */
+sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err)
+{
+    if (e->stale && sbc_pairs_build(&e->pairs, e->x, e->r, e->rmax, err) != SBC_OK)
+        return SBC_ERR_NOMEM;
+    e->stale = 0;
+    memset(e->f, 0, sizeof(double) * 2 * (size_t)e->n);
+    memset(e->tq, 0, sizeof(double) * (size_t)e->n);
+    if (e->history)
+        pair_loop(e, 1);
+    else
+        pair_loop(e, 0);
+    if (e->alpha > 0.0 || e->beta > 0.0)
+        integrate_interior(e, 1);
+    else
+        integrate_interior(e, 0);
+    e->step++;
     return SBC_OK;
 }
 
@@ -224,64 +315,42 @@ void sbc_engine_snapshot(sbc_engine *e, sbc_snapshot *s)
     s->particle_count = e->n;
 }
 
-static double sign(double a) { return (a > 0.0) - (a < 0.0); }
-
-/* Explicit first-order update of eq. 9 with the damping of eq. 10:
- *   v += dt (f - alpha |f| sign(v)) / M,  x += dt v
- *   w += dt (m - beta |m| sign(w)) / I,   theta += dt w
- * Frame particles are placed on their targets, with the velocity that moves
+/* Frame particles are placed on their targets, with the velocity that moves
  * them there in this step (so that contact increments see the motion). */
-void sbc_engine_advance(sbc_engine *e, const sbc_commands *cmd)
+void sbc_engine_move_frame(sbc_engine *e, const sbc_commands *cmd)
 {
-    const double dt = e->dt, a = e->alpha, b = e->beta;
-    double *restrict x = e->x, *restrict v = e->v, *restrict f = e->f;
-    double *restrict th = e->theta, *restrict om = e->omega, *restrict tq = e->tq;
-    double ek = 0.0, rot = 0.0;
-    int k, q;
-    for (k = 0; k < e->n; ++k) {
-        double fx, fy, m;
-        if (e->kinematic[k])
-            continue;
-        fx = f[2 * k];
-        fy = f[2 * k + 1];
-        m = tq[k];
-        fx -= a * fabs(fx) * sign(v[2 * k]);
-        fy -= a * fabs(fy) * sign(v[2 * k + 1]);
-        m -= b * fabs(m) * sign(om[k]);
-        v[2 * k] += dt * fx * e->inv_m[k];
-        v[2 * k + 1] += dt * fy * e->inv_m[k];
-        om[k] += dt * m * e->inv_I[k];
-        x[2 * k] += dt * v[2 * k];
-        x[2 * k + 1] += dt * v[2 * k + 1];
-        th[k] += dt * om[k];
-        ek += 0.5 * e->mass[k] * (v[2 * k] * v[2 * k] + v[2 * k + 1] * v[2 * k + 1]) +
-              0.25 * e->mass[k] * e->r[k] * e->r[k] * om[k] * om[k];
-        rot += fabs(th[k]);
-    }
-    if (e->frame) {
-        for (q = 0; q < e->frame->n; ++q) {
-            int p = e->frame->particle[q];
-            if (cmd) {
-                v[2 * p] = (cmd->x[2 * q] - x[2 * p]) / dt;
-                v[2 * p + 1] = (cmd->x[2 * q + 1] - x[2 * p + 1]) / dt;
-                x[2 * p] = cmd->x[2 * q];
-                x[2 * p + 1] = cmd->x[2 * q + 1];
-                if (cmd->free_rotation[q]) {
-                    om[p] += dt * tq[p] * e->inv_I[p];
-                    th[p] += dt * om[p];
-                } else {
-                    om[p] = (cmd->theta[q] - th[p]) / dt;
-                    th[p] = cmd->theta[q];
-                }
+    const double dt = e->dt, lim = 0.25 * e->pairs.skin * e->pairs.skin;
+    double *x = e->x, *v = e->v, *th = e->theta, *om = e->omega;
+    int q;
+    if (!e->frame)
+        return;
+    for (q = 0; q < e->frame->n; ++q) {
+        int p = e->frame->particle[q];
+        double ddx, ddy;
+        if (cmd) {
+            v[2 * p] = (cmd->x[2 * q] - x[2 * p]) / dt;
+            v[2 * p + 1] = (cmd->x[2 * q + 1] - x[2 * p + 1]) / dt;
+            x[2 * p] = cmd->x[2 * q];
+            x[2 * p + 1] = cmd->x[2 * q + 1];
+            if (cmd->free_rotation[q]) {
+                /* free rotation (T): integrated with the rotational damping of eq. 10 */
+                double m = e->tq[p];
+                m -= e->beta * fabs(m) * ((om[p] > 0.0) - (om[p] < 0.0));
+                om[p] = flush(om[p] + dt * m * e->inv_I[p]);
+                th[p] += dt * om[p];
             } else {
-                v[2 * p] = v[2 * p + 1] = om[p] = 0.0;
+                om[p] = (cmd->theta[q] - th[p]) / dt;
+                th[p] = cmd->theta[q];
             }
-            rot += fabs(th[p]);
+        } else {
+            v[2 * p] = v[2 * p + 1] = om[p] = 0.0;
         }
+        e->rotation_sum += fabs(th[p]);
+        ddx = x[2 * p] - e->pairs.x_build[2 * p];
+        ddy = x[2 * p + 1] - e->pairs.x_build[2 * p + 1];
+        if (ddx * ddx + ddy * ddy > lim)
+            e->stale = 1;
     }
-    e->ek = ek;
-    e->rotation_sum = rot;
-    e->step++;
 }
 
 sbc_engine_view sbc_engine_get_view(const sbc_engine *e)

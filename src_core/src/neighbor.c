@@ -40,18 +40,6 @@ void sbc_pairs_free(sbc_pairs *p)
     memset(p, 0, sizeof *p);
 }
 
-int sbc_pairs_stale(const sbc_pairs *p, const double *x)
-{
-    double lim = 0.25 * p->skin * p->skin;
-    int k;
-    for (k = 0; k < p->n; ++k) {
-        double dx = x[2 * k] - p->x_build[2 * k], dy = x[2 * k + 1] - p->x_build[2 * k + 1];
-        if (dx * dx + dy * dy > lim)
-            return 1;
-    }
-    return 0;
-}
-
 static int grow(sbc_pairs *p, int need, int **ni, int **nj, double **nfs)
 {
     int cap = p->capacity;

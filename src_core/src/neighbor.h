@@ -22,9 +22,6 @@ typedef struct sbc_pairs {
 sbc_status sbc_pairs_init(sbc_pairs *p, int n, double skin, int history, sbc_error *err);
 void sbc_pairs_free(sbc_pairs *p);
 
-/* 1 when some particle moved more than skin/2 since the last build. */
-int sbc_pairs_stale(const sbc_pairs *p, const double *x);
-
 /* Rebuilds the list for positions x [2n] and radii r [n], keeping the
  * tangential history of pairs present before and after. */
 sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, double rmax, sbc_error *err);

@@ -245,7 +245,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         run_free(&r);
         return err->status;
     }
-    if ((st = sbc_engine_forces(r.engine, err)) != SBC_OK) {
+    if ((st = sbc_engine_step(r.engine, err)) != SBC_OK) {
         run_free(&r);
         return st;
     }
@@ -284,8 +284,8 @@ static sbc_status cmd_run(script *s, sbc_error *err)
             if (ev == SBC_EVENT_FINISHED) break;
         }
         cmd = sbc_controller_commands(r.ctl);
-        sbc_engine_advance(r.engine, &cmd);
-        if ((st = sbc_engine_forces(r.engine, err)) != SBC_OK) break;
+        sbc_engine_move_frame(r.engine, &cmd);
+        if ((st = sbc_engine_step(r.engine, err)) != SBC_OK) break;
         sbc_engine_snapshot(r.engine, &snap);
     }
     {

@@ -6,8 +6,8 @@
  * are kinematic: each step they move to the controller's targets. The engine
  * drives the controller exactly as an external host does:
  *
- *   loop: sbc_engine_forces -> sbc_engine_snapshot -> sbc_controller_step
- *         -> sbc_engine_advance(commands)
+ *   loop: sbc_engine_step -> sbc_engine_snapshot -> sbc_controller_step
+ *         -> sbc_engine_move_frame(commands)
  */
 #ifndef SBC_ENGINE_H
 #define SBC_ENGINE_H
@@ -39,21 +39,25 @@ void sbc_engine_free(sbc_engine *e);
  * for a free packing. The frame must outlive the engine. */
 void sbc_engine_set_frame(sbc_engine *e, const sbc_frame *frame);
 
-/* Contact forces, moments and energies at the current positions. */
-sbc_status sbc_engine_forces(sbc_engine *e, sbc_error *err);
+/* One time step: contact forces, moments and energies at the current
+ * positions, and the interior particles advanced by the equations of motion
+ * with damping. Frame particles keep their place (see sbc_engine_move_frame). */
+sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err);
 
-/* Fills a snapshot from the last sbc_engine_forces (arrays owned by the engine). */
+/* Fills a snapshot from the last sbc_engine_step: frame positions and
+ * reactions before the frame moves, Ek after the interior moved (arrays
+ * owned by the engine). */
 void sbc_engine_snapshot(sbc_engine *e, sbc_snapshot *snap);
 
-/* Advances one time step: interior particles by the equations of motion with
- * damping, frame particles to the commanded targets (cmd may be NULL). */
-void sbc_engine_advance(sbc_engine *e, const sbc_commands *cmd);
+/* Moves the frame particles to the commanded targets within the step just
+ * taken (cmd NULL: the frame stays where it is). */
+void sbc_engine_move_frame(sbc_engine *e, const sbc_commands *cmd);
 
 /* Read access for output writers. */
 typedef struct sbc_engine_view {
     int n;
     const double *x, *v, *r, *theta, *omega, *mass;
-    const double *f, *torque; /* contact forces (N) and moments (N m) of the last sbc_engine_forces */
+    const double *f, *torque; /* contact forces (N) and moments (N m) of the last sbc_engine_step */
     const unsigned char *kinematic;
     int pair_count;
     const int *pair_i, *pair_j;
