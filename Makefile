@@ -1,7 +1,7 @@
 # servo_bc: pure-C core, embedded runner, tests.
 #   make          core libraries (static, shared) and the runner build/servo-bc
 #   make demo     the paper's 25-particle (D) case on the embedded engine
-#   make check    every test (core, sanitizers)
+#   make check    every test: core, ASan+UBSan build, valgrind (installs what it needs)
 #   make bench    benchmarks (prints figures; LAMMPS side when installed)
 
 CC      ?= cc
@@ -17,7 +17,7 @@ CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 TEST_HDR = $(wildcard tests/*.h)
 
-.PHONY: all demo check check-core check-sanitize valgrind bench clean
+.PHONY: all demo check deps check-core check-sanitize check-valgrind bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc
 
 $(B)/core/%.o: src_core/src/%.c $(CORE_HDR)
@@ -46,7 +46,11 @@ demo: all
 	@mkdir -p out/demo
 	$(B)/servo-bc inputs/demo_D_25.sbc
 
-check: check-core check-sanitize
+check: deps
+	$(MAKE) check-core check-sanitize check-valgrind
+
+deps:
+	@bash scripts/install-deps.sh core
 
 check-core: $(B)/run_tests $(B)/servo-bc
 	$(B)/run_tests $(B)/servo-bc
@@ -54,7 +58,7 @@ check-core: $(B)/run_tests $(B)/servo-bc
 check-sanitize: $(B)/run_tests_san $(B)/servo-bc
 	ASAN_OPTIONS=detect_leaks=1 $(B)/run_tests_san $(B)/servo-bc
 
-valgrind: $(B)/run_tests $(B)/servo-bc
+check-valgrind: $(B)/run_tests $(B)/servo-bc
 	valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect -q \
 	  $(B)/run_tests $(B)/servo-bc
 
@@ -62,6 +66,7 @@ $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
 
 bench: $(B)/bench_engine
+	@bash scripts/install-deps.sh lammps || echo "bench: LAMMPS not available; measuring the embedded engine only"
 	bash bench/engine_vs_lammps.sh $(B)/bench_engine
 
 clean:

@@ -155,7 +155,8 @@ static inline double flush(double a) { return fabs(a) < 1e-120 ? 0.0 : a; }
  * scenes run without the tangential spring. */
 static inline void pair_loop(sbc_engine *e, const int history)
 {
-    const double dt = e->dt, kn = e->law.kn, inv_ks = e->law.ks > 0.0 ? 1.0 / e->law.ks : 0.0;
+    const sbc_frictional law = e->law;
+    const double dt = e->dt, kn = law.kn, inv_ks = law.ks > 0.0 ? 1.0 / law.ks : 0.0;
     const double *restrict x = e->x, *restrict v = e->v, *restrict om = e->omega, *restrict r = e->r;
     const int *restrict start = e->pairs.start, *restrict pj = e->pairs.j;
     double *restrict f = e->f, *restrict tq = e->tq, *restrict fsv = e->pairs.fs;
@@ -189,7 +190,7 @@ static inline void pair_loop(sbc_engine *e, const int history)
                 const double dus =
                     ((v[2 * j + 1] - vyi) * nx - (v[2 * j] - vxi) * ny - (wri + r[j] * om[j])) * dt;
                 fs = fsv[k];
-                sbc_frictional_force(&e->law, dn, dus, &fs, NULL);
+                sbc_frictional_force(&law, dn, dus, &fs, NULL);
                 fs = flush(fs);
                 fsv[k] = fs;
                 tqi += ri * fs;

@@ -77,6 +77,8 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
     fprintf(fp, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">%s</text>\n", LEFT + pw / 2, H - 14, xlabel);
     fprintf(fp, "<text x=\"18\" y=\"%g\" text-anchor=\"middle\" transform=\"rotate(-90 18 %g)\">%s</text>\n",
             TOP + ph / 2, TOP + ph / 2, ylabel);
+    fprintf(fp, "<rect x=\"%g\" y=\"%g\" width=\"260\" height=\"%g\" fill=\"white\" fill-opacity=\"0.85\" "
+                "stroke=\"#999\"/>\n", LEFT + 8, TOP + 6, 18.0 * nseries + 8);
     for (s = 0; s < nseries; ++s) {
         const char *c = colors[s % 6];
         int first = 1;

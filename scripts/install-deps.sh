@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs what the project's targets need on a Debian machine, as root.
+#   scripts/install-deps.sh core     compiler, make, valgrind (make check)
+#   scripts/install-deps.sh lammps   the Debian LAMMPS package (bench/, LAMMPS side)
+# Already-installed tools are left alone; without root or apt-get it only reports.
+set -euo pipefail
+need=()
+for what in "$@"; do
+  case "$what" in
+    core)
+      command -v cc >/dev/null || need+=(gcc libc6-dev)
+      command -v make >/dev/null || need+=(make)
+      command -v valgrind >/dev/null || need+=(valgrind)
+      ;;
+    lammps)
+      command -v lmp >/dev/null || need+=(lammps)
+      ;;
+    *) echo "install-deps: unknown set '$what' (expected core or lammps)" >&2; exit 2 ;;
+  esac
+done
+[ ${#need[@]} -eq 0 ] && exit 0
+if [ "$(id -u)" != 0 ] || ! command -v apt-get >/dev/null; then
+  echo "install-deps: missing ${need[*]}; install them (Debian: apt-get install ${need[*]})" >&2
+  exit 1
+fi
+echo "install-deps: installing ${need[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
