@@ -47,7 +47,7 @@ demo: all
 	$(B)/servo-bc inputs/demo_D_25.sbc
 
 check: deps
-	$(MAKE) check-core check-sanitize check-valgrind
+	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind
 
 deps:
 	@bash scripts/install-deps.sh core
