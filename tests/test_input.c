@@ -36,6 +36,7 @@ static const bad_case cases[] = {
     {"servo_bc Q\n", {"bad:1:", "unknown boundary condition 'Q'", "D, P, T or mixed"}},
     {"servo_bc D bogus 1\n", {"bad:1:", "unknown keyword 'bogus'", "increments"}},
     {"servo_bc D F 1 2 2 1\n", {"bad:1:", "keyword 'F'", "det F = -3"}},
+    {"servo_bc D F -1 0 0 -1\n", {"bad:1:", "det F reaches 0 at 0.5", "whole path"}},
     {"servo_bc D F 1 0 0\n", {"bad:1:", "keyword 'F'", "missing F22"}},
     {"servo_bc D F 1 0 x 1\n", {"bad:1:", "F21 'x'", "a real number"}},
     {"servo_bc D increments 0\n", {"bad:1:", "keyword 'increments'", "'0'"}},

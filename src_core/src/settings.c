@@ -63,6 +63,30 @@ sbc_status sbc_parse_int(const char *word, const char *what, long lo, long hi, l
     return SBC_OK;
 }
 
+/* Smallest det(I + t (F - I)) for t in [0, 1]: a quadratic 1 + t tr A + t^2 det A. */
+static double path_det_min(const double F[4], double *t_min)
+{
+    const double a0 = F[0] - 1.0, a3 = F[3] - 1.0;
+    const double tr = a0 + a3, det = a0 * a3 - F[1] * F[2];
+    double best = 1.0, tb = 0.0, cand[2] = {1.0, 0.0};
+    int k;
+    if (det > 0.0) {
+        cand[1] = -tr / (2.0 * det);
+    }
+    for (k = 0; k < 2; ++k) {
+        double t = cand[k], J;
+        if (t < 0.0 || t > 1.0)
+            continue;
+        J = 1.0 + t * tr + t * t * det;
+        if (J < best) {
+            best = J;
+            tb = t;
+        }
+    }
+    *t_min = tb;
+    return best;
+}
+
 typedef struct cursor {
     int n, i;
     const char *const *w;
@@ -154,6 +178,14 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
             if (st == SBC_OK && !(s->F[0] * s->F[3] - s->F[1] * s->F[2] > 0.0))
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': det F = %g is not positive (expected det F > 0)",
                               s->F[0] * s->F[3] - s->F[1] * s->F[2]);
+            if (st == SBC_OK) {
+                double t = 0.0, J = path_det_min(s->F, &t);
+                if (!(J > 0.0))
+                    st = sbc_fail(err, SBC_ERR_INPUT,
+                                  "keyword 'F': det F reaches %g at %.3g of the linear path from I (expected det F > 0 "
+                                  "on the whole path; apply the deformation in stages)",
+                                  J, t);
+            }
         } else if (strcmp(key, "increments") == 0) {
             st = read_int(&c, "N", 1, 100000000L, &iv);
             s->increments = (int)iv;
