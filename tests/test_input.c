@@ -34,6 +34,7 @@ static const bad_case cases[] = {
     {"contact frictional kn 1e4 ks -2 mu 0.4\n", {"bad:1:", "ks '-2'", ">= 0"}},
     {"contact frictional kn 1e4 kt 2e3 mu 0.4\n", {"bad:1:", "expected keyword 'ks' but found 'kt'", "usage"}},
     {"servo_bc Q\n", {"bad:1:", "unknown boundary condition 'Q'", "D, P, T or mixed"}},
+    {"servo_bc mixed\n", {"bad:1:", "'mixed' is not implemented", "D, P, T"}},
     {"servo_bc D bogus 1\n", {"bad:1:", "unknown keyword 'bogus'", "increments"}},
     {"servo_bc D F 1 2 2 1\n", {"bad:1:", "keyword 'F'", "det F = -3"}},
     {"servo_bc D F -1 0 0 -1\n", {"bad:1:", "det F reaches 0 at 0.5", "whole path"}},
@@ -96,6 +97,17 @@ static void packing_files(void)
              path);
     CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_FRAME);
     CHECK(strstr(err.message, "bad:6:") && strstr(err.message, "top-right corner"));
+    /* (P) needs +/- partners: a 4 x 4 lattice without one top edge particle */
+    write_text(path, "0 0 1.02e-3\n2e-3 0 1.02e-3\n4e-3 0 1.02e-3\n6e-3 0 1.02e-3\n"
+                     "0 2e-3 1.02e-3\n2e-3 2e-3 1.02e-3\n4e-3 2e-3 1.02e-3\n6e-3 2e-3 1.02e-3\n"
+                     "0 4e-3 1.02e-3\n2e-3 4e-3 1.02e-3\n4e-3 4e-3 1.02e-3\n6e-3 4e-3 1.02e-3\n"
+                     "0 6e-3 1.02e-3\n4e-3 6e-3 1.02e-3\n6e-3 6e-3 1.02e-3\n");
+    snprintf(script, sizeof script,
+             "read_packing %s\ncontact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\ntimestep 1e-5\nservo_bc P\nrun\n",
+             path);
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_FRAME);
+    CHECK(strstr(err.message, "bad:6:") && strstr(err.message, "servo_bc P") &&
+          strstr(err.message, "no periodic partner"));
 }
 
 /* The executable: non-zero exit, "ERROR:" with the line on stderr, and the

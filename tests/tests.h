@@ -7,4 +7,5 @@ void test_relax(void);
 void test_lattice(void);
 void test_input(void);
 void test_outputs(void);
+void test_servo(void);
 #endif

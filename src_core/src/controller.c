@@ -1,8 +1,10 @@
-/* The servo_bc controller as a state machine: (D) of Table 1. */
+/* The servo_bc controller as a state machine: (D) of Table 1, (P) and (T)
+ * of Tables 2 (with displacement prediction) and 3 (without). */
 #include "sbc/controller.h"
 
 #include "sbc/homogenize.h"
 #include "sbc/relax.h"
+#include "servo.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -19,8 +21,53 @@ struct sbc_controller {
     double *theta_cmd;   /* [Q] rad */
     unsigned char *free_rot;
     double *a;           /* [2Q] boundary forces a_q = -sum of contact forces (eq. 5), N */
+    double *m;           /* [Q] boundary moments m_q = -sum of contact moments (eq. 5), N m */
+    double *x_prev;      /* [2Q] converged positions of the previous increment (prediction), m */
+    double F_prev[4];    /* F imposed at the previous increment */
+    double F_now[4];     /* F imposed at this increment */
+    int servo;           /* 0: initial relaxation of the increment, 1: servo iterations */
+    int iteration;       /* servo iterations in this increment */
+    double r_first;      /* first force residual of the increment (growth check) */
+    long steps;          /* host steps spent on this increment */
+    sbc_servo_norms norms; /* last residual norms of this increment (zero for D) */
     sbc_result result;
 };
+
+/* Step 1.1 of Tables 1-3 (2.1 of Table 2): the frame commands that open an
+ * increment. (D), (P): x_q = F X_q and Q_q = I; (T): x_q = F X_q with free
+ * rotations. With prediction (n_f > 0, increments >= 1), the edge particles
+ * of (P) and every particle of (T) start from
+ *   x_q = F_i X_q + n_f (x_q^(i-1) - F_(i-1) X_q)          (Table 2, 2.1)
+ * and the corners of (P) from F_i X_c. n_f = 0 gives Table 3 exactly. */
+static void start_increment(sbc_controller *c)
+{
+    const sbc_frame *f = c->frame;
+    const double *F = c->F_now, *G = c->F_prev;
+    const int predict = c->increment > 0 && c->s.predict > 0.0 && c->s.bc != SBC_BC_D;
+    int q;
+    for (q = 0; q < f->n; ++q) {
+        const double *X = &f->X[2 * q];
+        double x0 = F[0] * X[0] + F[1] * X[1], x1 = F[2] * X[0] + F[3] * X[1];
+        if (predict && (c->s.bc == SBC_BC_T || f->side[q] != SBC_SIDE_CORNER)) {
+            x0 += c->s.predict * (c->x_prev[2 * q] - (G[0] * X[0] + G[1] * X[1]));
+            x1 += c->s.predict * (c->x_prev[2 * q + 1] - (G[2] * X[0] + G[3] * X[1]));
+        }
+        c->x_cmd[2 * q] = x0;
+        c->x_cmd[2 * q + 1] = x1;
+        if (c->s.bc == SBC_BC_T) {
+            c->free_rot[q] = 1;
+        } else {
+            c->theta_cmd[q] = 0.0;
+            c->free_rot[q] = 0;
+        }
+    }
+    c->servo = 0;
+    c->iteration = 0;
+    c->r_first = 0.0;
+    c->steps = 0;
+    memset(&c->norms, 0, sizeof c->norms);
+    sbc_relax_start(&c->relax, c->s.tol_E, c->s.window);
+}
 
 sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings *settings, const double *mass,
                                       double dt, sbc_error *err)
@@ -44,14 +91,30 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     c->theta_cmd = calloc(q, sizeof(double));
     c->free_rot = calloc(q, 1);
     c->a = malloc(sizeof(double) * 2 * q);
-    if (!c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a) {
+    c->m = malloc(sizeof(double) * q);
+    c->x_prev = malloc(sizeof(double) * 2 * q);
+    if (!c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev) {
         sbc_controller_free(c);
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
         return NULL;
     }
     memcpy(c->mass, mass, sizeof(double) * q);
-    memcpy(c->x_cmd, frame->X, sizeof(double) * 2 * q); /* increment 0: F = I */
-    sbc_relax_start(&c->relax, c->s.tol_E, c->s.window);
+    if (c->s.bc == SBC_BC_P) {
+        size_t k;
+        for (k = 0; k < q; ++k) {
+            if (frame->side[k] != SBC_SIDE_CORNER && frame->partner[k] < 0) {
+                sbc_controller_free(c);
+                sbc_fail(err, SBC_ERR_FRAME,
+                         "servo_bc P: frame particle %d (packing index %d) has no periodic partner on the opposite "
+                         "edge (opposite edges must hold equally many particles)",
+                         (int)k, frame->particle[k]);
+                return NULL;
+            }
+        }
+    }
+    sbc_controller_target_F(c, 0, c->F_now);
+    memcpy(c->F_prev, c->F_now, sizeof c->F_prev);
+    start_increment(c);
     return c;
 }
 
@@ -64,6 +127,8 @@ void sbc_controller_free(sbc_controller *c)
     free(c->theta_cmd);
     free(c->free_rot);
     free(c->a);
+    free(c->m);
+    free(c->x_prev);
     free(c);
 }
 
@@ -89,20 +154,6 @@ void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4]
         F[k] = I[k] + t * (c->s.F[k] - I[k]);
 }
 
-/* Table 1, step 1.1: x_q = F X_q and Q_q = I on the whole frame. */
-static void command_homogeneous(sbc_controller *c, const double F[4])
-{
-    const sbc_frame *f = c->frame;
-    int q;
-    for (q = 0; q < f->n; ++q) {
-        const double *X = &f->X[2 * q];
-        c->x_cmd[2 * q] = F[0] * X[0] + F[1] * X[1];
-        c->x_cmd[2 * q + 1] = F[2] * X[0] + F[3] * X[1];
-        c->theta_cmd[q] = 0.0;
-        c->free_rot[q] = 0;
-    }
-}
-
 static int snapshot_finite(const sbc_frame *f, const sbc_snapshot *s, const char **what)
 {
     int k;
@@ -123,9 +174,6 @@ static sbc_status measure(sbc_controller *c, const sbc_snapshot *snap, sbc_error
     const sbc_frame *f = c->frame;
     sbc_result *r = &c->result;
     double scale;
-    int k;
-    for (k = 0; k < 2 * f->n; ++k)
-        c->a[k] = -snap->force[k]; /* eq. 5: sum of contact forces = -a_q */
     r->increment = c->increment;
     sbc_homogenize_F(f, snap->x, r->F);
     sbc_homogenize_P(f, c->a, r->P);
@@ -138,16 +186,58 @@ static sbc_status measure(sbc_controller *c, const sbc_snapshot *snap, sbc_error
         r->hill_mandel /= scale;
     r->overlap_mean = snap->contact_count > 0 ? snap->overlap_sum / (double)snap->contact_count : 0.0;
     r->rotation_mean = snap->particle_count > 0 ? snap->rotation_sum / (double)snap->particle_count : 0.0;
-    r->iterations = 0;
-    r->relax_steps = c->relax.steps;
-    r->r_force = r->r_moment = r->r_deformation = 0.0;
+    r->iterations = c->iteration;
+    r->relax_steps = c->steps;
+    r->r_force = c->norms.r_force;
+    r->r_moment = c->norms.r_moment;
+    r->r_deformation = c->norms.r_deformation;
     return SBC_OK;
+}
+
+/* Step 1.6 of Tables 2-3 with separate force, moment and deformation norms. */
+static int converged(const sbc_controller *c, const sbc_servo_norms *n)
+{
+    if (n->r_force > c->s.tol_force)
+        return 0;
+    if (c->s.bc == SBC_BC_P)
+        return n->r_moment <= c->s.tol_moment;
+    return n->r_deformation <= c->s.tol_deformation;
+}
+
+/* too_slow: the iteration converges but not within max_iterations. */
+static void diverged(const sbc_controller *c, const sbc_servo_norms *n, const char *why, int too_slow,
+                     sbc_error *err)
+{
+    const char *gain = c->s.bc == SBC_BC_P ? "gain_force or gain_moment" : "gain_force or gain_deformation";
+    sbc_fail(err, SBC_ERR_DIVERGED,
+             "servo_bc %s: increment %d, iteration %d: %s (r_force = %.3g, r_moment = %.3g, r_deformation = %.3g; "
+             "tolerances %.3g, %.3g, %.3g); %s %s",
+             sbc_bc_name(c->s.bc), c->increment, c->iteration, why, n->r_force, n->r_moment, n->r_deformation,
+             c->s.tol_force, c->s.tol_moment, c->s.tol_deformation,
+             too_slow ? "raise max_iterations, loosen the tolerances or raise" : "lower", gain);
+}
+
+/* Table 1, 1.3 / Tables 2-3, 1.6.A: the relaxed, converged configuration is
+ * the result of increment i; the next increment starts. */
+static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
+{
+    if (measure(c, snap, err) != SBC_OK)
+        return SBC_EVENT_FAILED;
+    memcpy(c->x_prev, snap->x, sizeof(double) * 2 * (size_t)c->frame->n);
+    memcpy(c->F_prev, c->F_now, sizeof c->F_prev);
+    if (c->increment == c->s.increments) {
+        c->increment++;
+        return SBC_EVENT_FINISHED;
+    }
+    c->increment++;
+    sbc_controller_target_F(c, c->increment, c->F_now);
+    start_increment(c);
+    return SBC_EVENT_INCREMENT;
 }
 
 sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
 {
     const char *what = NULL;
-    double F[4];
     if (c->increment > c->s.increments) {
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: the loading path is already finished", sbc_bc_name(c->s.bc));
         return SBC_EVENT_FAILED;
@@ -170,16 +260,47 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
         }
         return SBC_EVENT_RELAXING;
     }
-    /* Table 1, step 1.3: the relaxed configuration is the result of increment i. */
-    if (measure(c, snap, err) != SBC_OK)
-        return SBC_EVENT_FAILED;
-    if (c->increment == c->s.increments) {
-        c->increment++;
-        return SBC_EVENT_FINISHED;
+    {
+        int k;
+        for (k = 0; k < 2 * c->frame->n; ++k)
+            c->a[k] = -snap->force[k]; /* eq. 5: sum of contact forces = -a_q */
+        for (k = 0; k < c->frame->n; ++k)
+            c->m[k] = -snap->torque[k];
     }
-    c->increment++;
-    sbc_controller_target_F(c, c->increment, F);
-    command_homogeneous(c, F);
-    sbc_relax_start(&c->relax, c->s.tol_E, c->s.window);
-    return SBC_EVENT_INCREMENT;
+    c->steps += c->relax.steps;
+    if (c->s.bc != SBC_BC_D) {
+        sbc_servo_norms nrm;
+        const int first = !c->servo;
+        /* Tables 2-3: after the initial relaxation (1.2) correct at once (1.3);
+         * after each later relaxation (1.4) check the residuals (1.5-1.6). */
+        sbc_servo_update(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->F_now, c->a, c->m, snap->x, NULL, NULL, &nrm);
+        c->norms = nrm;
+        if (!isfinite(nrm.r_force) || !isfinite(nrm.r_moment) || !isfinite(nrm.r_deformation)) {
+            sbc_fail(err, SBC_ERR_NUMERIC, "servo_bc %s: increment %d, iteration %d: non-finite residual",
+                     sbc_bc_name(c->s.bc), c->increment, c->iteration);
+            return SBC_EVENT_FAILED;
+        }
+        if (first) {
+            c->r_first = nrm.r_force;
+        } else if (converged(c, &nrm)) {
+            return accept(c, snap, err);
+        } else if (nrm.r_force > 1e3 * (c->r_first > c->s.tol_force ? c->r_first : c->s.tol_force)) {
+            diverged(c, &nrm, "the force residual grew more than 1000-fold", 0, err);
+            return SBC_EVENT_FAILED;
+        } else if (c->iteration >= c->s.max_iterations) {
+            diverged(c, &nrm, "max_iterations reached", 1, err);
+            return SBC_EVENT_FAILED;
+        }
+        sbc_servo_update(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->F_now, c->a, c->m, snap->x, c->x_cmd,
+                         c->theta_cmd, &nrm);
+        if (nrm.max_step > 0.5) {
+            diverged(c, &nrm, "a correction moved a frame particle by more than half its radius", 0, err);
+            return SBC_EVENT_FAILED;
+        }
+        c->servo = 1;
+        c->iteration++;
+        sbc_relax_start(&c->relax, c->s.tol_E, c->s.window);
+        return SBC_EVENT_CORRECTED;
+    }
+    return accept(c, snap, err);
 }

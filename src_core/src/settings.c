@@ -158,9 +158,13 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
         return sbc_fail(err, SBC_ERR_INPUT, "missing boundary condition (expected D, P, T or mixed)");
     if (strcmp(words[0], "D") == 0)
         s->bc = SBC_BC_D;
-    else if (strcmp(words[0], "P") == 0 || strcmp(words[0], "T") == 0 || strcmp(words[0], "mixed") == 0)
+    else if (strcmp(words[0], "P") == 0)
+        s->bc = SBC_BC_P;
+    else if (strcmp(words[0], "T") == 0)
+        s->bc = SBC_BC_T;
+    else if (strcmp(words[0], "mixed") == 0)
         return sbc_fail(err, SBC_ERR_INPUT,
-                        "boundary condition '%s' is not implemented in this version (available: D)", words[0]);
+                        "boundary condition 'mixed' is not implemented in this version (available: D, P, T)");
     else
         return sbc_fail(err, SBC_ERR_INPUT, "unknown boundary condition '%s' (expected D, P, T or mixed)", words[0]);
 

@@ -1,0 +1,139 @@
+/* Servo control of (P) and (T): residuals (eqs. 32, 35), normalizations
+ * (eq. 37) and corrections (eqs. 33, 34, 36). */
+#include "servo.h"
+
+#include <math.h>
+
+/* (P), eqs. 32-34. Residuals on each +/- edge pair:
+ *   da_e = a+_e + a-_e,   dm_e = m+_e + m-_e,   dm_c = sum of the four corner moments.
+ * The corrections are added to both partners alike, which keeps
+ * x+ - x- = F (X+ - X-) (eq. 19) exactly:
+ *   du_e = -g_a da_e,   dtheta_e = -g_m dm_e,   dtheta_c = -g_m dm_c.
+ * Sign: a_q is minus the resultant contact force (eq. 5), so a frame particle
+ * held off its equilibrium by u has a = +k u; the correction must be -g a. The
+ * paper's eq. 33 writes +g da with da of eq. 32; we read its residual as
+ * "required minus measured" (0 - (a+ + a-)), as eq. 35 writes it for (T).
+ * Gains from the dimensionless values of Table 4: g_a = G_a dt^2 / M,
+ * g_m = G_m dt^2 / (M R^2), with M and R the mean of the two partners. */
+static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
+                           const double *a, const double *m, double *x_cmd, double *theta_cmd, sbc_servo_norms *o)
+{
+    double sf = 0.0, sm = 0.0, dmc = 0.0, mc = 0.0, rc = 0.0;
+    int q, c;
+    for (q = 0; q < f->n; ++q) {
+        int p = f->partner[q];
+        double M, R, at, mt, da0, da1, dm, ga, gm;
+        if (f->side[q] != SBC_SIDE_BOTTOM && f->side[q] != SBC_SIDE_RIGHT)
+            continue; /* each pair once, from its bottom or right member */
+        M = 0.5 * (mass[q] + mass[p]);
+        R = 0.5 * (f->R[q] + f->R[p]);
+        at = M * R / (dt * dt);     /* a~ of eq. 37, N */
+        mt = M * R * R / (dt * dt); /* m~ of eq. 37, N m */
+        da0 = a[2 * q] + a[2 * p];
+        da1 = a[2 * q + 1] + a[2 * p + 1];
+        dm = m[q] + m[p];
+        sf += (da0 * da0 + da1 * da1) / (at * at);
+        sm += dm * dm / (mt * mt);
+        if (x_cmd) {
+            double u0, u1, step;
+            ga = s->gain_force * dt * dt / M;
+            gm = s->gain_moment * dt * dt / (M * R * R);
+            u0 = -ga * da0;
+            u1 = -ga * da1;
+            x_cmd[2 * q] += u0;
+            x_cmd[2 * q + 1] += u1;
+            x_cmd[2 * p] += u0;
+            x_cmd[2 * p + 1] += u1;
+            theta_cmd[q] -= gm * dm;
+            theta_cmd[p] -= gm * dm;
+            step = sqrt(u0 * u0 + u1 * u1) / R;
+            if (step > o->max_step) o->max_step = step;
+            step = fabs(gm * dm); /* rotation step in rad = arc length / R */
+            if (step > o->max_step) o->max_step = step;
+        }
+    }
+    for (c = 0; c < 4; ++c) {
+        int qc = f->corner[c];
+        dmc += m[qc];
+        mc += 0.25 * mass[qc];
+        rc += 0.25 * f->R[qc];
+    }
+    {
+        double mt = mc * rc * rc / (dt * dt);
+        sm += dmc * dmc / (mt * mt);
+        if (theta_cmd) {
+            double gm = s->gain_moment * dt * dt / (mc * rc * rc);
+            for (c = 0; c < 4; ++c)
+                theta_cmd[f->corner[c]] -= gm * dmc;
+            if (fabs(gm * dmc) > o->max_step) o->max_step = fabs(gm * dmc);
+        }
+    }
+    o->r_force = sqrt(sf);
+    o->r_moment = sqrt(sm);
+    o->r_deformation = 0.0;
+}
+
+/* (T), eqs. 35-36, for every frame particle q:
+ *   da_q = P A_q - a_q                                  (P from eq. 23)
+ *   dF_q = V F A_q - sum_r (A_q . A_r) x_r              (m^3)
+ *   du_q = g_a da_q + g_F dF_q
+ * eq. 35 prints dF_q as sum_r [V F A_q - (A_q . A_r) x_r]; derived again from
+ * eq. 15 dotted with A_q (V F A_q = sum_r x_r (A_r . A_q)), the V F A_q term
+ * stands once, outside the sum; it vanishes exactly when eq. 15 holds for the
+ * imposed F. Gains: g_a = G_a dt^2 / M_q, g_F = G_F / R_q^2; normalizations of
+ * eq. 37: a~ = M R / dt^2, F~ = R^3. O(Q^2) for the sum over r; the frame
+ * is O(sqrt N) particles, so this stays far below the cost of a DEM step. */
+static void servo_traction(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
+                           const double F[4], const double *a, const double *x, double *x_cmd, sbc_servo_norms *o)
+{
+    double P[4], sf = 0.0, sd = 0.0;
+    int q, r;
+    /* eq. 23 */
+    for (q = 0; q < 4; ++q)
+        P[q] = 0.0;
+    for (q = 0; q < f->n; ++q) {
+        P[0] += a[2 * q] * f->X[2 * q];
+        P[1] += a[2 * q] * f->X[2 * q + 1];
+        P[2] += a[2 * q + 1] * f->X[2 * q];
+        P[3] += a[2 * q + 1] * f->X[2 * q + 1];
+    }
+    for (q = 0; q < 4; ++q)
+        P[q] /= f->V;
+    for (q = 0; q < f->n; ++q) {
+        const double *A = &f->A[2 * q];
+        double M = mass[q], R = f->R[q];
+        double at = M * R / (dt * dt), Ft = R * R * R;
+        double da0 = P[0] * A[0] + P[1] * A[1] - a[2 * q];
+        double da1 = P[2] * A[0] + P[3] * A[1] - a[2 * q + 1];
+        double dF0 = f->V * (F[0] * A[0] + F[1] * A[1]), dF1 = f->V * (F[2] * A[0] + F[3] * A[1]);
+        for (r = 0; r < f->n; ++r) {
+            double w = A[0] * f->A[2 * r] + A[1] * f->A[2 * r + 1];
+            dF0 -= w * x[2 * r];
+            dF1 -= w * x[2 * r + 1];
+        }
+        sf += (da0 * da0 + da1 * da1) / (at * at);
+        sd += (dF0 * dF0 + dF1 * dF1) / (Ft * Ft);
+        if (x_cmd) {
+            double ga = s->gain_force * dt * dt / M, gF = s->gain_deformation / (R * R);
+            double u0 = ga * da0 + gF * dF0, u1 = ga * da1 + gF * dF1, step;
+            x_cmd[2 * q] += u0;
+            x_cmd[2 * q + 1] += u1;
+            step = sqrt(u0 * u0 + u1 * u1) / R;
+            if (step > o->max_step) o->max_step = step;
+        }
+    }
+    o->r_force = sqrt(sf);
+    o->r_moment = 0.0;
+    o->r_deformation = sqrt(sd);
+}
+
+void sbc_servo_update(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
+                      const double F[4], const double *a, const double *m, const double *x, double *x_cmd,
+                      double *theta_cmd, sbc_servo_norms *out)
+{
+    out->max_step = 0.0;
+    if (bc == SBC_BC_P)
+        servo_periodic(f, s, mass, dt, a, m, x_cmd, theta_cmd, out);
+    else
+        servo_traction(f, s, mass, dt, F, a, x, x_cmd, out);
+}

@@ -1,0 +1,24 @@
+/* Private: residuals and corrections of the servo-controlled boundary
+ * conditions (P) and (T) (paper Sect. 3.2, eqs. 32-37). */
+#ifndef SBC_SERVO_H
+#define SBC_SERVO_H
+
+#include "sbc/frame.h"
+#include "sbc/settings.h"
+
+typedef struct sbc_servo_norms {
+    double r_force;       /* sqrt(sum |da|^2 / a~^2), eq. 37 normalization */
+    double r_moment;      /* sqrt(sum (dm / m~)^2), (P) only */
+    double r_deformation; /* sqrt(sum |dF_q|^2 / F~^2), (T) only */
+    double max_step;      /* largest correction, relative to the particle's radius */
+} sbc_servo_norms;
+
+/* Residual norms of the state (a [2Q] boundary forces, m [Q] boundary
+ * moments, x [2Q] positions) and, when x_cmd/theta_cmd are not NULL, the
+ * corrections added to them (eqs. 33-34 for P, 36 for T). F is the imposed
+ * macroscopic deformation gradient, mass [Q] in kg, dt in s. */
+void sbc_servo_update(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
+                      const double F[4], const double *a, const double *m, const double *x, double *x_cmd,
+                      double *theta_cmd, sbc_servo_norms *out);
+
+#endif

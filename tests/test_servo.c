@@ -1,0 +1,304 @@
+#define _POSIX_C_SOURCE 200809L
+/* (P) and (T) servo control (Sect. 3.2): converged states checked against
+ * eqs. 20, 21, 15 and 30 from the final snapshot, independently of the
+ * controller's own norms; closed form; prediction; divergence. */
+#include "check.h"
+#include "csv_read.h"
+#include "tests.h"
+
+#include "sbc/controller.h"
+#include "sbc/engine.h"
+#include "sbc/homogenize.h"
+#include "sbc/packing.h"
+#include "sbc/script.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct final_state {
+    sbc_frame frame;
+    double *x, *a, *m, *mass; /* frame-ordered copies of the last snapshot */
+    double F[4];              /* imposed at the last increment */
+    sbc_result result;
+    sbc_status status;
+    char message[SBC_ERROR_LEN];
+} final_state;
+
+/* Runs a 5 x 5 lattice (spacing 2 mm, R 1.02 mm, kn 1e4, ks, mu 0.4,
+ * density 2e3, dt 1e-5) with the given servo_bc words to the end. */
+static void run_lattice(const char *words, double ks, final_state *out)
+{
+    char buf[512], *w[64];
+    int nw = 0, q;
+    sbc_packing p;
+    sbc_settings s;
+    sbc_error err;
+    sbc_engine_def def = sbc_engine_def_default();
+    sbc_engine *e;
+    sbc_controller *c;
+    sbc_snapshot snap;
+    memset(out, 0, sizeof *out);
+    snprintf(buf, sizeof buf, "%s", words);
+    for (w[nw] = strtok(buf, " "); w[nw]; w[++nw] = strtok(NULL, " "))
+        ;
+    out->status = sbc_settings_parse(&s, nw, (const char *const *)w, &err);
+    CHECK(out->status == SBC_OK);
+    sbc_packing_lattice_square(&p, 5, 5, 2e-3, 1.02e-3, &err);
+    sbc_frame_detect(&out->frame, p.n, p.x, p.r, 0.0, &err);
+    def.n = p.n;
+    def.x = p.x;
+    def.r = p.r;
+    def.dt = 1e-5;
+    def.law.ks = ks;
+    e = sbc_engine_create(&def, &err);
+    sbc_engine_set_frame(e, &out->frame);
+    out->mass = malloc(sizeof(double) * (size_t)out->frame.n);
+    sbc_engine_frame_masses(e, out->mass);
+    c = sbc_controller_create(&out->frame, &s, out->mass, def.dt, &err);
+    CHECK(c != NULL);
+    out->status = SBC_ERR_INPUT;
+    for (; c;) {
+        sbc_event ev;
+        sbc_commands cmd;
+        sbc_engine_step(e, &err);
+        sbc_engine_snapshot(e, &snap);
+        ev = sbc_controller_step(c, &snap, &err);
+        if (ev == SBC_EVENT_FAILED) {
+            out->status = err.status;
+            snprintf(out->message, sizeof out->message, "%s", err.message);
+            break;
+        }
+        if (ev == SBC_EVENT_FINISHED) {
+            int nq = out->frame.n;
+            out->status = SBC_OK;
+            out->result = *sbc_controller_result(c);
+            sbc_controller_target_F(c, s.increments, out->F);
+            out->x = malloc(sizeof(double) * 2 * (size_t)nq);
+            out->a = malloc(sizeof(double) * 2 * (size_t)nq);
+            out->m = malloc(sizeof(double) * (size_t)nq);
+            for (q = 0; q < nq; ++q) {
+                out->x[2 * q] = snap.x[2 * q];
+                out->x[2 * q + 1] = snap.x[2 * q + 1];
+                out->a[2 * q] = -snap.force[2 * q]; /* eq. 5 */
+                out->a[2 * q + 1] = -snap.force[2 * q + 1];
+                out->m[q] = -snap.torque[q];
+            }
+            break;
+        }
+        cmd = sbc_controller_commands(c);
+        sbc_engine_move_frame(e, &cmd);
+    }
+    sbc_controller_free(c);
+    sbc_engine_free(e);
+    sbc_packing_free(&p);
+}
+
+static void final_free(final_state *f)
+{
+    sbc_frame_free(&f->frame);
+    free(f->x);
+    free(f->a);
+    free(f->m);
+    free(f->mass);
+}
+
+/* Hill-Mandel residual of eq. 30 from the final state, relative to the work scale */
+static double hill_mandel(const final_state *f)
+{
+    double F[4], P[4];
+    sbc_homogenize_F(&f->frame, f->x, F);
+    sbc_homogenize_P(&f->frame, f->a, P);
+    return fabs(sbc_homogenize_hill_mandel(&f->frame, f->a, f->x, F, P)) / sbc_homogenize_work_scale(P, F);
+}
+
+/* (P) on the frictionless lattice with a diagonal F: the affine state is
+ * periodic with anti-periodic forces, so (P) gives the closed form of (D)
+ * (see test_lattice.c) to 1e-9. */
+static void periodic_closed_form(void)
+{
+    const double N = 5, kn = 1e4, d = 2e-3, R = 1.02e-3, F11 = 1.002, F22 = 0.997;
+    final_state f;
+    run_lattice("P F 1.002 0 0 0.997 increments 1 relax 1e-22 20 tol_force 1e-14 tol_moment 1e-14 gain_force 1e3 "
+                "gain_moment 1e3", 0.0, &f);
+    CHECK(f.status == SBC_OK);
+    CHECK_REL(f.result.P[0], -N * kn * (2 * R - d * F11) / ((N - 1) * d), 1e-9);
+    CHECK_REL(f.result.P[3], -N * kn * (2 * R - d * F22) / ((N - 1) * d), 1e-9);
+    CHECK_ABS(f.result.P[1], 0.0, 1e-9 * fabs(f.result.P[0]));
+    CHECK_ABS(f.result.P[2], 0.0, 1e-9 * fabs(f.result.P[0]));
+    final_free(&f);
+}
+
+/* (P) converged: a+ + a- = 0 and m+ + m- = 0 on every pair within the
+ * tolerance of eq. 37's normalization; eq. 19 exactly; Hill-Mandel. */
+static void periodic_state(void)
+{
+    const double tol = 1e-12, dt = 1e-5;
+    final_state f;
+    int q, ok_f = 1, ok_m = 1, ok_x = 1;
+    run_lattice("P F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_force 1e-12 tol_moment 1e-12 "
+                "gain_force 1e3 gain_moment 1e3",
+                2e3, &f);
+    CHECK(f.status == SBC_OK);
+    if (f.status != SBC_OK) {
+        printf("  %s\n", f.message);
+        final_free(&f);
+        return;
+    }
+    CHECK(f.result.iterations > 1); /* the servo had work to do */
+    for (q = 0; q < f.frame.n; ++q) {
+        int p = f.frame.partner[q];
+        double at, mt, dx[2], DX[2];
+        if (f.frame.side[q] != SBC_SIDE_BOTTOM && f.frame.side[q] != SBC_SIDE_RIGHT)
+            continue;
+        at = f.mass[q] * f.frame.R[q] / (dt * dt);
+        mt = at * f.frame.R[q];
+        ok_f &= hypot(f.a[2 * q] + f.a[2 * p], f.a[2 * q + 1] + f.a[2 * p + 1]) <= tol * at;
+        ok_m &= fabs(f.m[q] + f.m[p]) <= tol * mt;
+        /* eq. 19: x+ - x- = F (X+ - X-) */
+        dx[0] = f.x[2 * q] - f.x[2 * p];
+        dx[1] = f.x[2 * q + 1] - f.x[2 * p + 1];
+        DX[0] = f.frame.X[2 * q] - f.frame.X[2 * p];
+        DX[1] = f.frame.X[2 * q + 1] - f.frame.X[2 * p + 1];
+        ok_x &= fabs(dx[0] - (f.F[0] * DX[0] + f.F[1] * DX[1])) < 1e-15 &&
+                fabs(dx[1] - (f.F[2] * DX[0] + f.F[3] * DX[1])) < 1e-15;
+    }
+    CHECK(ok_f);
+    CHECK(ok_m);
+    CHECK(ok_x);
+    CHECK(hill_mandel(&f) <= 1e-8);
+    final_free(&f);
+}
+
+/* (T) converged: a_q = P A_q on every frame particle within the force
+ * tolerance (eq. 21), F of eq. 15 equals the imposed F within eps_F, and the
+ * Hill-Mandel residual vanishes. */
+static void traction_state(void)
+{
+    const double tol = 1e-12, epsF = 1e-6, dt = 1e-5;
+    final_state f;
+    double P[4], F[4];
+    int q, ok = 1, k;
+    run_lattice("T F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_force 1e-12 tol_deformation 1e-6 "
+                "gain_force 1e3 gain_deformation 1e-2",
+                2e3, &f);
+    CHECK(f.status == SBC_OK);
+    if (f.status != SBC_OK) {
+        printf("  %s\n", f.message);
+        final_free(&f);
+        return;
+    }
+    CHECK(f.result.iterations > 1);
+    sbc_homogenize_P(&f.frame, f.a, P);
+    sbc_homogenize_F(&f.frame, f.x, F);
+    for (q = 0; q < f.frame.n; ++q) {
+        const double *A = &f.frame.A[2 * q];
+        double at = f.mass[q] * f.frame.R[q] / (dt * dt);
+        ok &= hypot(f.a[2 * q] - (P[0] * A[0] + P[1] * A[1]), f.a[2 * q + 1] - (P[2] * A[0] + P[3] * A[1])) <=
+              tol * at;
+    }
+    CHECK(ok);
+    for (k = 0; k < 4; ++k)
+        CHECK_ABS(F[k], f.F[k], epsF);
+    CHECK(hill_mandel(&f) <= 1e-8);
+    /* and it is not the (D) state: the frame moved off F X */
+    {
+        double off = 0.0;
+        for (q = 0; q < f.frame.n; ++q) {
+            const double *X = &f.frame.X[2 * q];
+            off = fmax(off, fabs(f.x[2 * q] - (f.F[0] * X[0] + f.F[1] * X[1])));
+        }
+        CHECK(off > 1e-8);
+    }
+    final_free(&f);
+}
+
+static void dirichlet_hill_mandel(void)
+{
+    final_state f;
+    run_lattice("D F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20", 2e3, &f);
+    CHECK(f.status == SBC_OK);
+    CHECK(hill_mandel(&f) <= 1e-8);
+    final_free(&f);
+}
+
+/* predict 0 is the algorithm without prediction, to the last digit; a
+ * non-zero inheritance factor takes another path. */
+static void prediction(void)
+{
+    const char *bcs[2] = {"P", "T"};
+    int b;
+    for (b = 0; b < 2; ++b) {
+        char script[1024], csv[3][512], *text[3];
+        const char *extra[3] = {"", "predict 0", "predict 0.5"};
+        int k;
+        for (k = 0; k < 3; ++k) {
+            sbc_error err;
+            FILE *fp;
+            long n;
+            snprintf(csv[k], sizeof csv[k], "%s/predict_%s_%d.csv", test_tmpdir, bcs[b], k);
+            snprintf(script, sizeof script,
+                     "dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\n"
+                     "contact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\ntimestep 1e-5\n"
+                     "servo_bc %s F 0.99 -0.03 -0.03 0.99 increments 3 relax 1e-8 20 tol_force 1e-10 tol_moment "
+                     "1e-10 tol_deformation 1e-4 gain_force 1e3 gain_moment 1e3 gain_deformation 1e-2 %s file %s\n"
+                     "run\n",
+                     bcs[b], extra[k], csv[k]);
+            CHECK(sbc_script_run_string(script, "predict", NULL, &err) == SBC_OK);
+            text[k] = NULL;
+            fp = fopen(csv[k], "rb");
+            if (fp) {
+                fseek(fp, 0, SEEK_END);
+                n = ftell(fp);
+                fseek(fp, 0, SEEK_SET);
+                text[k] = calloc((size_t)n + 1, 1);
+                if (fread(text[k], 1, (size_t)n, fp) != (size_t)n)
+                    text[k][0] = '\0';
+                fclose(fp);
+            }
+        }
+        CHECK(text[0] && text[1] && strlen(text[0]) > 100 && strcmp(text[0], text[1]) == 0);
+        CHECK(text[0] && text[2] && strcmp(text[0], text[2]) != 0);
+        for (k = 0; k < 3; ++k)
+            free(text[k]);
+    }
+}
+
+/* A gain far too large stops with the divergence error: no NaN, no hang.
+ * (Increment 0 of the prestressed lattice is in equilibrium and converges.) */
+static void divergence(void)
+{
+    final_state f;
+    char csv[512], script[1024];
+    static double rows[8][CSV_COLS];
+    sbc_error err;
+    run_lattice("P F 0.99 -0.02 -0.02 0.99 increments 2 tol_force 1e-14 gain_force 1e9", 2e3, &f);
+    CHECK(f.status == SBC_ERR_DIVERGED);
+    CHECK(strstr(f.message, "servo_bc P: increment 1, iteration 0") && strstr(f.message, "half its radius") &&
+          strstr(f.message, "r_force =") && strstr(f.message, "lower gain_force"));
+    final_free(&f);
+    run_lattice("T F 0.99 -0.02 -0.02 0.99 increments 2 tol_force 1e-14 gain_force 1e3 max_iterations 3", 2e3, &f);
+    CHECK(f.status == SBC_ERR_DIVERGED);
+    CHECK(strstr(f.message, "servo_bc T: increment 0, iteration 3: max_iterations reached") != NULL);
+    final_free(&f);
+    /* the CSV keeps the increments converged before the failure */
+    snprintf(csv, sizeof csv, "%s/diverge.csv", test_tmpdir);
+    snprintf(script, sizeof script,
+             "dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\ncontact frictional kn 1e4 ks 2e3 mu 0.4\n"
+             "density 2e3\ntimestep 1e-5\nservo_bc P F 0.99 -0.02 -0.02 0.99 increments 3 tol_force 1e-14 "
+             "gain_force 1e3 gain_moment 1e3 max_iterations 4 file %s\nrun\n",
+             csv);
+    CHECK(sbc_script_run_string(script, "diverge", NULL, &err) == SBC_ERR_DIVERGED);
+    CHECK(strstr(err.message, "diverge:7:") && strstr(err.message, "increment 1, iteration 4: max_iterations"));
+    CHECK(csv_read(csv, rows, 8) >= 0); /* header at least, every field finite */
+}
+
+void test_servo(void)
+{
+    periodic_closed_form();
+    periodic_state();
+    traction_state();
+    dirichlet_hill_mandel();
+    prediction();
+    divergence();
+}
