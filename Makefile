@@ -18,7 +18,7 @@ TEST_SRC = $(wildcard tests/*.c)
 TEST_HDR = $(wildcard tests/*.h)
 
 .PHONY: all demo check deps check-core check-sanitize check-valgrind bench clean
-all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc
+all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
 $(B)/core/%.o: src_core/src/%.c $(CORE_HDR)
 	@mkdir -p $(@D)
@@ -31,6 +31,9 @@ $(B)/libservo_bc.so: $(CORE_OBJ)
 	$(CC) -shared -o $@ $^ $(LDLIBS)
 
 $(B)/servo-bc: src_core/runner/main.c $(B)/libservo_bc.a
+	$(CC) $(CFLAGS) -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
+
+$(B)/servo-bc-plot: src_core/runner/plot_main.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
 
 $(B)/run_tests: $(TEST_SRC) $(TEST_HDR) $(B)/libservo_bc.a
@@ -52,13 +55,13 @@ check: deps
 deps:
 	@bash scripts/install-deps.sh core
 
-check-core: $(B)/run_tests $(B)/servo-bc
+check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	$(B)/run_tests $(B)/servo-bc
 
-check-sanitize: $(B)/run_tests_san $(B)/servo-bc
+check-sanitize: $(B)/run_tests_san $(B)/servo-bc $(B)/servo-bc-plot
 	ASAN_OPTIONS=detect_leaks=1 $(B)/run_tests_san $(B)/servo-bc
 
-check-valgrind: $(B)/run_tests $(B)/servo-bc
+check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect -q \
 	  $(B)/run_tests $(B)/servo-bc
 

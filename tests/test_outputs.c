@@ -1,4 +1,5 @@
 /* Outputs: CSV header and rows, VTK and SVG files of a short run. */
+#define _POSIX_C_SOURCE 200809L
 #include "check.h"
 #include "csv_read.h"
 #include "tests.h"
@@ -6,6 +7,7 @@
 #include "sbc/script.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static int file_contains(const char *path, const char *needle)
@@ -50,4 +52,15 @@ void test_outputs(void)
     CHECK(!file_contains(path, "POINTS")); /* not a chosen increment */
     CHECK(file_contains(svg, "<polyline"));
     CHECK(!file_contains(svg, "nan"));
+    /* servo-bc-plot overlays columns of result files (built beside the runner) */
+    {
+        char cmd[4096], tool[600], out[600];
+        snprintf(tool, sizeof tool, "%s-plot", test_runner);
+        snprintf(out, sizeof out, "%s/overlay.svg", test_tmpdir);
+        snprintf(cmd, sizeof cmd, "%s %s T X Y F12 -1 sigma11 -1.02e-7 %s one %s two", tool, out, csv, csv);
+        CHECK(system(cmd) == 0);
+        CHECK(file_contains(out, "stroke-dasharray") && file_contains(out, ">two</text>"));
+        snprintf(cmd, sizeof cmd, "%s %s T X Y F12 -1 nosuchcolumn 1 %s one 2>/dev/null", tool, out, csv);
+        CHECK(system(cmd) != 0);
+    }
 }

@@ -27,21 +27,21 @@ static void widen(double *lo, double *hi)
     }
 }
 
-sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel, const char *ylabel, int n,
-                        const double *x, int nseries, const sbc_series *series, sbc_error *err)
+sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel, const char *ylabel, int nseries,
+                        const sbc_series *series, sbc_error *err)
 {
     static const char *colors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b"};
+    static const char *dashes[] = {"", "8 4", "2 3", "8 3 2 3"};
     double xlo = DBL_MAX, xhi = -DBL_MAX, ylo = DBL_MAX, yhi = -DBL_MAX, step, t;
     double pw = W - LEFT - RIGHT, ph = H - TOP - BOTTOM;
     FILE *fp;
     int k, s;
-    for (k = 0; k < n; ++k) {
-        if (!isfinite(x[k])) continue;
-        if (x[k] < xlo) xlo = x[k];
-        if (x[k] > xhi) xhi = x[k];
-        for (s = 0; s < nseries; ++s) {
-            double y = series[s].y[k];
-            if (!isfinite(y)) continue;
+    for (s = 0; s < nseries; ++s) {
+        for (k = 0; k < series[s].n; ++k) {
+            double x = series[s].x[k], y = series[s].y[k];
+            if (!isfinite(x) || !isfinite(y)) continue;
+            if (x < xlo) xlo = x;
+            if (x > xhi) xhi = x;
             if (y < ylo) ylo = y;
             if (y > yhi) yhi = y;
         }
@@ -77,20 +77,23 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
     fprintf(fp, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">%s</text>\n", LEFT + pw / 2, H - 14, xlabel);
     fprintf(fp, "<text x=\"18\" y=\"%g\" text-anchor=\"middle\" transform=\"rotate(-90 18 %g)\">%s</text>\n",
             TOP + ph / 2, TOP + ph / 2, ylabel);
-    fprintf(fp, "<rect x=\"%g\" y=\"%g\" width=\"260\" height=\"%g\" fill=\"white\" fill-opacity=\"0.85\" "
+    fprintf(fp, "<rect x=\"%g\" y=\"%g\" width=\"300\" height=\"%g\" fill=\"white\" fill-opacity=\"0.85\" "
                 "stroke=\"#999\"/>\n", LEFT + 8, TOP + 6, 18.0 * nseries + 8);
     for (s = 0; s < nseries; ++s) {
-        const char *c = colors[s % 6];
+        const char *c = colors[s % 6], *dash = dashes[(s / 6) % 4];
         int first = 1;
-        fprintf(fp, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.8\" points=\"", c);
-        for (k = 0; k < n; ++k) {
-            if (!isfinite(x[k]) || !isfinite(series[s].y[k])) continue;
-            fprintf(fp, "%s%.2f,%.2f", first ? "" : " ", PX(x[k]), PY(series[s].y[k]));
+        fprintf(fp, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.8\" stroke-dasharray=\"%s\" points=\"",
+                c, dash);
+        for (k = 0; k < series[s].n; ++k) {
+            double x = series[s].x[k], y = series[s].y[k];
+            if (!isfinite(x) || !isfinite(y)) continue;
+            fprintf(fp, "%s%.2f,%.2f", first ? "" : " ", PX(x), PY(y));
             first = 0;
         }
         fprintf(fp, "\"/>\n");
-        fprintf(fp, "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"%s\" stroke-width=\"2\"/>\n",
-                LEFT + 14, TOP + 16 + 18.0 * s, LEFT + 40, TOP + 16 + 18.0 * s, c);
+        fprintf(fp, "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"%s\" stroke-width=\"2\" "
+                    "stroke-dasharray=\"%s\"/>\n",
+                LEFT + 14, TOP + 16 + 18.0 * s, LEFT + 40, TOP + 16 + 18.0 * s, c, dash);
         fprintf(fp, "<text x=\"%g\" y=\"%g\">%s</text>\n", LEFT + 46, TOP + 20 + 18.0 * s, series[s].label);
     }
 #undef PX

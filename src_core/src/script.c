@@ -15,6 +15,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #define MAX_WORDS 64
 
@@ -189,8 +190,9 @@ static sbc_status write_plot(script *s, run_state *r, sbc_error *err)
     series[0].y = s11;
     series[1].label = "sigma~12 = sigma12 R / kn";
     series[1].y = s12;
-    st = sbc_plot_svg(s->plot, "servo_bc: normalized Cauchy stress", "F12", "sigma~ (m)", r->nrows, xs, 2, series,
-                      err);
+    series[0].n = series[1].n = r->nrows;
+    series[0].x = series[1].x = xs;
+    st = sbc_plot_svg(s->plot, "servo_bc: normalized Cauchy stress", "F12", "sigma~ (m)", 2, series, err);
     free(xs); free(s11); free(s12);
     return st;
 }
@@ -202,6 +204,8 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     sbc_status st = SBC_OK;
     sbc_snapshot snap;
     double dtc;
+    struct timespec t0;
+    timespec_get(&t0, TIME_UTC);
     memset(&r, 0, sizeof r);
     if (!s->have_packing) return sbc_fail(err, SBC_ERR_INPUT, "run: no packing (use 'lattice' or 'read_packing' first)");
     if (!s->have_contact) return sbc_fail(err, SBC_ERR_INPUT, "run: no contact law (use 'contact frictional ...' first)");
@@ -297,7 +301,19 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         }
     }
     if (s->log && st == SBC_OK) {
-        fprintf(s->log, "servo_bc: finished %d increments in %ld steps\n", r.nrows, sbc_engine_get_view(r.engine).step);
+        struct timespec t1;
+        long iters = 0, imax = 0;
+        int k;
+        timespec_get(&t1, TIME_UTC);
+        for (k = 0; k < r.nrows; ++k) {
+            iters += r.rows[k].iterations;
+            if (r.rows[k].iterations > imax) imax = r.rows[k].iterations;
+        }
+        fprintf(s->log,
+                "servo_bc: finished %d increments: %ld steps, servo iterations per increment mean %.2f max %ld, "
+                "wall %.2f s\n",
+                r.nrows, sbc_engine_get_view(r.engine).step, r.nrows ? (double)iters / r.nrows : 0.0, imax,
+                (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
         if (s->settings.file[0]) fprintf(s->log, "  results: %s\n", s->settings.file);
         if (s->vtk_every) fprintf(s->log, "  vtk:     %s_particles_*.vtk, %s_contacts_*.vtk\n", s->vtk_prefix, s->vtk_prefix);
         if (s->plot[0]) fprintf(s->log, "  plot:    %s\n", s->plot);

@@ -6,12 +6,14 @@
 
 typedef struct sbc_series {
     const char *label;
+    int n;           /* points */
+    const double *x; /* [n] */
     const double *y; /* [n] */
 } sbc_series;
 
-/* Writes an SVG chart of the series against x [n], with axis labels, ticks
- * and a legend. Non-finite points are skipped. */
-sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel, const char *ylabel, int n,
-                        const double *x, int nseries, const sbc_series *series, sbc_error *err);
+/* Writes an SVG chart of the series, with axis labels, ticks and a legend.
+ * Non-finite points are skipped. */
+sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel, const char *ylabel, int nseries,
+                        const sbc_series *series, sbc_error *err);
 
 #endif
