@@ -103,6 +103,19 @@ static void final_free(final_state *f)
     free(f->mass);
 }
 
+/* The run converged and the servo had work to do; otherwise reports and frees. */
+static int converged_with_work(final_state *f)
+{
+    CHECK(f->status == SBC_OK);
+    if (f->status != SBC_OK) {
+        printf("  %s\n", f->message);
+        final_free(f);
+        return 0;
+    }
+    CHECK(f->result.iterations > 1);
+    return 1;
+}
+
 /* Hill-Mandel residual of eq. 30 from the final state, relative to the work scale */
 static double hill_mandel(const final_state *f)
 {
@@ -139,13 +152,8 @@ static void periodic_state(void)
     run_lattice("P F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_force 1e-12 tol_moment 1e-12 "
                 "gain_force 1e3 gain_moment 1e3",
                 2e3, &f);
-    CHECK(f.status == SBC_OK);
-    if (f.status != SBC_OK) {
-        printf("  %s\n", f.message);
-        final_free(&f);
+    if (!converged_with_work(&f))
         return;
-    }
-    CHECK(f.result.iterations > 1); /* the servo had work to do */
     for (q = 0; q < f.frame.n; ++q) {
         int p = f.frame.partner[q];
         double at, mt, dx[2], DX[2];
@@ -182,13 +190,8 @@ static void traction_state(void)
     run_lattice("T F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_force 1e-12 tol_deformation 1e-6 "
                 "gain_force 1e3 gain_deformation 1e-2",
                 2e3, &f);
-    CHECK(f.status == SBC_OK);
-    if (f.status != SBC_OK) {
-        printf("  %s\n", f.message);
-        final_free(&f);
+    if (!converged_with_work(&f))
         return;
-    }
-    CHECK(f.result.iterations > 1);
     sbc_homogenize_P(&f.frame, f.a, P);
     sbc_homogenize_F(&f.frame, f.x, F);
     for (q = 0; q < f.frame.n; ++q) {

@@ -23,6 +23,7 @@ struct sbc_controller {
     double *a;           /* [2Q] boundary forces a_q = -sum of contact forces (eq. 5), N */
     double *m;           /* [Q] boundary moments m_q = -sum of contact moments (eq. 5), N m */
     double *x_prev;      /* [2Q] converged positions of the previous increment (prediction), m */
+    double *du, *dtheta; /* [2Q], [Q] servo corrections, m, rad */
     double F_prev[4];    /* F imposed at the previous increment */
     double F_now[4];     /* F imposed at this increment */
     int servo;           /* 0: initial relaxation of the increment, 1: servo iterations */
@@ -93,7 +94,10 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     c->a = malloc(sizeof(double) * 2 * q);
     c->m = malloc(sizeof(double) * q);
     c->x_prev = malloc(sizeof(double) * 2 * q);
-    if (!c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev) {
+    c->du = calloc(2 * q, sizeof(double));
+    c->dtheta = calloc(q, sizeof(double));
+    if (!c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du ||
+        !c->dtheta) {
         sbc_controller_free(c);
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
         return NULL;
@@ -129,6 +133,8 @@ void sbc_controller_free(sbc_controller *c)
     free(c->a);
     free(c->m);
     free(c->x_prev);
+    free(c->du);
+    free(c->dtheta);
     free(c);
 }
 
@@ -177,9 +183,11 @@ static sbc_status measure(sbc_controller *c, const sbc_snapshot *snap, sbc_error
     r->increment = c->increment;
     sbc_homogenize_F(f, snap->x, r->F);
     sbc_homogenize_P(f, c->a, r->P);
-    if (sbc_homogenize_cauchy(r->P, r->F, r->sigma, err) != SBC_OK)
-        return sbc_fail(err, SBC_ERR_GEOMETRY, "servo_bc %s: increment %d: %s", sbc_bc_name(c->s.bc),
-                        c->increment, err ? err->message : "det F <= 0");
+    if (sbc_homogenize_cauchy(r->P, r->F, r->sigma, NULL) != SBC_OK)
+        return sbc_fail(err, SBC_ERR_GEOMETRY,
+                        "servo_bc %s: increment %d: det F = %g <= 0 (F = [%g %g; %g %g]): the frame is inverted or "
+                        "collapsed",
+                        sbc_bc_name(c->s.bc), c->increment, sbc_det2(r->F), r->F[0], r->F[1], r->F[2], r->F[3]);
     scale = sbc_homogenize_work_scale(r->P, r->F);
     r->hill_mandel = sbc_homogenize_hill_mandel(f, c->a, snap->x, r->F, r->P);
     if (scale > 0.0)
@@ -273,7 +281,8 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
         const int first = !c->servo;
         /* Tables 2-3: after the initial relaxation (1.2) correct at once (1.3);
          * after each later relaxation (1.4) check the residuals (1.5-1.6). */
-        sbc_servo_update(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->F_now, c->a, c->m, snap->x, NULL, NULL, &nrm);
+        sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->F_now, c->a, c->m, snap->x, c->du,
+                            c->dtheta, &nrm);
         c->norms = nrm;
         if (!isfinite(nrm.r_force) || !isfinite(nrm.r_moment) || !isfinite(nrm.r_deformation)) {
             sbc_fail(err, SBC_ERR_NUMERIC, "servo_bc %s: increment %d, iteration %d: non-finite residual",
@@ -291,11 +300,16 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
             diverged(c, &nrm, "max_iterations reached", 1, err);
             return SBC_EVENT_FAILED;
         }
-        sbc_servo_update(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->F_now, c->a, c->m, snap->x, c->x_cmd,
-                         c->theta_cmd, &nrm);
         if (nrm.max_step > 0.5) {
             diverged(c, &nrm, "a correction moved a frame particle by more than half its radius", 0, err);
             return SBC_EVENT_FAILED;
+        }
+        {
+            int k;
+            for (k = 0; k < 2 * c->frame->n; ++k)
+                c->x_cmd[k] += c->du[k];
+            for (k = 0; k < c->frame->n; ++k)
+                c->theta_cmd[k] += c->dtheta[k];
         }
         c->servo = 1;
         c->iteration++;

@@ -16,7 +16,7 @@
  * Gains from the dimensionless values of Table 4: g_a = G_a dt^2 / M,
  * g_m = G_m dt^2 / (M R^2), with M and R the mean of the two partners. */
 static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                           const double *a, const double *m, double *x_cmd, double *theta_cmd, sbc_servo_norms *o)
+                           const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double sf = 0.0, sm = 0.0, dmc = 0.0, mc = 0.0, rc = 0.0;
     int q, c;
@@ -34,18 +34,15 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
         dm = m[q] + m[p];
         sf += (da0 * da0 + da1 * da1) / (at * at);
         sm += dm * dm / (mt * mt);
-        if (x_cmd) {
+        {
             double u0, u1, step;
             ga = s->gain_force * dt * dt / M;
             gm = s->gain_moment * dt * dt / (M * R * R);
             u0 = -ga * da0;
             u1 = -ga * da1;
-            x_cmd[2 * q] += u0;
-            x_cmd[2 * q + 1] += u1;
-            x_cmd[2 * p] += u0;
-            x_cmd[2 * p + 1] += u1;
-            theta_cmd[q] -= gm * dm;
-            theta_cmd[p] -= gm * dm;
+            du[2 * q] = du[2 * p] = u0;
+            du[2 * q + 1] = du[2 * p + 1] = u1;
+            dtheta[q] = dtheta[p] = -gm * dm;
             step = sqrt(u0 * u0 + u1 * u1) / R;
             if (step > o->max_step) o->max_step = step;
             step = fabs(gm * dm); /* rotation step in rad = arc length / R */
@@ -60,13 +57,14 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
     }
     {
         double mt = mc * rc * rc / (dt * dt);
+        double gm = s->gain_moment * dt * dt / (mc * rc * rc);
         sm += dmc * dmc / (mt * mt);
-        if (theta_cmd) {
-            double gm = s->gain_moment * dt * dt / (mc * rc * rc);
-            for (c = 0; c < 4; ++c)
-                theta_cmd[f->corner[c]] -= gm * dmc;
-            if (fabs(gm * dmc) > o->max_step) o->max_step = fabs(gm * dmc);
+        for (c = 0; c < 4; ++c) {
+            int qc = f->corner[c];
+            du[2 * qc] = du[2 * qc + 1] = 0.0; /* corners follow F (eq. 17) */
+            dtheta[qc] = -gm * dmc;
         }
+        if (fabs(gm * dmc) > o->max_step) o->max_step = fabs(gm * dmc);
     }
     o->r_force = sqrt(sf);
     o->r_moment = sqrt(sm);
@@ -84,7 +82,8 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
  * eq. 37: a~ = M R / dt^2, F~ = R^3. O(Q^2) for the sum over r; the frame
  * is O(sqrt N) particles, so this stays far below the cost of a DEM step. */
 static void servo_traction(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                           const double F[4], const double *a, const double *x, double *x_cmd, sbc_servo_norms *o)
+                           const double F[4], const double *a, const double *x, double *du, double *dtheta,
+                           sbc_servo_norms *o)
 {
     double P[4], sf = 0.0, sd = 0.0;
     int q, r;
@@ -113,11 +112,12 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
         }
         sf += (da0 * da0 + da1 * da1) / (at * at);
         sd += (dF0 * dF0 + dF1 * dF1) / (Ft * Ft);
-        if (x_cmd) {
+        {
             double ga = s->gain_force * dt * dt / M, gF = s->gain_deformation / (R * R);
             double u0 = ga * da0 + gF * dF0, u1 = ga * da1 + gF * dF1, step;
-            x_cmd[2 * q] += u0;
-            x_cmd[2 * q + 1] += u1;
+            du[2 * q] = u0;
+            du[2 * q + 1] = u1;
+            dtheta[q] = 0.0; /* free rotation */
             step = sqrt(u0 * u0 + u1 * u1) / R;
             if (step > o->max_step) o->max_step = step;
         }
@@ -127,13 +127,13 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
     o->r_deformation = sqrt(sd);
 }
 
-void sbc_servo_update(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                      const double F[4], const double *a, const double *m, const double *x, double *x_cmd,
-                      double *theta_cmd, sbc_servo_norms *out)
+void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
+                         const double F[4], const double *a, const double *m, const double *x, double *du,
+                         double *dtheta, sbc_servo_norms *out)
 {
     out->max_step = 0.0;
     if (bc == SBC_BC_P)
-        servo_periodic(f, s, mass, dt, a, m, x_cmd, theta_cmd, out);
+        servo_periodic(f, s, mass, dt, a, m, du, dtheta, out);
     else
-        servo_traction(f, s, mass, dt, F, a, x, x_cmd, out);
+        servo_traction(f, s, mass, dt, F, a, x, du, dtheta, out);
 }

@@ -14,11 +14,11 @@ typedef struct sbc_servo_norms {
 } sbc_servo_norms;
 
 /* Residual norms of the state (a [2Q] boundary forces, m [Q] boundary
- * moments, x [2Q] positions) and, when x_cmd/theta_cmd are not NULL, the
- * corrections added to them (eqs. 33-34 for P, 36 for T). F is the imposed
+ * moments, x [2Q] positions) and the corrections (eqs. 33-34 for P, 36 for
+ * T) written to du [2Q] (m) and dtheta [Q] (rad). F is the imposed
  * macroscopic deformation gradient, mass [Q] in kg, dt in s. */
-void sbc_servo_update(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                      const double F[4], const double *a, const double *m, const double *x, double *x_cmd,
-                      double *theta_cmd, sbc_servo_norms *out);
+void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
+                         const double F[4], const double *a, const double *m, const double *x, double *du,
+                         double *dtheta, sbc_servo_norms *out);
 
 #endif
