@@ -1,7 +1,8 @@
 # servo_bc: pure-C core, embedded runner, tests.
 #   make          core libraries (static, shared) and the runner build/servo-bc
 #   make demo     the paper's 25-particle (D) case on the embedded engine
-#   make check    every test: core, ASan+UBSan build, valgrind (installs what it needs)
+#   make check    every test: core, ASan+UBSan build, valgrind, LAMMPS (installs what it needs)
+#   make lammps   build/lmp_servo: LAMMPS with fix servo_bc (Debian package)
 #   make bench    benchmarks (prints figures; LAMMPS side when installed)
 
 CC      ?= cc
@@ -17,7 +18,7 @@ CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 TEST_HDR = $(wildcard tests/*.h)
 
-.PHONY: all demo check deps check-core check-sanitize check-valgrind bench clean
+.PHONY: all demo check deps check-core check-sanitize check-valgrind check-lammps lammps bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
 $(B)/core/%.o: src_core/src/%.c $(CORE_HDR)
@@ -50,7 +51,7 @@ demo: all
 	$(B)/servo-bc inputs/demo_D_25.sbc
 
 check: deps
-	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind
+	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind check-lammps
 
 deps:
 	@bash scripts/install-deps.sh core
@@ -64,6 +65,23 @@ check-sanitize: $(B)/run_tests_san $(B)/servo-bc $(B)/servo-bc-plot
 check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect -q \
 	  $(B)/run_tests $(B)/servo-bc
+
+# LAMMPS adapter against the Debian package: build/lmp_servo (work in progress, see issues)
+LMP_HDR = $(B)/lammps-headers
+LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h lammps_fix/lmp_servo.cpp
+
+lammps: $(B)/lmp_servo
+
+$(LMP_HDR)/pair_gran_hooke_history.h:
+	@bash scripts/install-deps.sh lammps-dev
+	bash scripts/lammps-headers.sh $(LMP_HDR)
+
+$(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_HDR)/pair_gran_hooke_history.h
+	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
+	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -llammps -lm
+
+check-lammps: $(B)/lmp_servo
+	bash tests/lammps/closed_form.sh $(B)/lmp_servo
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)

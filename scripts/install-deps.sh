@@ -2,6 +2,7 @@
 # Installs what the project's targets need on a Debian machine, as root.
 #   scripts/install-deps.sh core     compiler, make, valgrind (make check)
 #   scripts/install-deps.sh lammps   the Debian LAMMPS package (bench/, LAMMPS side)
+#   scripts/install-deps.sh lammps-dev   LAMMPS, its headers and an MPI C++ compiler (make lammps)
 # Already-installed tools are left alone; without root or apt-get it only reports.
 set -euo pipefail
 need=()
@@ -15,7 +16,13 @@ for what in "$@"; do
     lammps)
       command -v lmp >/dev/null || need+=(lammps)
       ;;
-    *) echo "install-deps: unknown set '$what' (expected core or lammps)" >&2; exit 2 ;;
+    lammps-dev)
+      command -v lmp >/dev/null || need+=(lammps)
+      [ -f /usr/include/lammps/lammps.h ] || need+=(liblammps-dev)
+      command -v mpicxx >/dev/null || need+=(libopenmpi-dev openmpi-bin)
+      command -v g++ >/dev/null || need+=(g++)
+      ;;
+    *) echo "install-deps: unknown set '$what' (expected core, lammps or lammps-dev)" >&2; exit 2 ;;
   esac
 done
 [ ${#need[@]} -eq 0 ] && exit 0

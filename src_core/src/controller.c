@@ -151,6 +151,15 @@ const sbc_result *sbc_controller_result(const sbc_controller *c) { return &c->re
 
 int sbc_controller_increment(const sbc_controller *c) { return c->increment; }
 
+void sbc_controller_progress(const sbc_controller *c, int *iteration, double *r_force, double *r_moment,
+                             double *r_deformation)
+{
+    *iteration = c->iteration;
+    *r_force = c->norms.r_force;
+    *r_moment = c->norms.r_moment;
+    *r_deformation = c->norms.r_deformation;
+}
+
 void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4])
 {
     static const double I[4] = {1.0, 0.0, 0.0, 1.0};
@@ -293,7 +302,9 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
             c->r_first = nrm.r_force;
         } else if (converged(c, &nrm)) {
             return accept(c, snap, err);
-        } else if (nrm.r_force > 1e3 * (c->r_first > c->s.tol_force ? c->r_first : c->s.tol_force)) {
+        } else if (nrm.r_force > 1e3 * fmax(c->r_first, 1e3 * c->s.tol_force)) {
+            /* growth over the first residual of the increment; that one can be
+             * round-off small (an already periodic state), hence the floor */
             diverged(c, &nrm, "the force residual grew more than 1000-fold", 0, err);
             return SBC_EVENT_FAILED;
         } else if (c->iteration >= c->s.max_iterations) {

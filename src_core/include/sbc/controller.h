@@ -78,6 +78,11 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
 /* The result of the last accepted increment. */
 const sbc_result *sbc_controller_result(const sbc_controller *c);
 
+/* Progress within the current increment: servo iterations so far and the
+ * last residual norms (zero before the first check and for D). */
+void sbc_controller_progress(const sbc_controller *c, int *iteration, double *r_force, double *r_moment,
+                             double *r_deformation);
+
 /* Macroscopic F imposed at increment i: I + (i / i_tot) (F_final - I). */
 void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4]);
 

@@ -1,0 +1,363 @@
+/* ----------------------------------------------------------------------
+   fix servo_bc for LAMMPS (see fix_servo_bc.h). Same keywords as every host:
+   the words after the style are parsed by the core (sbc_settings_parse).
+------------------------------------------------------------------------- */
+
+#include "fix_servo_bc.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "pair_gran_hooke_history.h"
+#include "timer.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <unordered_map>
+
+extern "C" {
+#include "sbc/results.h"
+}
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+// kn, kt are protected in PairGranHookeHistory; a derived class may name them
+// (a pointer to member taken in its scope), which is how we read them.
+struct GranAccess : PairGranHookeHistory {
+  static double kn_of(PairGranHookeHistory *p) { return p->*(&GranAccess::kn); }
+  static double kt_of(PairGranHookeHistory *p) { return p->*(&GranAccess::kt); }
+};
+enum { VEC_SIZE = 18 };
+}    // namespace
+
+FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), kn(0.0), kt(0.0), inertia(0.5), list(nullptr),
+    csv(nullptr), finished(0)
+{
+  sbc_error err;
+  std::memset(&frame, 0, sizeof frame);
+  std::memset(&last, 0, sizeof last);
+  if (sbc_settings_parse(&settings, narg - 3, arg + 3, &err) != SBC_OK)
+    error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+  if (!atom->sphere_flag) error->all(FLERR, "Fix servo_bc requires atom style sphere");
+  if (domain->dimension != 2)
+    error->all(FLERR, "Fix servo_bc: this version imposes 2d boundary conditions; the box is 3d (use dimension 2)");
+
+  vector_flag = 1;
+  size_vector = VEC_SIZE;
+  global_freq = 1;
+  extvector = 0;
+  time_integrate = 0;    // moves only the frame atoms, which no integrator may own (checked in init)
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  for (int i = 0; i < atom->nlocal; i++) theta_atom[i] = 0.0;
+
+  detect_frame();
+}
+
+FixServoBC::~FixServoBC()
+{
+  atom->delete_callback(id, Atom::GROW);
+  memory->destroy(theta_atom);
+  sbc_controller_free(ctl);
+  sbc_frame_free(&frame);
+  if (csv) fclose(csv);
+}
+
+int FixServoBC::setmask()
+{
+  return INITIAL_INTEGRATE | POST_FORCE;
+}
+
+/* gather the group's atoms on every rank, in tag order (rank-independent),
+   let the core find the frame, and create groups ID_frame and ID_interior */
+void FixServoBC::detect_frame()
+{
+  const int nlocal = atom->nlocal, *mask = atom->mask;
+  int frame_group_bit = 0;
+  if (settings.frame_group[0]) {
+    int ig = group->find(settings.frame_group);
+    if (ig < 0)
+      error->all(FLERR, std::string("Fix servo_bc: keyword 'frame': group '") + settings.frame_group +
+                          "' does not exist");
+    frame_group_bit = group->bitmask[ig];
+  }
+  std::vector<double> mine;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit)
+      mine.insert(mine.end(), {(double) atom->tag[i], atom->x[i][0], atom->x[i][1], atom->radius[i],
+                               atom->rmass[i], (mask[i] & frame_group_bit) ? 1.0 : 0.0});
+  int nmine = (int) mine.size(), nprocs = comm->nprocs;
+  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  int ntot = displs[nprocs - 1] + counts[nprocs - 1];
+  std::vector<double> all(ntot);
+  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+  int n = ntot / 6;
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return all[6 * a] < all[6 * b]; });
+  std::vector<double> xy(2 * n), r(n), m(n);
+  std::vector<int> listed;
+  for (int k = 0; k < n; k++) {
+    const double *a = &all[6 * order[k]];
+    xy[2 * k] = a[1];
+    xy[2 * k + 1] = a[2];
+    r[k] = a[3];
+    m[k] = a[4];
+    if (a[5] != 0.0) listed.push_back(k);
+  }
+  sbc_error err;
+  sbc_status st = settings.frame_group[0]
+      ? sbc_frame_from_list(&frame, (int) listed.size(), listed.data(), xy.data(), r.data(), &err)
+      : sbc_frame_detect(&frame, n, xy.data(), r.data(), 0.0, &err);
+  if (st != SBC_OK) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+
+  const int Q = frame.n;
+  frame_tag.resize(Q);
+  frame_mass.resize(Q);
+  std::unordered_map<tagint, int> is_frame;
+  for (int q = 0; q < Q; q++) {
+    frame_tag[q] = (tagint) all[6 * order[frame.particle[q]]];
+    frame_mass[q] = m[frame.particle[q]];
+    is_frame[frame_tag[q]] = q;
+  }
+  int igf = group->find_or_create((std::string(id) + "_frame").c_str());
+  int igi = group->find_or_create((std::string(id) + "_interior").c_str());
+  frame_bit = group->bitmask[igf];
+  interior_bit = group->bitmask[igi];
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    atom->mask[i] |= is_frame.count(atom->tag[i]) ? frame_bit : interior_bit;
+  }
+  buf.assign(6 * Q + 6, 0.0);
+  sum.assign(6 * Q + 6, 0.0);
+  snap_x.assign(2 * Q, 0.0);
+  snap_f.assign(2 * Q, 0.0);
+  snap_t.assign(Q, 0.0);
+  snap_theta.assign(Q, 0.0);
+  if (comm->me == 0)
+    utils::logmesg(lmp, fmt::format("fix servo_bc: {} particles, frame of {} (groups {}_frame, {}_interior)\n", n, Q,
+                                    id, id));
+}
+
+void FixServoBC::init()
+{
+  Pair *pair = force->pair_match("gran/hooke/history", 1);
+  auto *gran = dynamic_cast<PairGranHookeHistory *>(pair);
+  if (!gran)
+    error->all(FLERR, "Fix servo_bc requires pair_style gran/hooke/history (the paper's contact law, eq. 6)");
+  kn = GranAccess::kn_of(gran);
+  kt = GranAccess::kt_of(gran);
+
+  // frame atoms are moved by this fix only
+  for (int k = 0; k < modify->nfix; k++) {
+    Fix *other = modify->fix[k];
+    if (other == this || !(modify->fmask[k] & INITIAL_INTEGRATE)) continue;
+    int mine = 0, any = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & frame_bit) && (atom->mask[i] & other->groupbit)) mine = 1;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any)
+      error->all(FLERR, fmt::format("Fix servo_bc: frame atoms are also integrated by fix {} ({}); integrate "
+                                    "group {}_interior instead",
+                                    other->id, other->style, id));
+  }
+
+  // a neighbour list of our own for Ep and the overlaps (eqs. 12, 39)
+  int irequest = neighbor->request(this, instance_me);
+  neighbor->requests[irequest]->pair = 0;
+  neighbor->requests[irequest]->fix = 1;
+  neighbor->requests[irequest]->size = 1;    // half list, cutoffs from the radii
+
+  if (!ctl) {
+    sbc_error err;
+    ctl = sbc_controller_create(&frame, &settings, frame_mass.data(), update->dt, &err);
+    if (!ctl) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+    if (comm->me == 0 && settings.file[0] && sbc_csv_open(&csv, settings.file, &err) != SBC_OK)
+      error->one(FLERR, std::string("Fix servo_bc: ") + err.message);
+  }
+}
+
+void FixServoBC::init_list(int, NeighList *ptr)
+{
+  list = ptr;
+}
+
+void FixServoBC::setup(int)
+{
+  post_force(0);
+}
+
+/* move the owned frame atoms to the commanded targets within this step */
+void FixServoBC::initial_integrate(int)
+{
+  if (finished) return;
+  const double dt = update->dt;
+  sbc_commands cmd = sbc_controller_commands(ctl);
+  std::unordered_map<tagint, int> slot;
+  for (int q = 0; q < frame.n; q++) slot[frame_tag[q]] = q;
+  double **x = atom->x, **v = atom->v, **omega = atom->omega, **torque = atom->torque;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & frame_bit)) continue;
+    int q = slot[atom->tag[i]];
+    v[i][0] = (cmd.x[2 * q] - x[i][0]) / dt;
+    v[i][1] = (cmd.x[2 * q + 1] - x[i][1]) / dt;
+    v[i][2] = 0.0;
+    x[i][0] = cmd.x[2 * q];
+    x[i][1] = cmd.x[2 * q + 1];
+    if (cmd.free_rotation[q]) {    // (T): free rotation with the damping of eq. 10
+      double m = torque[i][2], w = omega[i][2];
+      if (settings.damping) m -= settings.beta * std::fabs(m) * ((w > 0.0) - (w < 0.0));
+      omega[i][2] = w + dt * m / (inertia * atom->rmass[i] * atom->radius[i] * atom->radius[i]);
+      theta_atom[i] += dt * omega[i][2];
+    } else {
+      omega[i][2] = (cmd.theta[q] - theta_atom[i]) / dt;
+      theta_atom[i] = cmd.theta[q];
+    }
+  }
+}
+
+/* snapshot, MPI sums, controller step; local damping (eq. 10) on the interior */
+void FixServoBC::post_force(int)
+{
+  if (finished) return;
+  const int nlocal = atom->nlocal, Q = frame.n, *mask = atom->mask;
+  const tagint *tag = atom->tag;
+  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
+  const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
+  std::fill(buf.begin(), buf.end(), 0.0);
+  std::unordered_map<tagint, int> slot;
+  for (int q = 0; q < Q; q++) slot[frame_tag[q]] = q;
+
+  double ek = 0.0, ep = 0.0, ov = 0.0, nc = 0.0, rot = 0.0, npart = 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    if (mask[i] & frame_bit) {
+      int q = slot[tag[i]];
+      buf[2 * q] = x[i][0];
+      buf[2 * q + 1] = x[i][1];
+      buf[2 * Q + 2 * q] = f[i][0];
+      buf[2 * Q + 2 * q + 1] = f[i][1];
+      buf[4 * Q + q] = torque[i][2];
+      buf[5 * Q + q] = theta_atom[i];
+    } else {
+      theta_atom[i] += dt * omega[i][2];    // omega at the half step, as x
+      ek += 0.5 * rmass[i] * (v[i][0] * v[i][0] + v[i][1] * v[i][1]) +
+          0.5 * inertia * rmass[i] * radius[i] * radius[i] * omega[i][2] * omega[i][2];
+      if (settings.damping) {    // eq. 10
+        for (int k = 0; k < 2; k++) f[i][k] -= settings.alpha * std::fabs(f[i][k]) * ((v[i][k] > 0) - (v[i][k] < 0));
+        double w = omega[i][2];
+        torque[i][2] -= settings.beta * std::fabs(torque[i][2]) * ((w > 0.0) - (w < 0.0));
+      }
+    }
+    rot += std::fabs(theta_atom[i]);
+    npart += 1.0;
+  }
+  // each contact once: a half list holds an owned-ghost pair on both ranks
+  // when newton pair is off, then the lower tag counts it
+  const int newton = force->newton_pair;
+  for (int ii = 0; ii < list->inum; ii++) {
+    int i = list->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    int *jlist = list->firstneigh[i], jnum = list->numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj] & NEIGHMASK;
+      if (!(mask[j] & groupbit)) continue;
+      if (j >= nlocal && !newton && tag[j] < tag[i]) continue;
+      double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], rs = radius[i] + radius[j];
+      double d2 = dx * dx + dy * dy;
+      if (d2 >= rs * rs) continue;
+      double dn = rs - std::sqrt(d2);
+      ep += 0.5 * kn * dn * dn;
+      ov += dn / (0.5 * rs);
+      nc += 1.0;
+    }
+  }
+  double *s = &buf[6 * Q];
+  s[0] = ek; s[1] = ep; s[2] = ov; s[3] = nc; s[4] = rot; s[5] = npart;
+  MPI_Allreduce(buf.data(), sum.data(), (int) buf.size(), MPI_DOUBLE, MPI_SUM, world);
+
+  sbc_snapshot snap;
+  snap.x = &sum[0];
+  snap.force = &sum[2 * Q];
+  snap.torque = &sum[4 * Q];
+  snap.theta = &sum[5 * Q];
+  snap.kinetic_energy = sum[6 * Q];
+  snap.potential_energy = sum[6 * Q + 1];
+  snap.overlap_sum = sum[6 * Q + 2];
+  snap.contact_count = (long) sum[6 * Q + 3];
+  snap.rotation_sum = sum[6 * Q + 4];
+  snap.particle_count = (long) sum[6 * Q + 5];
+
+  sbc_error err;
+  sbc_event ev = sbc_controller_step(ctl, &snap, &err);
+  if (ev == SBC_EVENT_FAILED) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+  if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
+    last = *sbc_controller_result(ctl);
+    if (comm->me == 0) {
+      if (csv && sbc_csv_write(csv, &last, &err) != SBC_OK)
+        error->one(FLERR, std::string("Fix servo_bc: ") + err.message);
+      utils::logmesg(lmp, fmt::format("servo_bc {}: increment {}/{} F12 {:+.5f} sigma11 {:+.6e} sigma12 {:+.6e} "
+                                      "N/m steps {} iterations {}\n",
+                                      sbc_bc_name(settings.bc), last.increment, settings.increments, last.F[1],
+                                      last.sigma[0], last.sigma[1], last.relax_steps, last.iterations));
+    }
+  }
+  if (ev == SBC_EVENT_FINISHED) {
+    finished = 1;
+    timer->force_timeout();    // ends this run at the next step
+  }
+}
+
+double FixServoBC::compute_vector(int n)
+{
+  if (n == 0) return last.increment;
+  if (n <= 4) return last.F[n - 1];
+  if (n <= 8) return last.P[n - 5];
+  if (n <= 12) return last.sigma[n - 9];
+  // 13-16: the servo's progress in the increment under way (thermo shows it live)
+  int iteration;
+  double r[3];
+  sbc_controller_progress(ctl, &iteration, &r[0], &r[1], &r[2]);
+  if (n <= 15) return r[n - 13];
+  if (n == 16) return iteration;
+  return finished;
+}
+
+void FixServoBC::grow_arrays(int nmax)
+{
+  memory->grow(theta_atom, nmax, "servo_bc:theta_atom");
+}
+
+void FixServoBC::copy_arrays(int i, int j, int)
+{
+  theta_atom[j] = theta_atom[i];
+}
+
+int FixServoBC::pack_exchange(int i, double *out)
+{
+  out[0] = theta_atom[i];
+  return 1;
+}
+
+int FixServoBC::unpack_exchange(int nlocal, double *in)
+{
+  theta_atom[nlocal] = in[0];
+  return 1;
+}

@@ -1,0 +1,71 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   fix servo_bc: micro-scale boundary conditions (D), (P), (T) on a frame of
+   boundary particles, driven by the servo_bc core (pure C, src_core/).
+   The fix only translates: owned frame atoms -> snapshot, MPI sums, core
+   controller step, commands -> owned frame atoms.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(servo_bc,FixServoBC);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_SERVO_BC_H
+#define LMP_FIX_SERVO_BC_H
+
+#include "fix.h"
+
+#include <vector>
+
+extern "C" {
+#include "sbc/controller.h"
+#include "sbc/frame.h"
+#include "sbc/settings.h"
+}
+
+namespace LAMMPS_NS {
+
+class FixServoBC : public Fix {
+ public:
+  FixServoBC(class LAMMPS *, int, char **);
+  ~FixServoBC() override;
+  int setmask() override;
+  void init() override;
+  void init_list(int, class NeighList *) override;
+  void setup(int) override;
+  void initial_integrate(int) override;
+  void post_force(int) override;
+  double compute_vector(int) override;
+
+  // per-atom rotation angle: LAMMPS keeps none for spheres (eq. 41 needs it)
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+
+ private:
+  sbc_settings settings;
+  sbc_frame frame;
+  sbc_controller *ctl;
+  std::vector<tagint> frame_tag;   // [Q] atom IDs in frame order
+  std::vector<double> frame_mass;  // [Q] kg
+  std::vector<double> buf, sum;    // reduction buffers
+  std::vector<double> snap_x, snap_f, snap_t, snap_theta;
+  double *theta_atom;              // per-atom accumulated rotation, rad
+  int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
+  double kn, kt;                   // from pair gran/hooke/history
+  double inertia;                  // I = inertia m r^2: 0.5 for discs in 2d
+  class NeighList *list;
+  FILE *csv;
+  int finished;
+  sbc_result last;
+
+  void detect_frame();
+  void fail(const char *what);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
