@@ -80,8 +80,9 @@ $(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_HDR)/pair_gran_hooke_history
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -llammps -lm
 
-check-lammps: $(B)/lmp_servo
+check-lammps: $(B)/lmp_servo $(B)/servo-bc
 	bash tests/lammps/closed_form.sh $(B)/lmp_servo
+	bash tests/lammps/cross_host.sh $(B)/lmp_servo $(B)/servo-bc
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # fix servo_bc in LAMMPS (build/lmp_servo, Debian package) on the closed-form
-# (D) lattice of tests/test_lattice.c: P11 = -N kn (2R - d F11)/((N-1) d),
+# (D) lattice of tests/test_lattice.c, under (D) and (P): P11 = -N kn (2R - d F11)/((N-1) d),
 # P22 likewise, P12 = P21 = 0, every increment, 1e-9 relative; serial and on
 # 2 MPI ranks. Prints "N passed, N failed".
 set -u
@@ -33,6 +33,12 @@ check "serial (D) closed form" "$tmp/serial.csv"
 (cd "$tmp" && mpirun --allow-run-as-root --oversubscribe -np 2 "$lmp" -in "$here/lattice.in" -var csv "$tmp/np2.csv" \
   -log none > np2.log 2>&1) || { echo "lmp_servo -np 2 failed:"; tail -5 "$tmp/np2.log"; }
 check "2 ranks (D) closed form" "$tmp/np2.csv"
+# (P): the affine state is periodic with anti-periodic forces: the same closed form
+sed 's/servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20/servo_bc P F 1.002 0 0 0.997 increments 2 relax 1e-22 20 tol_force 1e-14 tol_moment 1e-14 gain_force 1e3 gain_moment 1e3/' \
+  "$here/lattice.in" > "$tmp/periodic.in"
+(cd "$tmp" && "$lmp" -in periodic.in -var csv "$tmp/periodic.csv" -log none > periodic.log 2>&1) \
+  || { echo "lmp_servo (P) failed:"; tail -5 "$tmp/periodic.log"; }
+check "serial (P) closed form" "$tmp/periodic.csv"
 # bad input: the core's message, named by the fix
 sed 's/servo_bc D F 1.002 0 0 0.997/servo_bc D F 1 2 2 1/' "$here/lattice.in" > "$tmp/bad.in"
 (cd "$tmp" && "$lmp" -in bad.in -var csv "$tmp/bad.csv" -log none > bad.log 2>&1)
