@@ -70,7 +70,7 @@ check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 LMP_HDR = $(B)/lammps-headers
 LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h lammps_fix/lmp_servo.cpp
 
-lammps: $(B)/lmp_servo
+lammps: $(B)/lmp_servo $(B)/servo_bc_plugin.so
 
 $(LMP_HDR)/pair_gran_hooke_history.h:
 	@bash scripts/install-deps.sh lammps-dev
@@ -80,8 +80,17 @@ $(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_HDR)/pair_gran_hooke_history
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -llammps -lm
 
-check-lammps: $(B)/lmp_servo $(B)/servo-bc
-	bash tests/lammps/closed_form.sh $(B)/lmp_servo
+# the plugin: for `plugin load` in LAMMPS builds with the PLUGIN package
+$(B)/servo_bc_plugin.so: $(LMP_SRC) lammps_fix/plugin.cpp $(B)/libservo_bc.a $(LMP_HDR)/pair_gran_hooke_history.h
+	mpicxx -std=c++11 -O2 -g -fPIC -shared -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
+	  -Isrc_core/include -o $@ lammps_fix/plugin.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -lm
+
+$(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_HDR)/pair_gran_hooke_history.h
+	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
+	  -o $@ tests/lammps/plugin_driver.cpp -llammps -ldl
+
+check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_driver
+	bash tests/lammps/closed_form.sh $(B)/lmp_servo $(B)/plugin_driver $(B)/servo_bc_plugin.so
 	bash tests/lammps/cross_host.sh $(B)/lmp_servo $(B)/servo-bc
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a

@@ -2,9 +2,11 @@
 # fix servo_bc in LAMMPS (build/lmp_servo, Debian package) on the closed-form
 # (D) lattice of tests/test_lattice.c, under (D) and (P): P11 = -N kn (2R - d F11)/((N-1) d),
 # P22 likewise, P12 = P21 = 0, every increment, 1e-9 relative; serial and on
-# 2 MPI ranks. Prints "N passed, N failed".
+# 2 MPI ranks; the plugin route when given. Prints "N passed, N failed".
+# Usage: closed_form.sh LMP_SERVO [PLUGIN_DRIVER PLUGIN.so]
 set -u
 lmp=$(cd "$(dirname "${1:?usage: closed_form.sh LMP_SERVO}")" && pwd)/$(basename "$1")
+drv_arg=${2:-} so_arg=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 pass=0 fail=0
@@ -73,6 +75,17 @@ if [ $? -ne 0 ] && grep -q "ERROR: Fix servo_bc: keyword 'F': det F = -3 is not 
   pass=$((pass + 1)); echo "lammps bad input: ERROR names the fix, keyword and value"
 else
   fail=$((fail + 1)); echo "FAIL lammps bad input:"; tail -3 "$tmp/bad.log"
+fi
+# the plugin route: lammpsplugin_init called by a driver that registers like `plugin load`
+if [ -n "$drv_arg" ] && [ -n "$so_arg" ]; then
+  drv=$(cd "$(dirname "$drv_arg")" && pwd)/$(basename "$drv_arg")
+  so=$(cd "$(dirname "$so_arg")" && pwd)/$(basename "$so_arg")
+  (cd "$tmp" && "$drv" "$so" -in "$here/lattice.in" -var csv "$tmp/plugin.csv" -log none > plugin.log 2>&1)
+  if grep -q "registered fix style servo_bc" "$tmp/plugin.log"; then
+    check "plugin route (D) closed form" "$tmp/plugin.csv"
+  else
+    fail=$((fail + 1)); echo "FAIL lammps plugin route:"; tail -3 "$tmp/plugin.log"
+  fi
 fi
 # refused set-ups: each must end in "ERROR: Fix servo_bc" with the reason, never a crash
 bad() {  # label sed-expression expected-text
