@@ -45,7 +45,7 @@ enum { VEC_SIZE = 18 };
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), kn(0.0), kt(0.0), inertia(0.5), list(nullptr),
-    csv(nullptr), finished(0)
+    csv(nullptr), finished(0), restored(0), last_step(-1)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
@@ -61,17 +61,31 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extvector = 0;
   time_integrate = 0;    // moves only the frame atoms, which no integrator may own (checked in init)
+  restart_global = 1;
+  restart_peratom = 1;
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nlocal; i++) theta_atom[i] = 0.0;
 
-  detect_frame();
+  // after read_restart, the groups ID_frame and ID_interior come back with the
+  // atoms; the frame then comes from this fix's restart data (restart()), since
+  // its reference positions cannot be detected again from a deformed packing
+  int igf = group->find((std::string(id) + "_frame").c_str());
+  int igi = group->find((std::string(id) + "_interior").c_str());
+  if (igf >= 0 && igi >= 0) {
+    frame_bit = group->bitmask[igf];
+    interior_bit = group->bitmask[igi];
+  } else {
+    detect_frame();
+  }
 }
 
 FixServoBC::~FixServoBC()
 {
   atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
   memory->destroy(theta_atom);
   sbc_controller_free(ctl);
   sbc_frame_free(&frame);
@@ -145,19 +159,24 @@ void FixServoBC::detect_frame()
     if (!(mask[i] & groupbit)) continue;
     atom->mask[i] |= is_frame.count(atom->tag[i]) ? frame_bit : interior_bit;
   }
-  buf.assign(6 * Q + 6, 0.0);
-  sum.assign(6 * Q + 6, 0.0);
-  snap_x.assign(2 * Q, 0.0);
-  snap_f.assign(2 * Q, 0.0);
-  snap_t.assign(Q, 0.0);
-  snap_theta.assign(Q, 0.0);
+  make_buffers();
   if (comm->me == 0)
     utils::logmesg(lmp, fmt::format("fix servo_bc: {} particles, frame of {} (groups {}_frame, {}_interior)\n", n, Q,
                                     id, id));
 }
 
+void FixServoBC::make_buffers()
+{
+  buf.assign(6 * frame.n + 6, 0.0);
+  sum.assign(6 * frame.n + 6, 0.0);
+}
+
 void FixServoBC::init()
 {
+  if (frame.n == 0)
+    error->all(FLERR, fmt::format("Fix servo_bc: groups {}_frame and {}_interior exist but no restart data of fix {} "
+                                  "restored the frame (re-use the fix ID of the restart file, or delete the groups)",
+                                  id, id, id));
   Pair *pair = force->pair_match("gran/hooke/history", 1);
   auto *gran = dynamic_cast<PairGranHookeHistory *>(pair);
   if (!gran)
@@ -189,7 +208,11 @@ void FixServoBC::init()
     sbc_error err;
     ctl = sbc_controller_create(&frame, &settings, frame_mass.data(), update->dt, &err);
     if (!ctl) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
-    if (comm->me == 0 && settings.file[0] && sbc_csv_open(&csv, settings.file, &err) != SBC_OK)
+    if (!saved_state.empty() &&
+        sbc_controller_load(ctl, saved_state.data(), saved_state.size(), &err) != SBC_OK)
+      error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+    if (comm->me == 0 && settings.file[0] &&
+        (restored ? sbc_csv_append(&csv, settings.file, &err) : sbc_csv_open(&csv, settings.file, &err)) != SBC_OK)
       error->one(FLERR, std::string("Fix servo_bc: ") + err.message);
   }
 }
@@ -305,6 +328,10 @@ void FixServoBC::post_force(int)
   snap.rotation_sum = sum[6 * Q + 4];
   snap.particle_count = (long) sum[6 * Q + 5];
 
+  // the setup of a later run (or of a restarted one) sees the configuration of
+  // the last step again: the controller has already taken it
+  if (update->ntimestep == last_step) return;
+  last_step = update->ntimestep;
   sbc_error err;
   sbc_event ev = sbc_controller_step(ctl, &snap, &err);
   if (ev == SBC_EVENT_FAILED) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
@@ -338,6 +365,79 @@ double FixServoBC::compute_vector(int n)
   if (n <= 15) return r[n - 13];
   if (n == 16) return iteration;
   return finished;
+}
+
+/* global restart data, written by rank 0: frame, atom IDs, masses, controller
+   state, finished flag */
+void FixServoBC::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  std::vector<double> list;
+  list.push_back((double) sbc_frame_state_size(&frame));
+  size_t at = list.size();
+  list.resize(at + sbc_frame_state_size(&frame));
+  sbc_frame_save(&frame, &list[at]);
+  for (int q = 0; q < frame.n; q++) list.push_back((double) frame_tag[q]);
+  for (int q = 0; q < frame.n; q++) list.push_back(frame_mass[q]);
+  size_t nc = ctl ? sbc_controller_state_size(ctl) : 0;
+  list.push_back((double) nc);
+  at = list.size();
+  list.resize(at + nc);
+  if (ctl) sbc_controller_save(ctl, &list[at]);
+  list.push_back(finished);
+  list.push_back((double) last_step);
+  int bytes = (int) (list.size() * sizeof(double));    // LAMMPS reads the block size in bytes
+  fwrite(&bytes, sizeof(int), 1, fp);
+  fwrite(list.data(), sizeof(double), list.size(), fp);
+}
+
+void FixServoBC::restart(char *raw)
+{
+  double *list = (double *) raw;
+  size_t k = 0, nf = (size_t) list[k++];
+  sbc_error err;
+  sbc_frame_free(&frame);
+  if (sbc_frame_load(&frame, &list[k], nf, &err) != SBC_OK)
+    error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+  k += nf;
+  frame_tag.resize(frame.n);
+  frame_mass.resize(frame.n);
+  for (int q = 0; q < frame.n; q++) frame_tag[q] = (tagint) list[k++];
+  for (int q = 0; q < frame.n; q++) frame_mass[q] = list[k++];
+  size_t nc = (size_t) list[k++];
+  saved_state.assign(list + k, list + k + nc);
+  k += nc;
+  finished = (int) list[k++];
+  last_step = (bigint) list[k];
+  restored = 1;
+  make_buffers();
+}
+
+/* per-atom restart data: the accumulated rotation */
+int FixServoBC::pack_restart(int i, double *out)
+{
+  out[0] = 2;
+  out[1] = theta_atom[i];
+  return 2;
+}
+
+void FixServoBC::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  theta_atom[nlocal] = extra[nlocal][m];
+}
+
+int FixServoBC::size_restart(int)
+{
+  return 2;
+}
+
+int FixServoBC::maxsize_restart()
+{
+  return 2;
 }
 
 void FixServoBC::grow_arrays(int nmax)

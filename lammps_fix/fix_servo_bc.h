@@ -37,12 +37,18 @@ class FixServoBC : public Fix {
   void initial_integrate(int) override;
   void post_force(int) override;
   double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
 
   // per-atom rotation angle: LAMMPS keeps none for spheres (eq. 41 needs it)
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
 
  private:
   sbc_settings settings;
@@ -60,8 +66,12 @@ class FixServoBC : public Fix {
   FILE *csv;
   int finished;
   sbc_result last;
+  std::vector<double> saved_state;  // controller state from a restart file, loaded in init()
+  int restored;                      // the frame came from a restart file
+  bigint last_step;                  // timestep of the last controller step
 
   void detect_frame();
+  void make_buffers();
   void fail(const char *what);
 };
 

@@ -8,4 +8,5 @@ void test_lattice(void);
 void test_input(void);
 void test_outputs(void);
 void test_servo(void);
+void test_restart(void);
 #endif

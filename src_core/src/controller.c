@@ -329,3 +329,129 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
     }
     return accept(c, snap, err);
 }
+
+/* Restart layout (doubles): version, Q, bc, increments, F (4) | increment, servo,
+ * iteration, r_first, steps, norms (4), relax (steps, count, rising, past_peak,
+ * ek_prev), F_prev (4), F_now (4) | result (21) | x_cmd (2Q), theta_cmd (Q),
+ * free_rot (Q), x_prev (2Q). */
+#define STATE_VERSION 1.0
+#define STATE_HEAD 8
+#define STATE_SCALARS 22
+#define STATE_RESULT 21
+
+size_t sbc_controller_state_size(const sbc_controller *c)
+{
+    return STATE_HEAD + STATE_SCALARS + STATE_RESULT + 6 * (size_t)c->frame->n;
+}
+
+static double *put_result(const sbc_result *r, double *o)
+{
+    int k;
+    *o++ = r->increment;
+    for (k = 0; k < 4; ++k) *o++ = r->F[k];
+    for (k = 0; k < 4; ++k) *o++ = r->P[k];
+    for (k = 0; k < 4; ++k) *o++ = r->sigma[k];
+    *o++ = r->overlap_mean;
+    *o++ = r->rotation_mean;
+    *o++ = r->iterations;
+    *o++ = (double)r->relax_steps;
+    *o++ = r->r_force;
+    *o++ = r->r_moment;
+    *o++ = r->r_deformation;
+    *o++ = r->hill_mandel;
+    return o;
+}
+
+static const double *get_result(sbc_result *r, const double *in)
+{
+    int k;
+    r->increment = (int)*in++;
+    for (k = 0; k < 4; ++k) r->F[k] = *in++;
+    for (k = 0; k < 4; ++k) r->P[k] = *in++;
+    for (k = 0; k < 4; ++k) r->sigma[k] = *in++;
+    r->overlap_mean = *in++;
+    r->rotation_mean = *in++;
+    r->iterations = (int)*in++;
+    r->relax_steps = (long)*in++;
+    r->r_force = *in++;
+    r->r_moment = *in++;
+    r->r_deformation = *in++;
+    r->hill_mandel = *in++;
+    return in;
+}
+
+void sbc_controller_save(const sbc_controller *c, double *o)
+{
+    int k, q = c->frame->n;
+    *o++ = STATE_VERSION;
+    *o++ = q;
+    *o++ = c->s.bc;
+    *o++ = c->s.increments;
+    for (k = 0; k < 4; ++k) *o++ = c->s.F[k];
+    *o++ = c->increment;
+    *o++ = c->servo;
+    *o++ = c->iteration;
+    *o++ = c->r_first;
+    *o++ = (double)c->steps;
+    *o++ = c->norms.r_force;
+    *o++ = c->norms.r_moment;
+    *o++ = c->norms.r_deformation;
+    *o++ = c->norms.max_step;
+    *o++ = (double)c->relax.steps;
+    *o++ = c->relax.count;
+    *o++ = c->relax.rising;
+    *o++ = c->relax.past_peak;
+    *o++ = c->relax.ek_prev;
+    for (k = 0; k < 4; ++k) *o++ = c->F_prev[k];
+    for (k = 0; k < 4; ++k) *o++ = c->F_now[k];
+    o = put_result(&c->result, o);
+    for (k = 0; k < 2 * q; ++k) *o++ = c->x_cmd[k];
+    for (k = 0; k < q; ++k) *o++ = c->theta_cmd[k];
+    for (k = 0; k < q; ++k) *o++ = c->free_rot[k];
+    for (k = 0; k < 2 * q; ++k) *o++ = c->x_prev[k];
+}
+
+sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err)
+{
+    static const char *names[4] = {"F11", "F12", "F21", "F22"};
+    int k, q = c->frame->n;
+    if (n != sbc_controller_state_size(c) || in[0] != STATE_VERSION)
+        return sbc_fail(err, SBC_ERR_INPUT, "restart: the saved servo_bc state does not fit this version or frame");
+    if ((int)in[1] != q)
+        return sbc_fail(err, SBC_ERR_INPUT, "restart: the saved frame has %d particles, this one %d", (int)in[1], q);
+    if ((int)in[2] != (int)c->s.bc)
+        return sbc_fail(err, SBC_ERR_INPUT, "restart: boundary condition %s contradicts the saved %s",
+                        sbc_bc_name(c->s.bc), sbc_bc_name((sbc_bc)(int)in[2]));
+    if ((int)in[3] != c->s.increments)
+        return sbc_fail(err, SBC_ERR_INPUT, "restart: keyword 'increments': %d contradicts the saved %d",
+                        c->s.increments, (int)in[3]);
+    for (k = 0; k < 4; ++k)
+        if (in[4 + k] != c->s.F[k])
+            return sbc_fail(err, SBC_ERR_INPUT, "restart: keyword 'F': %s = %.17g contradicts the saved %.17g", names[k],
+                            c->s.F[k], in[4 + k]);
+    in += STATE_HEAD;
+    c->increment = (int)*in++;
+    c->servo = (int)*in++;
+    c->iteration = (int)*in++;
+    c->r_first = *in++;
+    c->steps = (long)*in++;
+    c->norms.r_force = *in++;
+    c->norms.r_moment = *in++;
+    c->norms.r_deformation = *in++;
+    c->norms.max_step = *in++;
+    c->relax.tol_E = c->s.tol_E;
+    c->relax.window = c->s.window;
+    c->relax.steps = (long)*in++;
+    c->relax.count = (int)*in++;
+    c->relax.rising = (int)*in++;
+    c->relax.past_peak = (int)*in++;
+    c->relax.ek_prev = *in++;
+    for (k = 0; k < 4; ++k) c->F_prev[k] = *in++;
+    for (k = 0; k < 4; ++k) c->F_now[k] = *in++;
+    in = get_result(&c->result, in);
+    for (k = 0; k < 2 * q; ++k) c->x_cmd[k] = *in++;
+    for (k = 0; k < q; ++k) c->theta_cmd[k] = *in++;
+    for (k = 0; k < q; ++k) c->free_rot[k] = (unsigned char)*in++;
+    for (k = 0; k < 2 * q; ++k) c->x_prev[k] = *in++;
+    return SBC_OK;
+}

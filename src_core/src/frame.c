@@ -241,3 +241,52 @@ sbc_status sbc_frame_from_list(sbc_frame *f, int count, const int *list, const d
         if (list[k] + 1 > n) n = list[k] + 1;
     return build(f, count, list, n, x, r, 0.0, err);
 }
+
+/* Layout: Q, then per frame position: particle, side, partner, X (2), R, A (2);
+ * then the four corners and V. */
+size_t sbc_frame_state_size(const sbc_frame *f) { return 1 + 8 * (size_t)f->n + 5; }
+
+void sbc_frame_save(const sbc_frame *f, double *out)
+{
+    int q, c;
+    *out++ = f->n;
+    for (q = 0; q < f->n; ++q) {
+        *out++ = f->particle[q];
+        *out++ = f->side[q];
+        *out++ = f->partner[q];
+        *out++ = f->X[2 * q];
+        *out++ = f->X[2 * q + 1];
+        *out++ = f->R[q];
+        *out++ = f->A[2 * q];
+        *out++ = f->A[2 * q + 1];
+    }
+    for (c = 0; c < 4; ++c)
+        *out++ = f->corner[c];
+    *out = f->V;
+}
+
+sbc_status sbc_frame_load(sbc_frame *f, const double *in, size_t n, sbc_error *err)
+{
+    int q, c, nq;
+    sbc_status st;
+    if (n < 1 || !(in[0] >= 4.0) || in[0] > 1e9 || n != 1 + 8 * (size_t)in[0] + 5)
+        return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: %zu values do not describe a frame", n);
+    nq = (int)in[0];
+    if ((st = frame_alloc(f, nq, err)) != SBC_OK)
+        return st;
+    ++in;
+    for (q = 0; q < nq; ++q) {
+        f->particle[q] = (int)*in++;
+        f->side[q] = (int)*in++;
+        f->partner[q] = (int)*in++;
+        f->X[2 * q] = *in++;
+        f->X[2 * q + 1] = *in++;
+        f->R[q] = *in++;
+        f->A[2 * q] = *in++;
+        f->A[2 * q + 1] = *in++;
+    }
+    for (c = 0; c < 4; ++c)
+        f->corner[c] = (int)*in++;
+    f->V = *in;
+    return SBC_OK;
+}

@@ -13,6 +13,18 @@ sbc_status sbc_csv_open(FILE **fp, const char *path, sbc_error *err)
     return SBC_OK;
 }
 
+sbc_status sbc_csv_append(FILE **fp, const char *path, sbc_error *err)
+{
+    *fp = fopen(path, "a");
+    if (!*fp)
+        return sbc_fail(err, SBC_ERR_IO, "keyword 'file': cannot open '%s' for appending", path);
+    if (ftell(*fp) == 0) {
+        fprintf(*fp, "%s\n", sbc_csv_header);
+        fflush(*fp);
+    }
+    return SBC_OK;
+}
+
 sbc_status sbc_csv_write(FILE *fp, const sbc_result *r, sbc_error *err)
 {
     int k, ok;

@@ -76,6 +76,37 @@ if [ $? -ne 0 ] && grep -q "ERROR: Fix servo_bc: keyword 'F': det F = -3 is not 
 else
   fail=$((fail + 1)); echo "FAIL lammps bad input:"; tail -3 "$tmp/bad.log"
 fi
+# restart: a run split by write_restart / read_restart writes the same CSV as the
+# uninterrupted run (byte for byte); a contradicting setting is refused
+servo="servo_bc P F 0.999 -0.01 -0.01 0.999 increments 3 relax 1e-20 20 gain_force 1e3 gain_moment 1e3 tol_force 1e-12 tol_moment 1e-12"
+sed "s/servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20/$servo/" "$here/lattice.in" > "$tmp/full.in"
+sed "s|^run             1000000|run             7000\nwrite_restart   $tmp/half.restart|" "$tmp/full.in" > "$tmp/part1.in"
+cat > "$tmp/part2.in" <<LMP
+read_restart    $tmp/half.restart
+comm_modify     vel yes
+neighbor        0.000255 bin
+neigh_modify    delay 0 every 1 check yes
+fix             servo all SERVO file \${csv}
+fix             integrate servo_interior nve/sphere disc
+fix             plane all enforce2d
+run             1000000
+LMP
+sed -i "s/SERVO/$servo/" "$tmp/part2.in"
+(cd "$tmp" && "$lmp" -in full.in -var csv "$tmp/full.csv" -log none > full.log 2>&1 \
+  && "$lmp" -in part1.in -var csv "$tmp/split.csv" -log none > part1.log 2>&1 \
+  && "$lmp" -in part2.in -var csv "$tmp/split.csv" -log none > part2.log 2>&1)
+if [ "$(wc -l < "$tmp/split.csv" 2>/dev/null)" = 5 ] && cmp -s "$tmp/full.csv" "$tmp/split.csv"; then
+  pass=$((pass + 1)); echo "lammps restart: the split run writes the uninterrupted run's CSV byte for byte"
+else
+  fail=$((fail + 1)); echo "FAIL lammps restart:"; tail -3 "$tmp/part2.log"; diff "$tmp/full.csv" "$tmp/split.csv" | head -5
+fi
+sed -i "s/servo_bc P F 0.999 -0.01/servo_bc P F 0.999 -0.02/" "$tmp/part2.in"
+(cd "$tmp" && "$lmp" -in part2.in -var csv "$tmp/bad3.csv" -log none > bad3.log 2>&1)
+if [ $? -ne 0 ] && grep -q "ERROR: Fix servo_bc: restart: keyword 'F': F12" "$tmp/bad3.log"; then
+  pass=$((pass + 1)); echo "lammps restart refuses a contradicting F"
+else
+  fail=$((fail + 1)); echo "FAIL lammps restart with another F:"; grep -m1 ERROR "$tmp/bad3.log"
+fi
 # the plugin route: lammpsplugin_init called by a driver that registers like `plugin load`
 if [ -n "$drv_arg" ] && [ -n "$so_arg" ]; then
   drv=$(cd "$(dirname "$drv_arg")" && pwd)/$(basename "$drv_arg")

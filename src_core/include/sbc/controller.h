@@ -83,6 +83,15 @@ const sbc_result *sbc_controller_result(const sbc_controller *c);
 void sbc_controller_progress(const sbc_controller *c, int *iteration, double *r_force, double *r_moment,
                              double *r_deformation);
 
+/* Restart support: the controller's whole state as a flat array of doubles.
+ * sbc_controller_load accepts a state saved for the same frame size and the
+ * same loading path (BC, F, increments); it fails with SBC_ERR_INPUT naming
+ * the setting that contradicts the saved one. Gains, tolerances and the
+ * relaxation settings may differ: the new ones apply from the restart on. */
+size_t sbc_controller_state_size(const sbc_controller *c);
+void sbc_controller_save(const sbc_controller *c, double *out);
+sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err);
+
 /* Macroscopic F imposed at increment i: I + (i / i_tot) (F_final - I). */
 void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4]);
 

@@ -7,6 +7,8 @@
 #ifndef SBC_FRAME_H
 #define SBC_FRAME_H
 
+#include <stddef.h>
+
 #include "sbc/status.h"
 
 typedef enum sbc_side {
@@ -48,6 +50,14 @@ sbc_status sbc_frame_from_list(sbc_frame *frame, int count, const int *list,
 
 /* Recomputes A_q (eq. 2) and V from frame->X and frame->R. */
 void sbc_frame_update_geometry(sbc_frame *frame);
+
+/* Restart support: the frame as a flat array of doubles (its reference
+ * positions cannot be detected again from a deformed packing).
+ * sbc_frame_state_size gives the count, sbc_frame_save writes it,
+ * sbc_frame_load rebuilds a frame (fails on a malformed array). */
+size_t sbc_frame_state_size(const sbc_frame *frame);
+void sbc_frame_save(const sbc_frame *frame, double *out);
+sbc_status sbc_frame_load(sbc_frame *frame, const double *in, size_t n, sbc_error *err);
 
 /* Frees the arrays of frame and zeroes it. */
 void sbc_frame_free(sbc_frame *frame);

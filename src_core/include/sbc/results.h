@@ -13,6 +13,10 @@ extern const char sbc_csv_header[];
 /* Opens path for writing and writes the header. */
 sbc_status sbc_csv_open(FILE **fp, const char *path, sbc_error *err);
 
+/* Opens path for appending (a run continued from a restart) and writes the
+ * header only when the file is empty or new. */
+sbc_status sbc_csv_append(FILE **fp, const char *path, sbc_error *err);
+
 /* Writes one row with 17 significant digits and flushes. */
 sbc_status sbc_csv_write(FILE *fp, const sbc_result *r, sbc_error *err);
 
