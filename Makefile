@@ -72,20 +72,20 @@ LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h lammps_fix/lmp_s
 
 lammps: $(B)/lmp_servo $(B)/servo_bc_plugin.so
 
-$(LMP_HDR)/pair_gran_hooke_history.h:
+$(LMP_HDR)/fix_neigh_history.h:
 	@bash scripts/install-deps.sh lammps-dev
 	bash scripts/lammps-headers.sh $(LMP_HDR)
 
-$(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_HDR)/pair_gran_hooke_history.h
+$(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_HDR)/fix_neigh_history.h
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -llammps -lm
 
 # the plugin: for `plugin load` in LAMMPS builds with the PLUGIN package
-$(B)/servo_bc_plugin.so: $(LMP_SRC) lammps_fix/plugin.cpp $(B)/libservo_bc.a $(LMP_HDR)/pair_gran_hooke_history.h
+$(B)/servo_bc_plugin.so: $(LMP_SRC) lammps_fix/plugin.cpp $(B)/libservo_bc.a $(LMP_HDR)/fix_neigh_history.h
 	mpicxx -std=c++11 -O2 -g -fPIC -shared -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -Isrc_core/include -o $@ lammps_fix/plugin.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -lm
 
-$(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_HDR)/pair_gran_hooke_history.h
+$(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_HDR)/fix_neigh_history.h
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -o $@ tests/lammps/plugin_driver.cpp -llammps -ldl
 

@@ -9,6 +9,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_neigh_history.h"
 #include "force.h"
 #include "group.h"
 #include "memory.h"
@@ -39,12 +40,13 @@ namespace {
 struct GranAccess : PairGranHookeHistory {
   static double kn_of(PairGranHookeHistory *p) { return p->*(&GranAccess::kn); }
   static double kt_of(PairGranHookeHistory *p) { return p->*(&GranAccess::kt); }
+  static FixNeighHistory *history_of(PairGranHookeHistory *p) { return p->*(&GranAccess::fix_history); }
 };
 enum { VEC_SIZE = 18 };
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), kn(0.0), kt(0.0), inertia(0.5), list(nullptr),
+    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), kn(0.0), kt(0.0), inertia(0.5), pair_gran(nullptr),
     csv(nullptr), finished(0), restored(0), last_step(-1)
 {
   sbc_error err;
@@ -183,6 +185,7 @@ void FixServoBC::init()
     error->all(FLERR, "Fix servo_bc requires pair_style gran/hooke/history (the paper's contact law, eq. 6)");
   kn = GranAccess::kn_of(gran);
   kt = GranAccess::kt_of(gran);
+  pair_gran = gran;
 
   // frame atoms are moved by this fix only
   for (int k = 0; k < modify->nfix; k++) {
@@ -198,11 +201,6 @@ void FixServoBC::init()
                                     other->id, other->style, id));
   }
 
-  // a neighbour list of our own for Ep and the overlaps (eqs. 12, 39)
-  int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->pair = 0;
-  neighbor->requests[irequest]->fix = 1;
-  neighbor->requests[irequest]->size = 1;    // half list, cutoffs from the radii
 
   if (!ctl) {
     sbc_error err;
@@ -215,11 +213,6 @@ void FixServoBC::init()
         (restored ? sbc_csv_append(&csv, settings.file, &err) : sbc_csv_open(&csv, settings.file, &err)) != SBC_OK)
       error->one(FLERR, std::string("Fix servo_bc: ") + err.message);
   }
-}
-
-void FixServoBC::init_list(int, NeighList *ptr)
-{
-  list = ptr;
 }
 
 void FixServoBC::setup(int)
@@ -292,13 +285,18 @@ void FixServoBC::post_force(int)
     rot += std::fabs(theta_atom[i]);
     npart += 1.0;
   }
-  // each contact once: a half list holds an owned-ghost pair on both ranks
-  // when newton pair is off, then the lower tag counts it
+  // eq. 12 over the pair style's own half list and its shear history: per
+  // contact kn dn^2/2 + kt |shear|^2/2 (the stored shear is the elastic one,
+  // rescaled at the Coulomb limit). Each contact once: with newton pair off an
+  // owned-ghost pair stands on both ranks, and the lower tag counts it.
   const int newton = force->newton_pair;
+  NeighList *list = pair_gran->list;
+  FixNeighHistory *history = GranAccess::history_of(pair_gran);
   for (int ii = 0; ii < list->inum; ii++) {
     int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
     int *jlist = list->firstneigh[i], jnum = list->numneigh[i];
+    const double *shear_i = history ? history->firstvalue[i] : nullptr;
     for (int jj = 0; jj < jnum; jj++) {
       int j = jlist[jj] & NEIGHMASK;
       if (!(mask[j] & groupbit)) continue;
@@ -308,6 +306,10 @@ void FixServoBC::post_force(int)
       if (d2 >= rs * rs) continue;
       double dn = rs - std::sqrt(d2);
       ep += 0.5 * kn * dn * dn;
+      if (shear_i) {
+        const double *sh = &shear_i[3 * jj];
+        ep += 0.5 * kt * (sh[0] * sh[0] + sh[1] * sh[1] + sh[2] * sh[2]);
+      }
       ov += dn / (0.5 * rs);
       nc += 1.0;
     }

@@ -32,7 +32,6 @@ class FixServoBC : public Fix {
   ~FixServoBC() override;
   int setmask() override;
   void init() override;
-  void init_list(int, class NeighList *) override;
   void setup(int) override;
   void initial_integrate(int) override;
   void post_force(int) override;
@@ -62,7 +61,7 @@ class FixServoBC : public Fix {
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
   double kn, kt;                   // from pair gran/hooke/history
   double inertia;                  // I = inertia m r^2: 0.5 for discs in 2d
-  class NeighList *list;
+  class PairGranHookeHistory *pair_gran;
   FILE *csv;
   int finished;
   sbc_result last;
