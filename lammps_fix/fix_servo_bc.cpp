@@ -273,14 +273,18 @@ void FixServoBC::post_force(int)
       buf[4 * Q + q] = torque[i][2];
       buf[5 * Q + q] = theta_atom[i];
     } else {
-      theta_atom[i] += dt * omega[i][2];    // omega at the half step, as x
-      ek += 0.5 * rmass[i] * (v[i][0] * v[i][0] + v[i][1] * v[i][1]) +
-          0.5 * inertia * rmass[i] * radius[i] * radius[i] * omega[i][2] * omega[i][2];
-      if (settings.damping) {    // eq. 10
+      if (settings.damping) {    // eq. 10, with the half-step velocities
         for (int k = 0; k < 2; k++) f[i][k] -= settings.alpha * std::fabs(f[i][k]) * ((v[i][k] > 0) - (v[i][k] < 0));
         double w = omega[i][2];
         torque[i][2] -= settings.beta * std::fabs(torque[i][2]) * ((w > 0.0) - (w < 0.0));
       }
+      // Ek and the rotation with the velocities after this step's kick
+      // (v^(n+1/2) = v^(n-1/2) + dt f/m), as the embedded engine measures them
+      const double I = inertia * rmass[i] * radius[i] * radius[i];
+      const double vx = v[i][0] + dt * f[i][0] / rmass[i], vy = v[i][1] + dt * f[i][1] / rmass[i];
+      const double w = omega[i][2] + dt * torque[i][2] / I;
+      theta_atom[i] += dt * w;
+      ek += 0.5 * rmass[i] * (vx * vx + vy * vy) + 0.5 * I * w * w;
     }
     rot += std::fabs(theta_atom[i]);
     npart += 1.0;
