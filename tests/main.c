@@ -16,7 +16,7 @@ int main(int argc, char **argv)
     struct {
         const char *name;
         void (*fn)(void);
-    } suites[] = {{"frame", test_frame},     {"homogenize", test_homogenize}, {"contact", test_contact},
+    } suites[] = {{"frame", test_frame},     {"homogenize", test_homogenize}, {"contact", test_contact}, {"cohesive", test_cohesive},
                   {"relax", test_relax},     {"lattice", test_lattice},       {"input", test_input},
                   {"outputs", test_outputs}, {"servo", test_servo}, {"restart", test_restart}};
     size_t k;

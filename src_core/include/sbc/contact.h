@@ -66,4 +66,46 @@ static inline double sbc_frictional_energy(const sbc_frictional *law, double dn,
     return e;
 }
 
+/* Cohesive bond law, eqs. 7-8 (Sect. 2.2.2). Two particles in contact at the
+ * start are bonded; while bonded
+ *   fn = kn dn (dn < 0: the bond carries tension), fs += ks dus, m += kr dtheta,
+ * with dtheta = d(theta_j - theta_i) the relative rotation increment; the bond
+ * moment acts +m on i and -m on j (N m). It breaks for good when
+ *   max(0, -fn)/fn_u + |fs|/fs_u + |m|/m_u >= 1                        (eq. 8)
+ * Our reading: the first term counts tension only (f^{b,u}_n is the tensile
+ * strength; a compressed bond is not weakened by its compression). After
+ * failure the contact follows the frictional law of eq. 6 with kn, ks and mu,
+ * and carries no moment. */
+typedef struct sbc_cohesive {
+    double kn;   /* bond normal stiffness k^b_n, N/m */
+    double ks;   /* bond shear stiffness k^b_s, N/m */
+    double kr;   /* bond bending stiffness k^b_theta, N m/rad */
+    double fn_u; /* tensile strength f^{b,u}_n, N */
+    double fs_u; /* shear strength f^{b,u}_s, N */
+    double m_u;  /* bending strength m^{b,u}_theta, N m */
+    double mu;   /* friction coefficient after failure, - */
+} sbc_cohesive;
+
+/* Table 6 in SI: kn 1e8 N/m, ks 4e7 N/m, kr 20 N m/rad, fn_u 300 N, fs_u 60 N,
+ * m_u 0.2 N m, mu 0.6. */
+sbc_cohesive sbc_cohesive_default(void);
+
+/* Per-pair state of a cohesive contact. */
+typedef struct sbc_bond {
+    double fs;  /* tangential spring force, N */
+    double m;   /* bond moment on i, N m */
+    int broken; /* 1 once eq. 8 has reached 1 */
+} sbc_bond;
+
+/* Advances one contact by the increments dus (m) and dtheta (rad) at overlap
+ * dn (m); returns fn (N, positive in compression). *broke (may be NULL) is
+ * set to 1 on the call at which the bond fails. */
+double sbc_cohesive_force(const sbc_cohesive *law, double dn, double dus, double dtheta, sbc_bond *b, int *broke);
+
+/* Eq. 8's left-hand side for the current bond forces (0 once broken). */
+double sbc_cohesive_criterion(const sbc_cohesive *law, double fn, const sbc_bond *b);
+
+/* Elastic energy of the contact, eq. 12 with the rotational term kr dtheta^2/2 = m^2/(2 kr) (J). */
+double sbc_cohesive_energy(const sbc_cohesive *law, double dn, const sbc_bond *b);
+
 #endif
