@@ -10,4 +10,5 @@ void test_input(void);
 void test_outputs(void);
 void test_servo(void);
 void test_restart(void);
+void test_generate(void);
 #endif

@@ -1,0 +1,230 @@
+/* Irregular polydisperse periodic packings: jamming by box shrinking with FIRE
+ * overlap minimization, then the periodic reconstruction of Sect. 4.2. */
+#include "sbc/generate.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+sbc_generate_def sbc_generate_def_default(void)
+{
+    sbc_generate_def d;
+    d.n = 200;
+    d.r_min = 0.67e-3;
+    d.polydispersity = 2.0;
+    d.seed = 1;
+    return d;
+}
+
+/* xorshift64*: deterministic on every platform */
+static double uniform(unsigned long long *s)
+{
+    *s ^= *s >> 12;
+    *s ^= *s << 25;
+    *s ^= *s >> 27;
+    return (double)((*s * 2685821657736338717ULL) >> 11) / 9007199254740992.0;
+}
+
+static double wrap(double a, double L) { return a - L * floor(a / L); }
+
+static double quantize(double a) { return ldexp(nearbyint(ldexp(a, 50)), -50); }
+
+static double image(double d, double L) { return d - L * floor(d / L + 0.5); }
+
+typedef struct box {
+    int n;
+    double L, *x, *r, *v, *f;
+} box;
+
+/* Overlap forces (unit stiffness) and energy sum(overlap^2)/2 in the periodic box, O(n^2). */
+static double forces(box *b)
+{
+    double e = 0.0;
+    int i, j;
+    memset(b->f, 0, sizeof(double) * 2 * (size_t)b->n);
+    for (i = 0; i < b->n; ++i) {
+        for (j = i + 1; j < b->n; ++j) {
+            double dx = image(b->x[2 * j] - b->x[2 * i], b->L), dy = image(b->x[2 * j + 1] - b->x[2 * i + 1], b->L);
+            double rs = b->r[i] + b->r[j], d2 = dx * dx + dy * dy, d, ov;
+            if (d2 >= rs * rs)
+                continue;
+            d = sqrt(d2);
+            ov = rs - d;
+            e += 0.5 * ov * ov;
+            if (d > 0.0) {
+                b->f[2 * i] -= ov * dx / d;
+                b->f[2 * i + 1] -= ov * dy / d;
+                b->f[2 * j] += ov * dx / d;
+                b->f[2 * j + 1] += ov * dy / d;
+            }
+        }
+    }
+    return e;
+}
+
+/* FIRE minimization (Bitzek et al. 2006) of the overlap energy; returns it. */
+static double relax(box *b, double ftol)
+{
+    double dt = 0.1, alpha = 0.1, e = forces(b);
+    int k, it, npos = 0, n2 = 2 * b->n;
+    memset(b->v, 0, sizeof(double) * (size_t)n2);
+    for (it = 0; it < 20000; ++it) {
+        double p = 0.0, vn = 0.0, fnrm = 0.0, fmax = 0.0;
+        for (k = 0; k < n2; ++k) {
+            p += b->f[k] * b->v[k];
+            vn += b->v[k] * b->v[k];
+            fnrm += b->f[k] * b->f[k];
+            if (fabs(b->f[k]) > fmax) fmax = fabs(b->f[k]);
+        }
+        if (fmax < ftol)
+            break;
+        vn = sqrt(vn);
+        fnrm = sqrt(fnrm);
+        for (k = 0; k < n2; ++k)
+            b->v[k] = (1.0 - alpha) * b->v[k] + alpha * vn * b->f[k] / fnrm;
+        if (p > 0.0) {
+            if (++npos > 5) {
+                dt = fmin(1.1 * dt, 1.0);
+                alpha *= 0.99;
+            }
+        } else {
+            npos = 0;
+            dt *= 0.5;
+            alpha = 0.1;
+            memset(b->v, 0, sizeof(double) * (size_t)n2);
+        }
+        for (k = 0; k < n2; ++k) {
+            b->v[k] += dt * b->f[k];
+            b->x[k] = wrap(b->x[k] + dt * b->v[k], b->L);
+        }
+        e = forces(b);
+    }
+    return e;
+}
+
+static void scale_box(box *b, double L)
+{
+    int k;
+    for (k = 0; k < 2 * b->n; ++k)
+        b->x[k] *= L / b->L;
+    b->L = L;
+}
+
+sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sbc_generate_info *info,
+                                 sbc_error *err)
+{
+    unsigned long long s = def->seed * 0x9E3779B97F4A7C15ULL + 1;
+    box b, keep;
+    double area = 0.0, shrink = 0.01, ftol = 1e-12 * def->r_min, jam = 1e-10 * def->r_min, ecut;
+    int k, n = def->n, corner, cap, m = 0;
+    memset(p, 0, sizeof *p);
+    if (n < 4 || n > 100000)
+        return sbc_fail(err, SBC_ERR_INPUT, "generate: %d particles (expected 4 to 100000)", n);
+    if (!(def->r_min > 0.0) || !(def->polydispersity >= 1.0))
+        return sbc_fail(err, SBC_ERR_INPUT, "generate: R_min %g must be > 0 and polydispersity %g >= 1", def->r_min,
+                        def->polydispersity);
+    b.n = keep.n = n;
+    b.x = malloc(sizeof(double) * 2 * (size_t)n);
+    b.r = malloc(sizeof(double) * (size_t)n);
+    b.v = malloc(sizeof(double) * 2 * (size_t)n);
+    b.f = malloc(sizeof(double) * 2 * (size_t)n);
+    keep.x = malloc(sizeof(double) * 2 * (size_t)n);
+    if (!b.x || !b.r || !b.v || !b.f || !keep.x) {
+        free(b.x); free(b.r); free(b.v); free(b.f); free(keep.x);
+        return sbc_fail(err, SBC_ERR_NOMEM, "generate: out of memory");
+    }
+    for (k = 0; k < n; ++k) {
+        b.r[k] = def->r_min * (1.0 + (def->polydispersity - 1.0) * uniform(&s));
+        area += M_PI * b.r[k] * b.r[k];
+    }
+    b.L = sqrt(area / 0.5); /* start at a packing fraction of 0.5 */
+    for (k = 0; k < 2 * n; ++k)
+        b.x[k] = b.L * uniform(&s);
+    ecut = 0.5 * n * jam * jam;
+    relax(&b, ftol);
+    memcpy(keep.x, b.x, sizeof(double) * 2 * (size_t)n);
+    keep.L = b.L;
+    /* shrink until jammed; halve the step at each jam */
+    while (shrink > 1e-5) {
+        scale_box(&b, b.L * (1.0 - shrink));
+        if (relax(&b, ftol) > ecut) {
+            memcpy(b.x, keep.x, sizeof(double) * 2 * (size_t)n);
+            b.L = keep.L;
+            shrink *= 0.5;
+        } else {
+            memcpy(keep.x, b.x, sizeof(double) * 2 * (size_t)n);
+            keep.L = b.L;
+        }
+    }
+    /* reconstruction: particle `corner` at the origin, copies across the edges */
+    cap = 4 * n;
+    p->x = malloc(sizeof(double) * 2 * (size_t)cap);
+    p->r = malloc(sizeof(double) * (size_t)cap);
+    if (!p->x || !p->r) {
+        free(b.x); free(b.r); free(b.v); free(b.f); free(keep.x);
+        sbc_packing_free(p);
+        return sbc_fail(err, SBC_ERR_NOMEM, "generate: out of memory");
+    }
+    /* positions and L on a grid of 2^-50 m (~9e-16 m): then x + L and x - L are
+       exact, and every copy sits at exactly +-L from its original both ways */
+    keep.L = quantize(keep.L);
+    corner = 0;
+    for (k = 0; k < n; ++k) {
+        double x = quantize(wrap(keep.x[2 * k] - keep.x[2 * corner], keep.L));
+        double y = quantize(wrap(keep.x[2 * k + 1] - keep.x[2 * corner + 1], keep.L)), r = b.r[k];
+        if (x >= keep.L) x = 0.0;
+        if (y >= keep.L) y = 0.0;
+        int sx, sy;
+        if (k == corner)
+            x = y = 0.0;
+        for (sx = -1; sx <= 1; ++sx) {
+            for (sy = -1; sy <= 1; ++sy) {
+                double cx = x + sx * keep.L, cy = y + sy * keep.L;
+                /* keep the image if its disc meets the closed square [0, L]^2 */
+                if (cx + r < 0.0 || cx - r > keep.L || cy + r < 0.0 || cy - r > keep.L)
+                    continue;
+                if ((sx != 0 || sy != 0) && !(cx >= -r && cx <= keep.L + r && cy >= -r && cy <= keep.L + r))
+                    continue;
+                if (sx != 0 && !(x - r < 0.0 || x + r > keep.L))
+                    continue;
+                if (sy != 0 && !(y - r < 0.0 || y + r > keep.L))
+                    continue;
+                p->x[2 * m] = cx;
+                p->x[2 * m + 1] = cy;
+                p->r[m++] = r;
+            }
+        }
+    }
+    p->n = m;
+    if (info) {
+        double inside = 0.0, contacts = 0.0;
+        int i, j, counted = 0;
+        /* the copies across the edges carry exactly the parts of the discs that
+           stick out of the square, so the area inside is that of the n0 discs */
+        for (k = 0; k < n; ++k)
+            inside += M_PI * b.r[k] * b.r[k];
+        for (i = 0; i < n; ++i) {
+            int c = 0;
+            for (j = 0; j < n; ++j) {
+                double dx, dy;
+                if (j == i) continue;
+                dx = image(keep.x[2 * j] - keep.x[2 * i], keep.L);
+                dy = image(keep.x[2 * j + 1] - keep.x[2 * i + 1], keep.L);
+                if (sqrt(dx * dx + dy * dy) < b.r[i] + b.r[j] + 1e-6 * def->r_min) ++c;
+            }
+            contacts += c;
+            ++counted;
+        }
+        info->n0 = n;
+        info->n = m;
+        info->L = keep.L;
+        info->fraction = inside / (keep.L * keep.L);
+        info->coordination = counted ? contacts / counted : 0.0;
+    }
+    free(b.x); free(b.r); free(b.v); free(b.f); free(keep.x);
+    return SBC_OK;
+}
