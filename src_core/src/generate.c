@@ -37,31 +37,60 @@ static double image(double d, double L) { return d - L * floor(d / L + 0.5); }
 
 typedef struct box {
     int n;
-    double L, *x, *r, *v, *f;
+    double L, rmax, *x, *r, *v, *f;
+    int *head, *next, cells; /* periodic cell list, cells^2 heads */
 } box;
 
-/* Overlap forces (unit stiffness) and energy sum(overlap^2)/2 in the periodic box, O(n^2). */
+static double pair_force(box *b, int i, int j)
+{
+    double dx = image(b->x[2 * j] - b->x[2 * i], b->L), dy = image(b->x[2 * j + 1] - b->x[2 * i + 1], b->L);
+    double rs = b->r[i] + b->r[j], d2 = dx * dx + dy * dy, d, ov;
+    if (d2 >= rs * rs)
+        return 0.0;
+    d = sqrt(d2);
+    ov = rs - d;
+    if (d > 0.0) {
+        b->f[2 * i] -= ov * dx / d;
+        b->f[2 * i + 1] -= ov * dy / d;
+        b->f[2 * j] += ov * dx / d;
+        b->f[2 * j + 1] += ov * dy / d;
+    }
+    return 0.5 * ov * ov;
+}
+
+/* Overlap forces (unit stiffness) and energy sum(overlap^2)/2 in the periodic
+ * box: a periodic cell list (cells >= 2 rmax wide) when the box holds at least
+ * 3 x 3 cells, all pairs otherwise. */
 static double forces(box *b)
 {
     double e = 0.0;
-    int i, j;
+    int i, j, nc = (int)(b->L / (2.0 * b->rmax));
     memset(b->f, 0, sizeof(double) * 2 * (size_t)b->n);
+    if (nc < 3 || nc > b->cells) {
+        for (i = 0; i < b->n; ++i)
+            for (j = i + 1; j < b->n; ++j)
+                e += pair_force(b, i, j);
+        return e;
+    }
+    for (i = 0; i < nc * nc; ++i)
+        b->head[i] = -1;
     for (i = 0; i < b->n; ++i) {
-        for (j = i + 1; j < b->n; ++j) {
-            double dx = image(b->x[2 * j] - b->x[2 * i], b->L), dy = image(b->x[2 * j + 1] - b->x[2 * i + 1], b->L);
-            double rs = b->r[i] + b->r[j], d2 = dx * dx + dy * dy, d, ov;
-            if (d2 >= rs * rs)
-                continue;
-            d = sqrt(d2);
-            ov = rs - d;
-            e += 0.5 * ov * ov;
-            if (d > 0.0) {
-                b->f[2 * i] -= ov * dx / d;
-                b->f[2 * i + 1] -= ov * dy / d;
-                b->f[2 * j] += ov * dx / d;
-                b->f[2 * j + 1] += ov * dy / d;
-            }
-        }
+        int cx = (int)(b->x[2 * i] / b->L * nc), cy = (int)(b->x[2 * i + 1] / b->L * nc), c;
+        if (cx >= nc) cx = nc - 1;
+        if (cy >= nc) cy = nc - 1;
+        c = cy * nc + cx;
+        b->next[i] = b->head[c];
+        b->head[c] = i;
+    }
+    for (i = 0; i < b->n; ++i) {
+        int cx = (int)(b->x[2 * i] / b->L * nc), cy = (int)(b->x[2 * i + 1] / b->L * nc), ox, oy;
+        if (cx >= nc) cx = nc - 1;
+        if (cy >= nc) cy = nc - 1;
+        for (oy = -1; oy <= 1; ++oy)
+            for (ox = -1; ox <= 1; ++ox)
+                for (j = b->head[((cy + oy + nc) % nc) * nc + (cx + ox + nc) % nc]; j >= 0; j = b->next[j])
+                    if (j > i)
+                        e += pair_force(b, i, j);
     }
     return e;
 }
@@ -132,14 +161,19 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     b.r = malloc(sizeof(double) * (size_t)n);
     b.v = malloc(sizeof(double) * 2 * (size_t)n);
     b.f = malloc(sizeof(double) * 2 * (size_t)n);
+    b.cells = (int)sqrt((double)n) + 1;
+    b.head = malloc(sizeof(int) * (size_t)(b.cells * b.cells));
+    b.next = malloc(sizeof(int) * (size_t)n);
     keep.x = malloc(sizeof(double) * 2 * (size_t)n);
-    if (!b.x || !b.r || !b.v || !b.f || !keep.x) {
-        free(b.x); free(b.r); free(b.v); free(b.f); free(keep.x);
+    if (!b.x || !b.r || !b.v || !b.f || !b.head || !b.next || !keep.x) {
+        free(b.x); free(b.r); free(b.v); free(b.f); free(b.head); free(b.next); free(keep.x);
         return sbc_fail(err, SBC_ERR_NOMEM, "generate: out of memory");
     }
+    b.rmax = 0.0;
     for (k = 0; k < n; ++k) {
         b.r[k] = def->r_min * (1.0 + (def->polydispersity - 1.0) * uniform(&s));
         area += M_PI * b.r[k] * b.r[k];
+        if (b.r[k] > b.rmax) b.rmax = b.r[k];
     }
     b.L = sqrt(area / 0.5); /* start at a packing fraction of 0.5 */
     for (k = 0; k < 2 * n; ++k)
@@ -165,7 +199,7 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     p->x = malloc(sizeof(double) * 2 * (size_t)cap);
     p->r = malloc(sizeof(double) * (size_t)cap);
     if (!p->x || !p->r) {
-        free(b.x); free(b.r); free(b.v); free(b.f); free(keep.x);
+        free(b.x); free(b.r); free(b.v); free(b.f); free(b.head); free(b.next); free(keep.x);
         sbc_packing_free(p);
         return sbc_fail(err, SBC_ERR_NOMEM, "generate: out of memory");
     }
@@ -225,6 +259,6 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
         info->fraction = inside / (keep.L * keep.L);
         info->coordination = counted ? contacts / counted : 0.0;
     }
-    free(b.x); free(b.r); free(b.v); free(b.f); free(keep.x);
+    free(b.x); free(b.r); free(b.v); free(b.f); free(b.head); free(b.next); free(keep.x);
     return SBC_OK;
 }
