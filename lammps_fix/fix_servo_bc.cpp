@@ -171,6 +171,8 @@ void FixServoBC::make_buffers()
 {
   buf.assign(6 * frame.n + 6, 0.0);
   sum.assign(6 * frame.n + 6, 0.0);
+  slot.clear();
+  for (int q = 0; q < frame.n; q++) slot[frame_tag[q]] = q;
 }
 
 void FixServoBC::init()
@@ -226,8 +228,6 @@ void FixServoBC::initial_integrate(int)
   if (finished) return;
   const double dt = update->dt;
   sbc_commands cmd = sbc_controller_commands(ctl);
-  std::unordered_map<tagint, int> slot;
-  for (int q = 0; q < frame.n; q++) slot[frame_tag[q]] = q;
   double **x = atom->x, **v = atom->v, **omega = atom->omega, **torque = atom->torque;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & frame_bit)) continue;
@@ -258,8 +258,6 @@ void FixServoBC::post_force(int)
   double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
   const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
   std::fill(buf.begin(), buf.end(), 0.0);
-  std::unordered_map<tagint, int> slot;
-  for (int q = 0; q < Q; q++) slot[frame_tag[q]] = q;
 
   double ek = 0.0, ep = 0.0, ov = 0.0, nc = 0.0, rot = 0.0, npart = 0.0;
   for (int i = 0; i < nlocal; i++) {

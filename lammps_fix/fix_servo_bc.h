@@ -16,6 +16,7 @@ FixStyle(servo_bc,FixServoBC);
 
 #include "fix.h"
 
+#include <unordered_map>
 #include <vector>
 
 extern "C" {
@@ -56,6 +57,7 @@ class FixServoBC : public Fix {
   std::vector<tagint> frame_tag;   // [Q] atom IDs in frame order
   std::vector<double> frame_mass;  // [Q] kg
   std::vector<double> buf, sum;    // reduction buffers
+  std::unordered_map<tagint, int> slot;  // atom ID -> frame position, built with the frame
   std::vector<double> snap_x, snap_f, snap_t, snap_theta;
   double *theta_atom;              // per-atom accumulated rotation, rad
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
