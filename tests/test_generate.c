@@ -4,9 +4,133 @@
 #include "check.h"
 #include "tests.h"
 
+#include "sbc/frame.h"
 #include "sbc/generate.h"
+#include "sbc/plot.h"
+#include "sbc/script.h"
 
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+/* Lines of a file that start with `prefix`; -1 when it cannot be read. */
+static int count_lines(const char *path, const char *prefix)
+{
+    FILE *fp = fopen(path, "r");
+    char buf[512];
+    int n = 0;
+    if (!fp)
+        return -1;
+    while (fgets(buf, sizeof buf, fp))
+        n += strncmp(buf, prefix, strlen(prefix)) == 0;
+    fclose(fp);
+    return n;
+}
+
+/* The frame of the reconstructed packing: discs crossing the square's edges,
+ * partners at exactly +-L, the corner particle at the four corners; the
+ * writers reproduce the packing bit for bit; the runner drives it. */
+static void test_generated_frame(const sbc_packing *a, double L)
+{
+    sbc_frame f;
+    sbc_packing back;
+    sbc_error err;
+    char path[512], script[2048];
+    int k, crossing = 0, exact = 1, sides[5] = {0, 0, 0, 0, 0}, twos, n, *is_frame;
+    double *angle;
+    CHECK(a->has_box && a->box[0] == 0.0 && a->box[1] == L && a->box[3] == L);
+    CHECK(sbc_frame_detect_packing(&f, a, &err) == SBC_OK);
+    for (k = 0; k < a->n; ++k) {
+        double x = a->x[2 * k], y = a->x[2 * k + 1], r = a->r[k];
+        crossing += fabs(x) < r || fabs(x - L) < r || fabs(y) < r || fabs(y - L) < r;
+    }
+    CHECK(f.n == crossing);
+    for (k = 0; k < f.n; ++k) {
+        int q = f.partner[k];
+        ++sides[f.side[k]];
+        if (f.side[k] == SBC_SIDE_BOTTOM)
+            exact &= f.X[2 * q] == f.X[2 * k] && f.X[2 * q + 1] == f.X[2 * k + 1] + L;
+        if (f.side[k] == SBC_SIDE_LEFT)
+            exact &= f.X[2 * q + 1] == f.X[2 * k + 1] && f.X[2 * q] == f.X[2 * k] + L;
+    }
+    CHECK(exact);
+    CHECK(sides[SBC_SIDE_CORNER] == 4 && sides[SBC_SIDE_BOTTOM] == sides[SBC_SIDE_TOP] &&
+          sides[SBC_SIDE_LEFT] == sides[SBC_SIDE_RIGHT] && sides[SBC_SIDE_BOTTOM] > 0);
+    CHECK_REL(f.V, L * L, 1e-12);
+    /* text round trip: bit for bit, box included */
+    snprintf(path, sizeof path, "%s/generated.txt", test_tmpdir);
+    CHECK(sbc_packing_write_text(a, path, &err) == SBC_OK);
+    CHECK(sbc_packing_read(&back, path, &err) == SBC_OK);
+    CHECK(back.n == a->n && back.has_box && memcmp(back.box, a->box, sizeof a->box) == 0 &&
+          memcmp(back.x, a->x, sizeof(double) * 2 * (size_t)a->n) == 0 &&
+          memcmp(back.r, a->r, sizeof(double) * (size_t)a->n) == 0);
+    sbc_packing_free(&back);
+    /* LAMMPS data file: one atom line per disc, the frame as type 2 */
+    is_frame = calloc((size_t)a->n, sizeof *is_frame);
+    for (k = 0; k < f.n; ++k)
+        is_frame[f.particle[k]] = 1;
+    snprintf(path, sizeof path, "%s/generated.data", test_tmpdir);
+    CHECK(sbc_packing_write_lammps(a, is_frame, 2e3, path, &err) == SBC_OK);
+    free(is_frame);
+    {
+        FILE *fp = fopen(path, "r");
+        char buf[512];
+        int atoms = 0, in_atoms = 0, id, type;
+        double d, rho, x, y, z, mass_err = 0.0;
+        twos = 0;
+        while (fp && fgets(buf, sizeof buf, fp)) {
+            if (strncmp(buf, "Atoms", 5) == 0) { in_atoms = 1; continue; }
+            if (in_atoms && sscanf(buf, "%d %d %lf %lf %lf %lf %lf", &id, &type, &d, &rho, &x, &y, &z) == 7) {
+                /* LAMMPS' sphere mass 4/3 pi R^3 rho equals rho_A pi R^2 (eq. 9) */
+                double R = 0.5 * d, m = 4.0 / 3.0 * 3.14159265358979323846 * R * R * R * rho;
+                double want = 2e3 * 3.14159265358979323846 * R * R;
+                if (fabs(m - want) / want > mass_err) mass_err = fabs(m - want) / want;
+                ++atoms;
+                twos += type == 2;
+                exact &= x == a->x[2 * (id - 1)] && y == a->x[2 * (id - 1) + 1] && R == a->r[id - 1];
+            }
+        }
+        if (fp) fclose(fp);
+        CHECK(atoms == a->n && twos == f.n && exact);
+        CHECK(mass_err < 1e-15);
+    }
+    snprintf(path, sizeof path, "%s/generated.yade", test_tmpdir);
+    CHECK(sbc_packing_write_yade(a, path, &err) == SBC_OK);
+    CHECK(count_lines(path, "#") == 1 && count_lines(path, "") == a->n + 1);
+    /* rose diagram: one wedge per bin */
+    CHECK(sbc_packing_contact_angles(a, 1e-6 * 0.67e-3, &angle, &n, &err) == SBC_OK);
+    CHECK(n > a->n); /* coordination above 2 */
+    snprintf(path, sizeof path, "%s/rose.svg", test_tmpdir);
+    CHECK(sbc_plot_rose(path, "rose", n, angle, 36, &err) == SBC_OK);
+    CHECK(count_lines(path, "<path") == 36);
+    free(angle);
+    CHECK(sbc_plot_rose(path, "rose", 0, NULL, 7, &err) == SBC_ERR_INPUT && strstr(err.message, "7 bins"));
+    /* a box that is not the packing's square is refused with a message */
+    {
+        double box[4] = {0.0, 0.9 * L, 0.0, L};
+        sbc_frame g;
+        CHECK(sbc_frame_detect_box(&g, a->n, a->x, a->r, box, &err) == SBC_ERR_FRAME &&
+              strstr(err.message, "frame:"));
+    }
+    sbc_frame_free(&f);
+    /* the runner: generate, write, read back and run two (P) increments */
+    snprintf(path, sizeof path, "%s/runner_generated.txt", test_tmpdir);
+    snprintf(script, sizeof script,
+             "dimension 2\ngenerate periodic n0 25 rmin 0.67e-3 polydispersity 2 seed 1\n"
+             "write_packing text %s\nread_packing %s\ncontact frictional kn 1e4 ks 2e3 mu 0.4\n"
+             "density 2e3\ntimestep 1e-5\n"
+             "servo_bc P F 1 0.01 0 1 increments 2 gain_force 1e3 gain_moment 1e3 gain_deformation 1e-2 "
+             "tol_force 1e-6 tol_moment 1e-6 tol_deformation 1e-3\nrun\n",
+             path, path);
+    CHECK(sbc_script_run_string(script, "generated", NULL, &err) == SBC_OK);
+    if (err.status != SBC_OK) printf("  %s\n", err.message);
+    CHECK(sbc_script_run_string("generate periodic n0 25 rmin 0.67e-3 polydispersity 3 seed 1\n", "bad", NULL,
+                                &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "bad:1: generate: polydispersity '3'"));
+    CHECK(sbc_script_run_string("write_packing vtk x\n", "bad", NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "no packing"));
+}
+
 
 void test_generate(void)
 {
@@ -55,6 +179,7 @@ void test_generate(void)
     CHECK(overlaps == 0);
     CHECK(unpaired == 0);
     CHECK(corners == 4);
+    test_generated_frame(&a, L);
     sbc_packing_free(&a);
     sbc_packing_free(&b);
 }

@@ -133,8 +133,10 @@ static double edge_key(int s, const double *xp)
     }
 }
 
+/* box == NULL: edges are the bands of width `band` inside the bounding box of
+ * the centres; otherwise the discs crossing the edges of the square box. */
 static sbc_status build(sbc_frame *f, int count_in, const int *list, int n, const double *x,
-                        const double *r, double band, sbc_error *err)
+                        const double *r, double band, const double *box, sbc_error *err)
 {
     static const char *corner_name[4] = {"bottom-left", "bottom-right", "top-right", "top-left"};
     static const char *edge_name[4] = {"bottom", "right", "top", "left"};
@@ -159,7 +161,14 @@ static sbc_status build(sbc_frame *f, int count_in, const int *list, int n, cons
     }
     if (band <= 0.0)
         band = 0.5 * rmin;
-    if (!(hi[0] - lo[0] > 2.0 * band && hi[1] - lo[1] > 2.0 * band))
+    if (box) {
+        lo[0] = box[0];
+        hi[0] = box[1];
+        lo[1] = box[2];
+        hi[1] = box[3];
+        if (!(hi[0] - lo[0] > 0.0 && hi[1] - lo[1] > 0.0))
+            return sbc_fail(err, SBC_ERR_FRAME, "frame: box %g %g %g %g is empty", box[0], box[1], box[2], box[3]);
+    } else if (!(hi[0] - lo[0] > 2.0 * band && hi[1] - lo[1] > 2.0 * band))
         return sbc_fail(err, SBC_ERR_FRAME, "frame: the packing is too thin (%g x %g m) to have four edges",
                         hi[0] - lo[0], hi[1] - lo[1]);
     for (s = 0; s < 4; ++s) {
@@ -173,10 +182,22 @@ static sbc_status build(sbc_frame *f, int count_in, const int *list, int n, cons
         int p = list ? list[k] : k;
         const double *xp = &x[2 * p];
         int on[4], c = -1;
-        on[0] = xp[1] - lo[1] <= band;
-        on[1] = hi[0] - xp[0] <= band;
-        on[2] = hi[1] - xp[1] <= band;
-        on[3] = xp[0] - lo[0] <= band;
+        if (box) {
+            on[0] = fabs(xp[1] - lo[1]) < r[p];
+            on[1] = fabs(hi[0] - xp[0]) < r[p];
+            on[2] = fabs(hi[1] - xp[1]) < r[p];
+            on[3] = fabs(xp[0] - lo[0]) < r[p];
+            if (on[0] + on[1] + on[2] + on[3] > 2 || (on[0] && on[2]) || (on[1] && on[3])) {
+                st = sbc_fail(err, SBC_ERR_FRAME, "frame: particle %d (radius %g m) crosses opposite edges of the "
+                              "box", p, r[p]);
+                goto done;
+            }
+        } else {
+            on[0] = xp[1] - lo[1] <= band;
+            on[1] = hi[0] - xp[0] <= band;
+            on[2] = hi[1] - xp[1] <= band;
+            on[3] = xp[0] - lo[0] <= band;
+        }
         if (list && !(on[0] || on[1] || on[2] || on[3])) {
             /* explicit frame: assign to the nearest edge */
             double d[4] = {xp[1] - lo[1], hi[0] - xp[0], hi[1] - xp[1], xp[0] - lo[0]};
@@ -230,7 +251,42 @@ done:
 sbc_status sbc_frame_detect(sbc_frame *f, int n, const double *x, const double *r, double band,
                             sbc_error *err)
 {
-    return build(f, n, NULL, n, x, r, band, err);
+    return build(f, n, NULL, n, x, r, band, NULL, err);
+}
+
+sbc_status sbc_frame_detect_box(sbc_frame *f, int n, const double *x, const double *r, const double box[4],
+                                sbc_error *err)
+{
+    int k;
+    sbc_status st = build(f, n, NULL, n, x, r, 0.0, box, err);
+    if (st != SBC_OK)
+        return st;
+    /* a geometrically periodic packing pairs every edge particle with a copy
+       at exactly +-L: anything else is not such a packing */
+    for (k = 0; k < f->n; ++k) {
+        /* bottom -> top differ by +L in y (c = 1), left -> right by +L in x (c = 0) */
+        int q = f->partner[k], c = f->side[k] == SBC_SIDE_BOTTOM ? 1 : 0;
+        double L = box[2 * c + 1] - box[2 * c];
+        if (f->side[k] != SBC_SIDE_BOTTOM && f->side[k] != SBC_SIDE_LEFT)
+            continue;
+        if (q < 0 || fabs(f->X[2 * q + c] - f->X[2 * k + c] - L) > 1e-9 * L ||
+            fabs(f->X[2 * q + 1 - c] - f->X[2 * k + 1 - c]) > 1e-9 * L || f->R[q] != f->R[k]) {
+            int p = f->particle[k];
+            sbc_frame_free(f);
+            return sbc_fail(err, SBC_ERR_FRAME,
+                            "frame: particle %d on the %s edge has no periodic copy on the opposite edge (the box "
+                            "must be the square of a geometrically periodic packing)",
+                            p, c ? "bottom" : "left");
+        }
+    }
+    return SBC_OK;
+}
+
+sbc_status sbc_frame_detect_packing(sbc_frame *f, const sbc_packing *p, sbc_error *err)
+{
+    if (p->has_box)
+        return sbc_frame_detect_box(f, p->n, p->x, p->r, p->box, err);
+    return sbc_frame_detect(f, p->n, p->x, p->r, 0.0, err);
 }
 
 sbc_status sbc_frame_from_list(sbc_frame *f, int count, const int *list, const double *x,
@@ -239,7 +295,7 @@ sbc_status sbc_frame_from_list(sbc_frame *f, int count, const int *list, const d
     int n = 0, k;
     for (k = 0; k < count; ++k)
         if (list[k] + 1 > n) n = list[k] + 1;
-    return build(f, count, list, n, x, r, 0.0, err);
+    return build(f, count, list, n, x, r, 0.0, NULL, err);
 }
 
 /* Layout: Q, then per frame position: particle, side, partner, X (2), R, A (2);

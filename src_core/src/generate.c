@@ -194,6 +194,11 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
             keep.L = b.L;
         }
     }
+    /* the jammed state keeps overlaps up to ~1e-10 R_min; stretching the box by
+       1e-8 opens them (gaps below 1e-7 R_min), so that the packing is free of
+       force: touching, not loaded. A loaded start would leave rattlers ringing
+       in an energy Ep ~ 1e-20 kn R^2 that no relaxation criterion can resolve. */
+    scale_box(&keep, keep.L * (1.0 + 1e-8));
     /* reconstruction: particle `corner` at the origin, copies across the edges */
     cap = 4 * n;
     p->x = malloc(sizeof(double) * 2 * (size_t)cap);
@@ -234,6 +239,9 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
         }
     }
     p->n = m;
+    p->has_box = 1;
+    p->box[0] = p->box[2] = 0.0;
+    p->box[1] = p->box[3] = keep.L;
     if (info) {
         double inside = 0.0, contacts = 0.0;
         int i, j, counted = 0;

@@ -3,6 +3,7 @@
 #include "sbc/settings.h"
 #include "words.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,6 +50,28 @@ sbc_status sbc_packing_lattice_square(sbc_packing *p, int nx, int ny, double spa
     return SBC_OK;
 }
 
+/* "box XLO XHI YLO YHI" */
+static sbc_status read_box(sbc_packing *p, char *line, const char *path, int lineno, sbc_error *err)
+{
+    static const char *names[4] = {"XLO", "XHI", "YLO", "YHI"};
+    char *tok[6];
+    int nt = sbc_split_words(line, tok, 6), c;
+    if (p->has_box)
+        return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: a second 'box' line", path, lineno);
+    if (nt != 5)
+        return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: box has %d values (expected 4: XLO XHI YLO YHI)",
+                        path, lineno, nt - 1);
+    for (c = 0; c < 4; ++c)
+        if (sbc_parse_real(tok[c + 1], names[c], &p->box[c], NULL) != SBC_OK)
+            return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: box %s value '%s' is not a number", path,
+                            lineno, names[c], tok[c + 1]);
+    if (!(p->box[1] > p->box[0] && p->box[3] > p->box[2]))
+        return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: box %g %g %g %g is empty (expected XLO < XHI, "
+                        "YLO < YHI)", path, lineno, p->box[0], p->box[1], p->box[2], p->box[3]);
+    p->has_box = 1;
+    return SBC_OK;
+}
+
 sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err)
 {
     FILE *fp = fopen(path, "r");
@@ -59,13 +82,21 @@ sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err)
     if (!fp)
         return sbc_fail(err, SBC_ERR_IO, "read_packing: cannot open '%s'", path);
     while (fgets(line, sizeof line, fp)) {
-        char *tok[3];
+        char *tok[3], line_copy[1024];
         const char *names[3] = {"x", "y", "r"};
         double v[3];
-        int nt = sbc_split_words(line, tok, 3), c;
+        int nt, c;
+        memcpy(line_copy, line, sizeof line);
+        nt = sbc_split_words(line, tok, 3);
         ++lineno;
         if (nt == 0)
             continue;
+        if (strcmp(tok[0], "box") == 0) {
+            st = read_box(p, line_copy, path, lineno, err);
+            if (st != SBC_OK)
+                break;
+            continue;
+        }
         if (nt != 3) {
             st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: %d values (expected 3: x y r)", path, lineno,
                           nt);
@@ -97,4 +128,56 @@ sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err)
     if (st != SBC_OK)
         sbc_packing_free(p);
     return st;
+}
+
+typedef struct by_x {
+    double x;
+    int k;
+} by_x;
+
+static int compare_x(const void *a, const void *b)
+{
+    double xa = ((const by_x *)a)->x, xb = ((const by_x *)b)->x;
+    return (xa > xb) - (xa < xb);
+}
+
+/* Sweep along x: pairs closer in x than r_i + r_max + tol only. */
+sbc_status sbc_packing_contact_angles(const sbc_packing *p, double tol, double **angle, int *count, sbc_error *err)
+{
+    by_x *order = malloc(sizeof *order * (size_t)(p->n > 0 ? p->n : 1));
+    double rmax = 0.0, *out = NULL;
+    int i, j, m = 0, cap = 0;
+    *angle = NULL;
+    *count = 0;
+    if (!order)
+        return sbc_fail(err, SBC_ERR_NOMEM, "contacts: out of memory");
+    for (i = 0; i < p->n; ++i) {
+        order[i].x = p->x[2 * i];
+        order[i].k = i;
+        if (p->r[i] > rmax) rmax = p->r[i];
+    }
+    qsort(order, (size_t)p->n, sizeof *order, compare_x);
+    for (i = 0; i < p->n; ++i) {
+        int a = order[i].k;
+        for (j = i + 1; j < p->n && order[j].x - order[i].x < p->r[a] + rmax + tol; ++j) {
+            int b = order[j].k;
+            double dx = p->x[2 * b] - p->x[2 * a], dy = p->x[2 * b + 1] - p->x[2 * a + 1];
+            if (sqrt(dx * dx + dy * dy) >= p->r[a] + p->r[b] + tol)
+                continue;
+            if (m == cap) {
+                double *grown = realloc(out, sizeof *out * (size_t)(cap = cap ? 2 * cap : 256));
+                if (!grown) {
+                    free(out);
+                    free(order);
+                    return sbc_fail(err, SBC_ERR_NOMEM, "contacts: out of memory");
+                }
+                out = grown;
+            }
+            out[m++] = atan2(dy, dx);
+        }
+    }
+    free(order);
+    *angle = out;
+    *count = m;
+    return SBC_OK;
 }

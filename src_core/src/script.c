@@ -10,6 +10,7 @@
 #include "sbc/results.h"
 #include "sbc/settings.h"
 #include "sbc/vtk.h"
+#include "script_state.h"
 #include "words.h"
 
 #include <math.h>
@@ -17,22 +18,6 @@
 #include <string.h>
 #include <time.h>
 
-#define MAX_WORDS 64
-
-typedef struct script {
-    const char *name;
-    int line;
-    FILE *log;
-    sbc_packing packing;
-    int have_packing, have_contact, have_density, have_dt, have_servo;
-    sbc_frictional law;
-    double density, dt;
-    sbc_settings settings;
-    int servo_line;
-    int vtk_every;
-    char vtk_prefix[SBC_NAME_LEN];
-    char plot[SBC_NAME_LEN];
-} script;
 
 /* Prefixes err's message with the script name and line. */
 static sbc_status at_line(script *s, sbc_status st, sbc_error *err)
@@ -44,7 +29,7 @@ static sbc_status at_line(script *s, sbc_status st, sbc_error *err)
     return sbc_fail(err, st, "%s:%d: %s", s->name, s->line, msg);
 }
 
-static sbc_status expect_count(int nw, char **w, int want, const char *usage, sbc_error *err)
+sbc_status sbc_script_expect_count(int nw, char **w, int want, const char *usage, sbc_error *err)
 {
     if (nw < want)
         return sbc_fail(err, SBC_ERR_INPUT, "%s: missing values (expected '%s')", w[0], usage);
@@ -53,8 +38,7 @@ static sbc_status expect_count(int nw, char **w, int want, const char *usage, sb
     return SBC_OK;
 }
 
-/* word must equal key */
-static sbc_status expect_key(const char *cmd, const char *word, const char *key, const char *usage, sbc_error *err)
+sbc_status sbc_script_expect_key(const char *cmd, const char *word, const char *key, const char *usage, sbc_error *err)
 {
     if (strcmp(word, key) != 0)
         return sbc_fail(err, SBC_ERR_INPUT, "%s: expected keyword '%s' but found '%s' (usage '%s')", cmd, key, word,
@@ -62,7 +46,7 @@ static sbc_status expect_key(const char *cmd, const char *word, const char *key,
     return SBC_OK;
 }
 
-static sbc_status positive(const char *cmd, const char *what, const char *word, double *out, sbc_error *err)
+sbc_status sbc_script_positive(const char *cmd, const char *what, const char *word, double *out, sbc_error *err)
 {
     if (sbc_parse_real(word, what, out, NULL) != SBC_OK)
         return sbc_fail(err, SBC_ERR_INPUT, "%s: %s '%s' is not a number (expected a real > 0)", cmd, what, word);
@@ -76,7 +60,7 @@ static sbc_status cmd_lattice(script *s, int nw, char **w, sbc_error *err)
     static const char usage[] = "lattice square NX NY spacing D radius R";
     long nx, ny;
     double d, r;
-    sbc_status st = expect_count(nw, w, 8, usage, err);
+    sbc_status st = sbc_script_expect_count(nw, w, 8, usage, err);
     if (st != SBC_OK) return st;
     if (strcmp(w[1], "square") != 0)
         return sbc_fail(err, SBC_ERR_INPUT, "lattice: style '%s' is not known (expected 'square')", w[1]);
@@ -84,10 +68,10 @@ static sbc_status cmd_lattice(script *s, int nw, char **w, sbc_error *err)
         return sbc_fail(err, SBC_ERR_INPUT, "lattice: NX '%s' is not valid (expected an integer from 3 to 100000)", w[2]);
     if (sbc_parse_int(w[3], "NY", 3, 100000, &ny, NULL) != SBC_OK)
         return sbc_fail(err, SBC_ERR_INPUT, "lattice: NY '%s' is not valid (expected an integer from 3 to 100000)", w[3]);
-    if ((st = expect_key("lattice", w[4], "spacing", usage, err)) != SBC_OK) return st;
-    if ((st = positive("lattice", "spacing", w[5], &d, err)) != SBC_OK) return st;
-    if ((st = expect_key("lattice", w[6], "radius", usage, err)) != SBC_OK) return st;
-    if ((st = positive("lattice", "radius", w[7], &r, err)) != SBC_OK) return st;
+    if ((st = sbc_script_expect_key("lattice", w[4], "spacing", usage, err)) != SBC_OK) return st;
+    if ((st = sbc_script_positive("lattice", "spacing", w[5], &d, err)) != SBC_OK) return st;
+    if ((st = sbc_script_expect_key("lattice", w[6], "radius", usage, err)) != SBC_OK) return st;
+    if ((st = sbc_script_positive("lattice", "radius", w[7], &r, err)) != SBC_OK) return st;
     sbc_packing_free(&s->packing);
     st = sbc_packing_lattice_square(&s->packing, (int)nx, (int)ny, d, r, err);
     s->have_packing = st == SBC_OK;
@@ -97,16 +81,16 @@ static sbc_status cmd_lattice(script *s, int nw, char **w, sbc_error *err)
 static sbc_status cmd_contact(script *s, int nw, char **w, sbc_error *err)
 {
     static const char usage[] = "contact frictional kn KN ks KS mu MU";
-    sbc_status st = expect_count(nw, w, 8, usage, err);
+    sbc_status st = sbc_script_expect_count(nw, w, 8, usage, err);
     if (st != SBC_OK) return st;
     if (strcmp(w[1], "frictional") != 0)
         return sbc_fail(err, SBC_ERR_INPUT, "contact: law '%s' is not known (expected 'frictional')", w[1]);
-    if ((st = expect_key("contact", w[2], "kn", usage, err)) != SBC_OK) return st;
-    if ((st = positive("contact", "kn", w[3], &s->law.kn, err)) != SBC_OK) return st;
-    if ((st = expect_key("contact", w[4], "ks", usage, err)) != SBC_OK) return st;
+    if ((st = sbc_script_expect_key("contact", w[2], "kn", usage, err)) != SBC_OK) return st;
+    if ((st = sbc_script_positive("contact", "kn", w[3], &s->law.kn, err)) != SBC_OK) return st;
+    if ((st = sbc_script_expect_key("contact", w[4], "ks", usage, err)) != SBC_OK) return st;
     if (sbc_parse_real(w[5], "ks", &s->law.ks, NULL) != SBC_OK || s->law.ks < 0.0)
         return sbc_fail(err, SBC_ERR_INPUT, "contact: ks '%s' is not valid (expected a real >= 0)", w[5]);
-    if ((st = expect_key("contact", w[6], "mu", usage, err)) != SBC_OK) return st;
+    if ((st = sbc_script_expect_key("contact", w[6], "mu", usage, err)) != SBC_OK) return st;
     if (sbc_parse_real(w[7], "mu", &s->law.mu, NULL) != SBC_OK || s->law.mu < 0.0)
         return sbc_fail(err, SBC_ERR_INPUT, "contact: mu '%s' is not valid (expected a real >= 0)", w[7]);
     s->have_contact = 1;
@@ -116,7 +100,7 @@ static sbc_status cmd_contact(script *s, int nw, char **w, sbc_error *err)
 static sbc_status cmd_vtk(script *s, int nw, char **w, sbc_error *err)
 {
     long every;
-    sbc_status st = expect_count(nw, w, 3, "vtk EVERY PREFIX", err);
+    sbc_status st = sbc_script_expect_count(nw, w, 3, "vtk EVERY PREFIX", err);
     if (st != SBC_OK) return st;
     if (sbc_parse_int(w[1], "EVERY", 1, 100000000L, &every, NULL) != SBC_OK)
         return sbc_fail(err, SBC_ERR_INPUT, "vtk: EVERY '%s' is not valid (expected an integer >= 1)", w[1]);
@@ -197,6 +181,23 @@ static sbc_status write_plot(script *s, run_state *r, sbc_error *err)
     return st;
 }
 
+/* A packing without a single pair touching within 1e-6 R_min cannot carry a load. */
+static sbc_status expect_touching(const sbc_packing *p, sbc_error *err)
+{
+    double *angle, rmin = p->r[0];
+    int n, k;
+    sbc_status st;
+    for (k = 1; k < p->n; ++k)
+        if (p->r[k] < rmin) rmin = p->r[k];
+    if ((st = sbc_packing_contact_angles(p, 1e-6 * rmin, &angle, &n, err)) != SBC_OK)
+        return st;
+    free(angle);
+    if (n == 0)
+        return sbc_fail(err, SBC_ERR_GEOMETRY,
+                        "run: the packing has no contacts (no two particles touch; check radius and spacing)");
+    return SBC_OK;
+}
+
 static sbc_status cmd_run(script *s, sbc_error *err)
 {
     run_state r;
@@ -218,7 +219,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
                         "the frame from the packing",
                         s->servo_line, s->settings.frame_group);
 
-    if ((st = sbc_frame_detect(&r.frame, s->packing.n, s->packing.x, s->packing.r, 0.0, err)) != SBC_OK)
+    if ((st = sbc_frame_detect_packing(&r.frame, &s->packing, err)) != SBC_OK)
         return st;
     def.n = s->packing.n;
     def.x = s->packing.x;
@@ -254,10 +255,9 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         return st;
     }
     sbc_engine_snapshot(r.engine, &snap);
-    if (snap.contact_count == 0) {
+    if (snap.contact_count == 0 && (st = expect_touching(&s->packing, err)) != SBC_OK) {
         run_free(&r);
-        return sbc_fail(err, SBC_ERR_GEOMETRY,
-                        "run: the packing has no contacts (no two particles overlap; check radius and spacing)");
+        return st;
     }
     if (s->settings.file[0] && (st = sbc_csv_open(&r.csv, s->settings.file, err)) != SBC_OK) {
         run_free(&r);
@@ -327,29 +327,32 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
     const char *c = w[0];
     sbc_status st;
     if (strcmp(c, "dimension") == 0) {
-        if ((st = expect_count(nw, w, 2, "dimension 2", err)) != SBC_OK) return st;
+        if ((st = sbc_script_expect_count(nw, w, 2, "dimension 2", err)) != SBC_OK) return st;
         if (strcmp(w[1], "2") != 0)
             return sbc_fail(err, SBC_ERR_INPUT, "dimension: value '%s' is not supported (expected 2)", w[1]);
         return SBC_OK;
     }
     if (strcmp(c, "lattice") == 0) return cmd_lattice(s, nw, w, err);
     if (strcmp(c, "read_packing") == 0) {
-        if ((st = expect_count(nw, w, 2, "read_packing FILE", err)) != SBC_OK) return st;
+        if ((st = sbc_script_expect_count(nw, w, 2, "read_packing FILE", err)) != SBC_OK) return st;
         sbc_packing_free(&s->packing);
         st = sbc_packing_read(&s->packing, w[1], err);
         s->have_packing = st == SBC_OK;
         return st;
     }
+    if (strcmp(c, "generate") == 0) return sbc_script_generate(s, nw, w, err);
+    if (strcmp(c, "write_packing") == 0) return sbc_script_write_packing(s, nw, w, err);
+    if (strcmp(c, "rose") == 0) return sbc_script_rose(s, nw, w, err);
     if (strcmp(c, "contact") == 0) return cmd_contact(s, nw, w, err);
     if (strcmp(c, "density") == 0) {
-        if ((st = expect_count(nw, w, 2, "density RHO", err)) != SBC_OK) return st;
-        st = positive("density", "RHO", w[1], &s->density, err);
+        if ((st = sbc_script_expect_count(nw, w, 2, "density RHO", err)) != SBC_OK) return st;
+        st = sbc_script_positive("density", "RHO", w[1], &s->density, err);
         s->have_density = st == SBC_OK;
         return st;
     }
     if (strcmp(c, "timestep") == 0) {
-        if ((st = expect_count(nw, w, 2, "timestep DT", err)) != SBC_OK) return st;
-        st = positive("timestep", "DT", w[1], &s->dt, err);
+        if ((st = sbc_script_expect_count(nw, w, 2, "timestep DT", err)) != SBC_OK) return st;
+        st = sbc_script_positive("timestep", "DT", w[1], &s->dt, err);
         s->have_dt = st == SBC_OK;
         return st;
     }
@@ -366,18 +369,18 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
     }
     if (strcmp(c, "vtk") == 0) return cmd_vtk(s, nw, w, err);
     if (strcmp(c, "plot") == 0) {
-        if ((st = expect_count(nw, w, 2, "plot FILE.svg", err)) != SBC_OK) return st;
+        if ((st = sbc_script_expect_count(nw, w, 2, "plot FILE.svg", err)) != SBC_OK) return st;
         if (strlen(w[1]) >= SBC_NAME_LEN) return sbc_fail(err, SBC_ERR_INPUT, "plot: file name is too long");
         strcpy(s->plot, w[1]);
         return SBC_OK;
     }
     if (strcmp(c, "run") == 0) {
-        if ((st = expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
+        if ((st = sbc_script_expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
         return cmd_run(s, err);
     }
     return sbc_fail(err, SBC_ERR_INPUT,
-                    "unknown command '%s' (expected dimension, lattice, read_packing, contact, density, timestep, "
-                    "servo_bc, vtk, plot or run)",
+                    "unknown command '%s' (expected dimension, lattice, read_packing, generate, write_packing, rose, "
+                    "contact, density, timestep, servo_bc, vtk, plot or run)",
                     c);
 }
 

@@ -9,6 +9,7 @@
 
 #include <stddef.h>
 
+#include "sbc/packing.h"
 #include "sbc/status.h"
 
 typedef enum sbc_side {
@@ -40,6 +41,18 @@ typedef struct sbc_frame {
  * unique or an edge is empty. x is [2n], r is [n]. */
 sbc_status sbc_frame_detect(sbc_frame *frame, int n, const double *x,
                             const double *r, double band, sbc_error *err);
+
+/* Detects the frame of a geometrically periodic packing (Sect. 4.2): the
+ * discs crossing the edges of the rectangle box = {xlo, xhi, ylo, yhi} (m)
+ * form the frame; the disc crossing two adjacent edges is that corner. Fails
+ * with SBC_ERR_FRAME when a corner is missing or shared, a disc crosses
+ * opposite edges, or an edge particle has no copy at exactly +-L. */
+sbc_status sbc_frame_detect_box(sbc_frame *frame, int n, const double *x, const double *r, const double box[4],
+                                sbc_error *err);
+
+/* The frame of a packing: sbc_frame_detect_box when the packing declares
+ * its periodic square, sbc_frame_detect (default band) otherwise. */
+sbc_status sbc_frame_detect_packing(sbc_frame *frame, const sbc_packing *p, sbc_error *err);
 
 /* Builds the frame from an explicit list of particle indices (a host's frame
  * group): corners and edges are found as in sbc_frame_detect, with the

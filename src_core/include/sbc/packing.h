@@ -8,6 +8,8 @@ typedef struct sbc_packing {
     int n;
     double *x; /* [2n] centres, m */
     double *r; /* [n] radii, m */
+    int has_box;    /* 1: a geometrically periodic packing cut to the square `box` */
+    double box[4];  /* xlo xhi ylo yhi of that square, m; the frame is the discs crossing its edges */
 } sbc_packing;
 
 /* Regular square lattice of Sect. 4.1: nx by ny discs of radius `radius`
@@ -15,8 +17,29 @@ typedef struct sbc_packing {
 sbc_status sbc_packing_lattice_square(sbc_packing *p, int nx, int ny, double spacing, double radius,
                                       sbc_error *err);
 
-/* Reads "x y r" per line (m); '#' starts a comment; errors name the line. */
+/* Reads "x y r" per line (m); '#' starts a comment; errors name the line.
+ * An optional line "box XLO XHI YLO YHI" (m) declares a geometrically
+ * periodic packing and its square (written by sbc_packing_write_text). */
 sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err);
+
+/* Writers, so that every host loads the very same packing (centres and radii
+ * printed with 17 significant digits: read back bit for bit):
+ *  - text:   "box XLO XHI YLO YHI" when periodic, then "x y r" per line (m);
+ *  - lammps: a LAMMPS data file for atom_style sphere, 2D (z = 0, box z
+ *            -0.5 0.5 x the largest diameter), atom type 2 for the frame
+ *            particles and 1 for the interior, diameter in m and, per atom,
+ *            the density 3 rho_A / (4 R) that gives LAMMPS' sphere mass
+ *            4/3 pi R^3 rho the disc mass rho_A pi R^2 of eq. 9 (`density`
+ *            is rho_A, mass per area, kg/m^2);
+ *  - yade:   "x y z r" per line, the format of yade.ymport.text (m). */
+sbc_status sbc_packing_write_text(const sbc_packing *p, const char *path, sbc_error *err);
+sbc_status sbc_packing_write_lammps(const sbc_packing *p, const int *is_frame, double density, const char *path,
+                                    sbc_error *err);
+sbc_status sbc_packing_write_yade(const sbc_packing *p, const char *path, sbc_error *err);
+
+/* Orientations atan2(dy, dx) (rad) of the branch vectors of all pairs whose
+ * gap is below tol (m); *angle is malloc'ed (free it), *count its length. */
+sbc_status sbc_packing_contact_angles(const sbc_packing *p, double tol, double **angle, int *count, sbc_error *err);
 
 void sbc_packing_free(sbc_packing *p);
 

@@ -16,4 +16,9 @@ typedef struct sbc_series {
 sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel, const char *ylabel, int nseries,
                         const sbc_series *series, sbc_error *err);
 
+/* Rose diagram of contact orientations (paper Fig. 6c): angle[k] (rad) of
+ * each contact normal, counted with its opposite direction, in `bins` equal
+ * sectors (even, 4 to 720); bar length proportional to the count. */
+sbc_status sbc_plot_rose(const char *path, const char *title, int n, const double *angle, int bins, sbc_error *err);
+
 #endif

@@ -1,0 +1,86 @@
+/* Packing writers: one packing, read by every host (text, LAMMPS data, YADE). */
+#include "sbc/packing.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+static sbc_status finish(FILE *fp, const char *path, sbc_error *err)
+{
+    if (ferror(fp) | (fclose(fp) != 0))
+        return sbc_fail(err, SBC_ERR_IO, "write_packing: write to '%s' failed", path);
+    return SBC_OK;
+}
+
+static sbc_status open_for_writing(FILE **fp, const sbc_packing *p, const char *path, sbc_error *err)
+{
+    if (p->n < 1)
+        return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no particles to write to '%s'", path);
+    if (!(*fp = fopen(path, "w")))
+        return sbc_fail(err, SBC_ERR_IO, "write_packing: cannot open '%s' for writing", path);
+    return SBC_OK;
+}
+
+sbc_status sbc_packing_write_text(const sbc_packing *p, const char *path, sbc_error *err)
+{
+    FILE *fp;
+    int k;
+    sbc_status st = open_for_writing(&fp, p, path, err);
+    if (st != SBC_OK)
+        return st;
+    fprintf(fp, "# servo_bc packing: %d discs, x y r (m)\n", p->n);
+    if (p->has_box)
+        fprintf(fp, "box %.17g %.17g %.17g %.17g\n", p->box[0], p->box[1], p->box[2], p->box[3]);
+    for (k = 0; k < p->n; ++k)
+        fprintf(fp, "%.17g %.17g %.17g\n", p->x[2 * k], p->x[2 * k + 1], p->r[k]);
+    return finish(fp, path, err);
+}
+
+sbc_status sbc_packing_write_lammps(const sbc_packing *p, const int *is_frame, double density, const char *path,
+                                    sbc_error *err)
+{
+    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, rmax = 0.0;
+    FILE *fp;
+    int k, c;
+    sbc_status st;
+    if (!(density > 0.0))
+        return sbc_fail(err, SBC_ERR_INPUT, "write_packing lammps: density %g is not positive", density);
+    if ((st = open_for_writing(&fp, p, path, err)) != SBC_OK)
+        return st;
+    for (k = 0; k < p->n; ++k) {
+        for (c = 0; c < 2; ++c) {
+            if (p->x[2 * k + c] - p->r[k] < lo[c]) lo[c] = p->x[2 * k + c] - p->r[k];
+            if (p->x[2 * k + c] + p->r[k] > hi[c]) hi[c] = p->x[2 * k + c] + p->r[k];
+        }
+        if (p->r[k] > rmax) rmax = p->r[k];
+    }
+    fprintf(fp, "LAMMPS data file: servo_bc packing of %d discs (SI; type 2 = frame, 1 = interior; density column "
+                "3 rho_A / (4 R) gives M = rho_A pi R^2 with rho_A = %.17g kg/m^2)\n\n", p->n, density);
+    fprintf(fp, "%d atoms\n2 atom types\n\n", p->n);
+    /* one diameter of margin around the discs: the box holds them as they move */
+    fprintf(fp, "%.17g %.17g xlo xhi\n%.17g %.17g ylo yhi\n%.17g %.17g zlo zhi\n\n", lo[0] - 2 * rmax,
+            hi[0] + 2 * rmax, lo[1] - 2 * rmax, hi[1] + 2 * rmax, -rmax, rmax);
+    fprintf(fp, "Atoms # sphere\n\n");
+    for (k = 0; k < p->n; ++k)
+        /* LAMMPS 29Sep2021 (Debian) gives spheres M = 4/3 pi R^3 density even
+           with dimension 2; this density makes M = rho_A pi R^2 (eq. 9) */
+        fprintf(fp, "%d %d %.17g %.17g %.17g %.17g 0\n", k + 1, is_frame && is_frame[k] ? 2 : 1, 2.0 * p->r[k],
+                0.75 * density / p->r[k], p->x[2 * k], p->x[2 * k + 1]);
+    return finish(fp, path, err);
+}
+
+sbc_status sbc_packing_write_yade(const sbc_packing *p, const char *path, sbc_error *err)
+{
+    FILE *fp;
+    int k;
+    sbc_status st = open_for_writing(&fp, p, path, err);
+    if (st != SBC_OK)
+        return st;
+    fprintf(fp, "# servo_bc packing: %d discs, x y z r (m), for yade.ymport.text\n", p->n);
+    for (k = 0; k < p->n; ++k)
+        fprintf(fp, "%.17g %.17g 0 %.17g\n", p->x[2 * k], p->x[2 * k + 1], p->r[k]);
+    return finish(fp, path, err);
+}

@@ -1,0 +1,103 @@
+/* Runner commands on packings: generate, write_packing, rose. */
+#include "script_state.h"
+
+#include "sbc/frame.h"
+#include "sbc/generate.h"
+#include "sbc/plot.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* generate periodic n0 N rmin R polydispersity PD seed S */
+sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
+{
+    static const char usage[] = "generate periodic n0 N rmin R polydispersity PD seed S";
+    sbc_generate_def def = sbc_generate_def_default();
+    sbc_generate_info info;
+    long n, seed;
+    sbc_status st = sbc_script_expect_count(nw, w, 10, usage, err);
+    if (st != SBC_OK) return st;
+    if (strcmp(w[1], "periodic") != 0)
+        return sbc_fail(err, SBC_ERR_INPUT, "generate: style '%s' is not known (expected 'periodic')", w[1]);
+    if ((st = sbc_script_expect_key("generate", w[2], "n0", usage, err)) != SBC_OK) return st;
+    if (sbc_parse_int(w[3], "n0", 4, 100000, &n, NULL) != SBC_OK)
+        return sbc_fail(err, SBC_ERR_INPUT, "generate: n0 '%s' is not valid (expected an integer from 4 to 100000)",
+                        w[3]);
+    if ((st = sbc_script_expect_key("generate", w[4], "rmin", usage, err)) != SBC_OK) return st;
+    if ((st = sbc_script_positive("generate", "rmin", w[5], &def.r_min, err)) != SBC_OK) return st;
+    if ((st = sbc_script_expect_key("generate", w[6], "polydispersity", usage, err)) != SBC_OK) return st;
+    if (sbc_parse_real(w[7], "polydispersity", &def.polydispersity, NULL) != SBC_OK || !(def.polydispersity >= 1.0) ||
+        def.polydispersity > 2.0)
+        return sbc_fail(err, SBC_ERR_INPUT,
+                        "generate: polydispersity '%s' is not valid (expected a real from 1 to 2: wider size ranges "
+                        "let a disc cross two edges beside the corner particle)", w[7]);
+    if ((st = sbc_script_expect_key("generate", w[8], "seed", usage, err)) != SBC_OK) return st;
+    if (sbc_parse_int(w[9], "seed", 0, 2147483647L, &seed, NULL) != SBC_OK)
+        return sbc_fail(err, SBC_ERR_INPUT, "generate: seed '%s' is not valid (expected an integer >= 0)", w[9]);
+    def.n = (int)n;
+    def.seed = (unsigned long)seed;
+    sbc_packing_free(&s->packing);
+    s->have_packing = 0;
+    if ((st = sbc_generate_periodic(&def, &s->packing, &info, err)) != SBC_OK)
+        return st;
+    s->have_packing = 1;
+    if (s->log)
+        fprintf(s->log,
+                "generate: n0 %d -> %d particles after the periodic reconstruction; L = %.6g m, V = %.6g m^2, "
+                "volume fraction %.4f, coordination %.3f\n",
+                info.n0, info.n, info.L, info.L * info.L, info.fraction, info.coordination);
+    return SBC_OK;
+}
+
+/* write_packing text|lammps|yade FILE */
+sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
+{
+    sbc_status st = sbc_script_expect_count(nw, w, 3, "write_packing text|lammps|yade FILE", err);
+    if (st != SBC_OK) return st;
+    if (!s->have_packing)
+        return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no packing (use 'lattice', 'read_packing' or 'generate' first)");
+    if (strcmp(w[1], "text") == 0)
+        return sbc_packing_write_text(&s->packing, w[2], err);
+    if (strcmp(w[1], "yade") == 0)
+        return sbc_packing_write_yade(&s->packing, w[2], err);
+    if (strcmp(w[1], "lammps") == 0) {
+        sbc_frame frame;
+        int *is_frame, k;
+        if (!s->have_density)
+            return sbc_fail(err, SBC_ERR_INPUT, "write_packing lammps: no density (use 'density RHO' first: the data "
+                                                "file carries the masses)");
+        if ((st = sbc_frame_detect_packing(&frame, &s->packing, err)) != SBC_OK)
+            return st;
+        if (!(is_frame = calloc((size_t)s->packing.n, sizeof *is_frame))) {
+            sbc_frame_free(&frame);
+            return sbc_fail(err, SBC_ERR_NOMEM, "write_packing: out of memory");
+        }
+        for (k = 0; k < frame.n; ++k)
+            is_frame[frame.particle[k]] = 1;
+        st = sbc_packing_write_lammps(&s->packing, is_frame, s->density, w[2], err);
+        free(is_frame);
+        sbc_frame_free(&frame);
+        return st;
+    }
+    return sbc_fail(err, SBC_ERR_INPUT, "write_packing: format '%s' is not known (expected text, lammps or yade)", w[1]);
+}
+
+/* rose FILE.svg: contact orientations of the packing (pairs closer than 1e-6 R_min) */
+sbc_status sbc_script_rose(script *s, int nw, char **w, sbc_error *err)
+{
+    double *angle, rmin = 0.0;
+    int n, k;
+    sbc_status st = sbc_script_expect_count(nw, w, 2, "rose FILE.svg", err);
+    if (st != SBC_OK) return st;
+    if (!s->have_packing)
+        return sbc_fail(err, SBC_ERR_INPUT, "rose: no packing (use 'lattice', 'read_packing' or 'generate' first)");
+    for (k = 0; k < s->packing.n; ++k)
+        if (k == 0 || s->packing.r[k] < rmin) rmin = s->packing.r[k];
+    if ((st = sbc_packing_contact_angles(&s->packing, 1e-6 * rmin, &angle, &n, err)) != SBC_OK)
+        return st;
+    st = sbc_plot_rose(w[1], "Contact orientations", n, angle, 36, err);
+    free(angle);
+    if (st == SBC_OK && s->log)
+        fprintf(s->log, "rose: %d contacts -> %s\n", n, w[1]);
+    return st;
+}

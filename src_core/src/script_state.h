@@ -1,0 +1,42 @@
+/* Private: the embedded runner's state and argument helpers, shared by the
+ * files that implement its commands (script.c, script_packing.c). */
+#ifndef SBC_SCRIPT_STATE_H
+#define SBC_SCRIPT_STATE_H
+
+#include "sbc/contact.h"
+#include "sbc/packing.h"
+#include "sbc/settings.h"
+
+#include <stdio.h>
+
+#define MAX_WORDS 64
+
+typedef struct script {
+    const char *name;
+    int line;
+    FILE *log;
+    sbc_packing packing;
+    int have_packing, have_contact, have_density, have_dt, have_servo;
+    sbc_frictional law;
+    double density, dt;
+    sbc_settings settings;
+    int servo_line;
+    int vtk_every;
+    char vtk_prefix[SBC_NAME_LEN];
+    char plot[SBC_NAME_LEN];
+} script;
+
+/* "cmd: missing values / unexpected extra value" unless nw == want. */
+sbc_status sbc_script_expect_count(int nw, char **w, int want, const char *usage, sbc_error *err);
+/* word must equal key. */
+sbc_status sbc_script_expect_key(const char *cmd, const char *word, const char *key, const char *usage,
+                                 sbc_error *err);
+/* A real > 0, named `what` in the message. */
+sbc_status sbc_script_positive(const char *cmd, const char *what, const char *word, double *out, sbc_error *err);
+
+/* Packing commands (script_packing.c). */
+sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err);
+sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err);
+sbc_status sbc_script_rose(script *s, int nw, char **w, sbc_error *err);
+
+#endif
