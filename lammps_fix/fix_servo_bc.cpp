@@ -346,7 +346,7 @@ void FixServoBC::post_force(int)
         error->one(FLERR, std::string("Fix servo_bc: ") + err.message);
       utils::logmesg(lmp, fmt::format("servo_bc {}: increment {}/{} F12 {:+.5f} sigma11 {:+.6e} sigma12 {:+.6e} "
                                       "N/m steps {} iterations {}\n",
-                                      sbc_bc_name(settings.bc), last.increment, settings.increments, last.F[1],
+                                      sbc_bc_name(settings.bc), last.increment, sbc_settings_total_increments(&settings), last.F[1],
                                       last.sigma[0], last.sigma[1], last.relax_steps, last.iterations));
     }
   }

@@ -18,7 +18,7 @@ int main(int argc, char **argv)
         void (*fn)(void);
     } suites[] = {{"frame", test_frame},     {"homogenize", test_homogenize}, {"contact", test_contact}, {"cohesive", test_cohesive},
                   {"relax", test_relax},     {"lattice", test_lattice},       {"input", test_input},
-                  {"outputs", test_outputs}, {"servo", test_servo}, {"restart", test_restart}, {"generate", test_generate}};
+                  {"outputs", test_outputs}, {"servo", test_servo}, {"restart", test_restart}, {"generate", test_generate}, {"mixed", test_mixed}};
     size_t k;
     if (argc > 1) test_runner = argv[1];
     if (argc > 2) test_tmpdir = argv[2];

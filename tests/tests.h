@@ -11,4 +11,5 @@ void test_outputs(void);
 void test_servo(void);
 void test_restart(void);
 void test_generate(void);
+void test_mixed(void);
 #endif

@@ -1,5 +1,6 @@
 /* The servo_bc controller as a state machine: (D) of Table 1, (P) and (T)
- * of Tables 2 (with displacement prediction) and 3 (without). */
+ * of Tables 2 (with displacement prediction) and 3 (without), mixed of
+ * Table 5 with the edge modes as data. */
 #include "sbc/controller.h"
 
 #include "sbc/homogenize.h"
@@ -11,7 +12,12 @@
 #include <string.h>
 
 struct sbc_controller {
-    const sbc_frame *frame;
+    sbc_frame ref;       /* the controller's copy of the frame: the reference of
+                            mixed stage 2 is the state after stage 1 (Sect. 5.1) */
+    const sbc_frame *frame; /* = &ref */
+    unsigned char *mode; /* [2Q] mixed: sbc_mode of each component of each frame position */
+    double P_star[4];    /* mixed: prescribed stress of this increment, N/m */
+    unsigned char P_fixed[4]; /* mixed: 1 where P_star holds (prescribed, or 0 in the stress stage) */
     sbc_settings s;
     double dt;           /* s */
     double *mass;        /* [Q] kg */
@@ -26,6 +32,7 @@ struct sbc_controller {
     double *du, *dtheta; /* [2Q], [Q] servo corrections, m, rad */
     double F_prev[4];    /* F imposed at the previous increment */
     double F_now[4];     /* F imposed at this increment */
+    int total;           /* increments of the whole path, sbc_settings_total_increments */
     int servo;           /* 0: initial relaxation of the increment, 1: servo iterations */
     int iteration;       /* servo iterations in this increment */
     double r_first;      /* first force residual of the increment (growth check) */
@@ -34,13 +41,55 @@ struct sbc_controller {
     sbc_result result;
 };
 
+/* Table 5, 1.1 / 2.1: D components follow the prescribed F path; P pairs and
+ * T components carry on from the previous converged state, shifted by the
+ * change of F (which keeps x+ - x- = F (X+ - X-) exact); rotations are free on
+ * edges with a T component, held at zero on D edges, servo-controlled on P. */
+static void start_mixed(sbc_controller *c)
+{
+    const sbc_frame *f = c->frame;
+    const double *F = c->F_now, *G = c->F_prev;
+    int q, k;
+    for (q = 0; q < f->n; ++q) {
+        const double *X = &f->X[2 * q];
+        int any_t = 0;
+        for (k = 0; k < 2; ++k) {
+            double target = F[2 * k] * X[0] + F[2 * k + 1] * X[1];
+            double shift = target - (G[2 * k] * X[0] + G[2 * k + 1] * X[1]);
+            if (c->mode[2 * q + k] == SBC_MODE_D || c->increment == 0)
+                c->x_cmd[2 * q + k] = target;
+            else
+                c->x_cmd[2 * q + k] = c->x_prev[2 * q + k] + shift;
+            any_t |= c->mode[2 * q + k] == SBC_MODE_T;
+        }
+        c->free_rot[q] = (unsigned char)any_t;
+        if (c->mode[2 * q] == SBC_MODE_D && c->mode[2 * q + 1] == SBC_MODE_D)
+            c->theta_cmd[q] = 0.0;
+    }
+}
+
+static void mixed_stress_targets(sbc_controller *c)
+{
+    int k, stage1 = c->increment <= c->s.stress_increments;
+    double t = c->s.stress_increments > 0 ? fmin(1.0, (double)c->increment / c->s.stress_increments) : 1.0;
+    for (k = 0; k < 4; ++k) {
+        c->P_star[k] = 0.0;
+        c->P_fixed[k] = (unsigned char)stage1; /* P21 = 0 while the stress is applied (Sect. 5.2) */
+    }
+    for (k = 0; k < c->s.nstress; ++k) {
+        int ij = 2 * c->s.stress[k].i + c->s.stress[k].j;
+        c->P_star[ij] = t * c->s.stress[k].value;
+        c->P_fixed[ij] = 1;
+    }
+}
+
 /* Step 1.1 of Tables 1-3 (2.1 of Table 2): the frame commands that open an
  * increment. (D), (P): x_q = F X_q and Q_q = I; (T): x_q = F X_q with free
  * rotations. With prediction (n_f > 0, increments >= 1), the edge particles
  * of (P) and every particle of (T) start from
  *   x_q = F_i X_q + n_f (x_q^(i-1) - F_(i-1) X_q)          (Table 2, 2.1)
  * and the corners of (P) from F_i X_c. n_f = 0 gives Table 3 exactly. */
-static void start_increment(sbc_controller *c)
+static void start_classic(sbc_controller *c)
 {
     const sbc_frame *f = c->frame;
     const double *F = c->F_now, *G = c->F_prev;
@@ -62,12 +111,41 @@ static void start_increment(sbc_controller *c)
             c->free_rot[q] = 0;
         }
     }
+}
+
+static void start_increment(sbc_controller *c)
+{
+    if (c->s.bc == SBC_BC_MIXED) {
+        start_mixed(c);
+        mixed_stress_targets(c);
+    } else {
+        start_classic(c);
+    }
     c->servo = 0;
     c->iteration = 0;
     c->r_first = 0.0;
     c->steps = 0;
     memset(&c->norms, 0, sizeof c->norms);
     sbc_relax_start(&c->relax, c->s.tol_E, c->s.window);
+}
+
+/* Modes of each frame position from the edge modes of the settings. Corners
+ * belong to their horizontal edge (bottom: BL, BR; top: TR, TL); on a periodic
+ * horizontal edge they follow F (D), as the corners of (P) do (eq. 17). */
+static void assign_modes(sbc_controller *c)
+{
+    static const int edge_of_side[5] = {-1, SBC_EDGE_BOTTOM, SBC_EDGE_RIGHT, SBC_EDGE_TOP, SBC_EDGE_LEFT};
+    const sbc_frame *f = c->frame;
+    int q, k;
+    for (q = 0; q < f->n; ++q) {
+        int e = edge_of_side[f->side[q]];
+        if (e < 0)
+            e = q == f->corner[SBC_CORNER_BL] || q == f->corner[SBC_CORNER_BR] ? SBC_EDGE_BOTTOM : SBC_EDGE_TOP;
+        for (k = 0; k < 2; ++k) {
+            unsigned char m = c->s.edge_mode[e][k];
+            c->mode[2 * q + k] = f->side[q] == SBC_SIDE_CORNER && m == SBC_MODE_P ? SBC_MODE_D : m;
+        }
+    }
 }
 
 sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings *settings, const double *mass,
@@ -84,9 +162,27 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
         return NULL;
     }
-    c->frame = frame;
     c->s = *settings;
     c->dt = dt;
+    c->total = sbc_settings_total_increments(settings);
+    {
+        /* a deep copy through the restart layout */
+        size_t n = sbc_frame_state_size(frame);
+        double *tmp = malloc(sizeof(double) * n);
+        sbc_status st = tmp ? SBC_OK : SBC_ERR_NOMEM;
+        if (tmp) {
+            sbc_frame_save(frame, tmp);
+            st = sbc_frame_load(&c->ref, tmp, n, err);
+            free(tmp);
+        }
+        if (st != SBC_OK) {
+            free(c);
+            sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
+            return NULL;
+        }
+        c->frame = &c->ref;
+    }
+    c->mode = calloc(2 * q, 1);
     c->mass = malloc(sizeof(double) * q);
     c->x_cmd = malloc(sizeof(double) * 2 * q);
     c->theta_cmd = calloc(q, sizeof(double));
@@ -97,21 +193,24 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     c->du = calloc(2 * q, sizeof(double));
     c->dtheta = calloc(q, sizeof(double));
     if (!c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du ||
-        !c->dtheta) {
+        !c->dtheta || !c->mode) {
         sbc_controller_free(c);
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
         return NULL;
     }
     memcpy(c->mass, mass, sizeof(double) * q);
-    if (c->s.bc == SBC_BC_P) {
+    if (c->s.bc == SBC_BC_MIXED)
+        assign_modes(c);
+    if (c->s.bc == SBC_BC_P || c->s.bc == SBC_BC_MIXED) {
         size_t k;
         for (k = 0; k < q; ++k) {
-            if (frame->side[k] != SBC_SIDE_CORNER && frame->partner[k] < 0) {
+            if (frame->side[k] != SBC_SIDE_CORNER && frame->partner[k] < 0 &&
+                (c->s.bc == SBC_BC_P || c->mode[2 * k] == SBC_MODE_P)) {
                 sbc_controller_free(c);
                 sbc_fail(err, SBC_ERR_FRAME,
-                         "servo_bc P: frame particle %d (packing index %d) has no periodic partner on the opposite "
+                         "servo_bc %s: frame particle %d (packing index %d) has no periodic partner on the opposite "
                          "edge (opposite edges must hold equally many particles)",
-                         (int)k, frame->particle[k]);
+                         sbc_bc_name(c->s.bc), (int)k, frame->particle[k]);
                 return NULL;
             }
         }
@@ -126,6 +225,8 @@ void sbc_controller_free(sbc_controller *c)
 {
     if (!c)
         return;
+    sbc_frame_free(&c->ref);
+    free(c->mode);
     free(c->mass);
     free(c->x_cmd);
     free(c->theta_cmd);
@@ -151,6 +252,8 @@ const sbc_result *sbc_controller_result(const sbc_controller *c) { return &c->re
 
 int sbc_controller_increment(const sbc_controller *c) { return c->increment; }
 
+const sbc_frame *sbc_controller_frame(const sbc_controller *c) { return c->frame; }
+
 void sbc_controller_progress(const sbc_controller *c, int *iteration, double *r_force, double *r_moment,
                              double *r_deformation)
 {
@@ -163,7 +266,9 @@ void sbc_controller_progress(const sbc_controller *c, int *iteration, double *r_
 void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4])
 {
     static const double I[4] = {1.0, 0.0, 0.0, 1.0};
-    double t = (double)increment / (double)c->s.increments;
+    /* mixed: F stays I during the stress stage, then ramps over `increments` */
+    int stage = c->s.bc == SBC_BC_MIXED ? c->s.stress_increments : 0;
+    double t = increment <= stage ? 0.0 : (double)(increment - stage) / (double)c->s.increments;
     int k;
     for (k = 0; k < 4; ++k)
         F[k] = I[k] + t * (c->s.F[k] - I[k]);
@@ -216,7 +321,7 @@ static int converged(const sbc_controller *c, const sbc_servo_norms *n)
 {
     if (n->r_force > c->s.tol_force)
         return 0;
-    if (c->s.bc == SBC_BC_P)
+    if (c->s.bc == SBC_BC_P || c->s.bc == SBC_BC_MIXED)
         return n->r_moment <= c->s.tol_moment;
     return n->r_deformation <= c->s.tol_deformation;
 }
@@ -225,13 +330,21 @@ static int converged(const sbc_controller *c, const sbc_servo_norms *n)
 static void diverged(const sbc_controller *c, const sbc_servo_norms *n, const char *why, int too_slow,
                      sbc_error *err)
 {
-    const char *gain = c->s.bc == SBC_BC_P ? "gain_force or gain_moment" : "gain_force or gain_deformation";
+    const char *gain = c->s.bc == SBC_BC_T ? "gain_force or gain_deformation" : "gain_force or gain_moment";
     sbc_fail(err, SBC_ERR_DIVERGED,
              "servo_bc %s: increment %d, iteration %d: %s (r_force = %.3g, r_moment = %.3g, r_deformation = %.3g; "
              "tolerances %.3g, %.3g, %.3g); %s %s",
              sbc_bc_name(c->s.bc), c->increment, c->iteration, why, n->r_force, n->r_moment, n->r_deformation,
              c->s.tol_force, c->s.tol_moment, c->s.tol_deformation,
              too_slow ? "raise max_iterations, loosen the tolerances or raise" : "lower", gain);
+}
+
+/* End of the stress stage of a mixed BC: the converged state becomes the
+ * reference X of stage 2 (Sect. 5.1, after eq. 44), with its A_q and V. */
+static void new_reference(sbc_controller *c, const double *x)
+{
+    memcpy(c->ref.X, x, sizeof(double) * 2 * (size_t)c->ref.n);
+    sbc_frame_update_geometry(&c->ref);
 }
 
 /* Table 1, 1.3 / Tables 2-3, 1.6.A: the relaxed, converged configuration is
@@ -242,7 +355,9 @@ static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *
         return SBC_EVENT_FAILED;
     memcpy(c->x_prev, snap->x, sizeof(double) * 2 * (size_t)c->frame->n);
     memcpy(c->F_prev, c->F_now, sizeof c->F_prev);
-    if (c->increment == c->s.increments) {
+    if (c->s.bc == SBC_BC_MIXED && c->s.stress_increments > 0 && c->increment == c->s.stress_increments)
+        new_reference(c, snap->x);
+    if (c->increment == c->total) {
         c->increment++;
         return SBC_EVENT_FINISHED;
     }
@@ -255,7 +370,7 @@ static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *
 sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
 {
     const char *what = NULL;
-    if (c->increment > c->s.increments) {
+    if (c->increment > c->total) {
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: the loading path is already finished", sbc_bc_name(c->s.bc));
         return SBC_EVENT_FAILED;
     }
@@ -290,8 +405,12 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
         const int first = !c->servo;
         /* Tables 2-3: after the initial relaxation (1.2) correct at once (1.3);
          * after each later relaxation (1.4) check the residuals (1.5-1.6). */
-        sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->F_now, c->a, c->m, snap->x, c->du,
+        if (c->s.bc == SBC_BC_MIXED)
+            sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->P_star, c->P_fixed, c->a, c->m, c->du,
                             c->dtheta, &nrm);
+        else
+            sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->F_now, c->a, c->m, snap->x, c->du,
+                                c->dtheta, &nrm);
         c->norms = nrm;
         if (!isfinite(nrm.r_force) || !isfinite(nrm.r_moment) || !isfinite(nrm.r_deformation)) {
             sbc_fail(err, SBC_ERR_NUMERIC, "servo_bc %s: increment %d, iteration %d: non-finite residual",
@@ -333,15 +452,15 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
 /* Restart layout (doubles): version, Q, bc, increments, F (4) | increment, servo,
  * iteration, r_first, steps, norms (4), relax (steps, count, rising, past_peak,
  * ek_prev), F_prev (4), F_now (4) | result (21) | x_cmd (2Q), theta_cmd (Q),
- * free_rot (Q), x_prev (2Q). */
-#define STATE_VERSION 1.0
+ * free_rot (Q), x_prev (2Q), reference X (2Q). */
+#define STATE_VERSION 2.0
 #define STATE_HEAD 8
 #define STATE_SCALARS 22
 #define STATE_RESULT 21
 
 size_t sbc_controller_state_size(const sbc_controller *c)
 {
-    return STATE_HEAD + STATE_SCALARS + STATE_RESULT + 6 * (size_t)c->frame->n;
+    return STATE_HEAD + STATE_SCALARS + STATE_RESULT + 8 * (size_t)c->frame->n;
 }
 
 static double *put_result(const sbc_result *r, double *o)
@@ -409,6 +528,7 @@ void sbc_controller_save(const sbc_controller *c, double *o)
     for (k = 0; k < q; ++k) *o++ = c->theta_cmd[k];
     for (k = 0; k < q; ++k) *o++ = c->free_rot[k];
     for (k = 0; k < 2 * q; ++k) *o++ = c->x_prev[k];
+    for (k = 0; k < 2 * q; ++k) *o++ = c->ref.X[k];
 }
 
 sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err)
@@ -453,5 +573,8 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     for (k = 0; k < q; ++k) c->theta_cmd[k] = *in++;
     for (k = 0; k < q; ++k) c->free_rot[k] = (unsigned char)*in++;
     for (k = 0; k < 2 * q; ++k) c->x_prev[k] = *in++;
+    new_reference(c, in);
+    if (c->s.bc == SBC_BC_MIXED)
+        mixed_stress_targets(c);
     return SBC_OK;
 }

@@ -265,7 +265,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     }
     if (s->log)
         fprintf(s->log, "servo_bc %s: %d particles, frame of %d, %d increments, dt = %g s (critical %g s)\n",
-                sbc_bc_name(s->settings.bc), s->packing.n, r.frame.n, s->settings.increments, s->dt, dtc);
+                sbc_bc_name(s->settings.bc), s->packing.n, r.frame.n, sbc_settings_total_increments(&s->settings), s->dt, dtc);
     for (;;) {
         sbc_commands cmd;
         sbc_event ev = sbc_controller_step(r.ctl, &snap, err);
@@ -283,7 +283,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
             }
             if (s->log)
                 fprintf(s->log, "increment %d/%d  F12 %+.5f  sigma11 %+.6e  sigma12 %+.6e N/m  steps %ld  HM %.1e\n",
-                        row->increment, s->settings.increments, row->F[1], row->sigma[0], row->sigma[1],
+                        row->increment, sbc_settings_total_increments(&s->settings), row->F[1], row->sigma[0], row->sigma[1],
                         row->relax_steps, row->hill_mandel);
             if (ev == SBC_EVENT_FINISHED) break;
         }

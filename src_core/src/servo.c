@@ -15,40 +15,37 @@
  * "required minus measured" (0 - (a+ + a-)), as eq. 35 writes it for (T).
  * Gains from the dimensionless values of Table 4: g_a = G_a dt^2 / M,
  * g_m = G_m dt^2 / (M R^2), with M and R the mean of the two partners. */
+/* One +/- pair (q, p) of (P): corrections on both partners alike; adds the
+ * pair's normalized squared residuals to *sf and *sm. */
+static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, int q, int p,
+                          const double *a, const double *m, double *du, double *dtheta, double *sf, double *sm,
+                          sbc_servo_norms *o)
+{
+    double M = 0.5 * (mass[q] + mass[p]), R = 0.5 * (f->R[q] + f->R[p]);
+    double at = M * R / (dt * dt);     /* a~ of eq. 37, N */
+    double mt = M * R * R / (dt * dt); /* m~ of eq. 37, N m */
+    double da0 = a[2 * q] + a[2 * p], da1 = a[2 * q + 1] + a[2 * p + 1], dm = m[q] + m[p];
+    double ga = s->gain_force * dt * dt / M, gm = s->gain_moment * dt * dt / (M * R * R);
+    double u0 = -ga * da0, u1 = -ga * da1, step;
+    *sf += (da0 * da0 + da1 * da1) / (at * at);
+    *sm += dm * dm / (mt * mt);
+    du[2 * q] = du[2 * p] = u0;
+    du[2 * q + 1] = du[2 * p + 1] = u1;
+    dtheta[q] = dtheta[p] = -gm * dm;
+    step = sqrt(u0 * u0 + u1 * u1) / R;
+    if (step > o->max_step) o->max_step = step;
+    step = fabs(gm * dm); /* rotation step in rad = arc length / R */
+    if (step > o->max_step) o->max_step = step;
+}
+
 static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
                            const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double sf = 0.0, sm = 0.0, dmc = 0.0, mc = 0.0, rc = 0.0;
     int q, c;
-    for (q = 0; q < f->n; ++q) {
-        int p = f->partner[q];
-        double M, R, at, mt, da0, da1, dm, ga, gm;
-        if (f->side[q] != SBC_SIDE_BOTTOM && f->side[q] != SBC_SIDE_RIGHT)
-            continue; /* each pair once, from its bottom or right member */
-        M = 0.5 * (mass[q] + mass[p]);
-        R = 0.5 * (f->R[q] + f->R[p]);
-        at = M * R / (dt * dt);     /* a~ of eq. 37, N */
-        mt = M * R * R / (dt * dt); /* m~ of eq. 37, N m */
-        da0 = a[2 * q] + a[2 * p];
-        da1 = a[2 * q + 1] + a[2 * p + 1];
-        dm = m[q] + m[p];
-        sf += (da0 * da0 + da1 * da1) / (at * at);
-        sm += dm * dm / (mt * mt);
-        {
-            double u0, u1, step;
-            ga = s->gain_force * dt * dt / M;
-            gm = s->gain_moment * dt * dt / (M * R * R);
-            u0 = -ga * da0;
-            u1 = -ga * da1;
-            du[2 * q] = du[2 * p] = u0;
-            du[2 * q + 1] = du[2 * p + 1] = u1;
-            dtheta[q] = dtheta[p] = -gm * dm;
-            step = sqrt(u0 * u0 + u1 * u1) / R;
-            if (step > o->max_step) o->max_step = step;
-            step = fabs(gm * dm); /* rotation step in rad = arc length / R */
-            if (step > o->max_step) o->max_step = step;
-        }
-    }
+    for (q = 0; q < f->n; ++q)
+        if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT) /* each pair once */
+            periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, o);
     for (c = 0; c < 4; ++c) {
         int qc = f->corner[c];
         dmc += m[qc];
@@ -136,4 +133,56 @@ void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, c
         servo_periodic(f, s, mass, dt, a, m, du, dtheta, out);
     else
         servo_traction(f, s, mass, dt, F, a, x, du, dtheta, out);
+}
+
+/* Mixed, Table 5 with the modes as data (mode[2q + c] = sbc_mode):
+ *  - P pairs: eqs. 32-34 as in (P), each pair once;
+ *  - T components: da_q,c = P_cj A_q,j - a_q,c and du_q,c = g_a da_q,c (eq. 48),
+ *    P_cj prescribed where P_fixed, otherwise measured by eq. 23;
+ *  - D components: no correction. Rotations: P pairs servo-controlled, all
+ *    other rotations free or held by the commands (dtheta = 0).
+ * r_force gathers the force residuals of P pairs and T components (r_a^p and
+ * r_a^t of Table 5, one tolerance); r_moment those of the P pairs. */
+void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_settings *s, const double *mass,
+                     double dt, const double P_star[4], const unsigned char P_fixed[4], const double *a,
+                     const double *m, double *du, double *dtheta, sbc_servo_norms *o)
+{
+    double P[4] = {0.0, 0.0, 0.0, 0.0}, sf = 0.0, sm = 0.0;
+    int q, k;
+    o->max_step = 0.0;
+    for (q = 0; q < f->n; ++q) { /* eq. 23 */
+        P[0] += a[2 * q] * f->X[2 * q] / f->V;
+        P[1] += a[2 * q] * f->X[2 * q + 1] / f->V;
+        P[2] += a[2 * q + 1] * f->X[2 * q] / f->V;
+        P[3] += a[2 * q + 1] * f->X[2 * q + 1] / f->V;
+    }
+    for (k = 0; k < 4; ++k)
+        if (P_fixed[k])
+            P[k] = P_star[k];
+    for (q = 0; q < f->n; ++q) {
+        du[2 * q] = du[2 * q + 1] = dtheta[q] = 0.0;
+    }
+    for (q = 0; q < f->n; ++q) {
+        const double *A = &f->A[2 * q];
+        double R = f->R[q], at = mass[q] * R / (dt * dt), ga = s->gain_force * dt * dt / mass[q];
+        int c;
+        if (mode[2 * q] == SBC_MODE_P) {
+            if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)
+                periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, o);
+            continue;
+        }
+        for (c = 0; c < 2; ++c) {
+            double da, step;
+            if (mode[2 * q + c] != SBC_MODE_T)
+                continue;
+            da = P[2 * c] * A[0] + P[2 * c + 1] * A[1] - a[2 * q + c];
+            sf += da * da / (at * at);
+            du[2 * q + c] = ga * da;
+            step = fabs(ga * da) / R;
+            if (step > o->max_step) o->max_step = step;
+        }
+    }
+    o->r_force = sqrt(sf);
+    o->r_moment = sqrt(sm);
+    o->r_deformation = 0.0;
 }

@@ -21,4 +21,10 @@ void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, c
                          const double F[4], const double *a, const double *m, const double *x, double *du,
                          double *dtheta, sbc_servo_norms *out);
 
+/* Mixed (D)-(P)-(T), Table 5 and eq. 48, with the modes per frame component
+ * (mode [2Q], sbc_mode) and the stress targets P_star where P_fixed. */
+void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_settings *s, const double *mass,
+                     double dt, const double P_star[4], const unsigned char P_fixed[4], const double *a,
+                     const double *m, double *du, double *dtheta, sbc_servo_norms *o);
+
 #endif

@@ -1,6 +1,8 @@
 /* The servo_bc keyword parser shared by every host. */
 #include "sbc/settings.h"
 
+#include "settings_mixed.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -26,6 +28,7 @@ sbc_settings sbc_settings_default(void)
     s.tol_deformation = 1.0e-2;
     s.predict = 0.0;
     s.max_iterations = 10000;
+    sbc_mixed_default(&s);
     return s;
 }
 
@@ -163,8 +166,7 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
     else if (strcmp(words[0], "T") == 0)
         s->bc = SBC_BC_T;
     else if (strcmp(words[0], "mixed") == 0)
-        return sbc_fail(err, SBC_ERR_INPUT,
-                        "boundary condition 'mixed' is not implemented in this version (available: D, P, T)");
+        s->bc = SBC_BC_MIXED;
     else
         return sbc_fail(err, SBC_ERR_INPUT, "unknown boundary condition '%s' (expected D, P, T or mixed)", words[0]);
 
@@ -224,9 +226,15 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
             st = read_name(&c, "group-ID", s->frame_group);
         } else if (strcmp(key, "file") == 0) {
             st = read_name(&c, "path", s->file);
-        } else if (strcmp(key, "stress") == 0) {
-            st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'stress' needs boundary condition mixed (got %s)",
-                          sbc_bc_name(s->bc));
+        } else if (strcmp(key, "stress") == 0 || sbc_mixed_edge_index(key) >= 0) {
+            if (s->bc != SBC_BC_MIXED)
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword '%s' needs boundary condition mixed (got %s)", key,
+                              sbc_bc_name(s->bc));
+            else if (strcmp(key, "stress") == 0)
+                st = sbc_mixed_parse_stress(s, c.n - c.i, c.w + c.i, &k, err);
+            else
+                st = sbc_mixed_parse_edge(s, key, c.n - c.i, c.w + c.i, &k, err);
+            c.i += k;
         } else {
             double *gain[3] = {&s->gain_force, &s->gain_moment, &s->gain_deformation};
             double *tol[3] = {&s->tol_force, &s->tol_moment, &s->tol_deformation};
@@ -244,9 +252,16 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
                 st = sbc_fail(err, SBC_ERR_INPUT,
                               "unknown keyword '%s' (expected F, increments, relax, max_relax_steps, damping, "
                               "gain_force, gain_moment, gain_deformation, tol_force, tol_moment, tol_deformation, "
-                              "predict, stress, max_iterations, frame or file)",
+                              "predict, stress, bottom, right, top, left, max_iterations, frame or file)",
                               key);
         }
     }
+    if (st == SBC_OK && s->bc == SBC_BC_MIXED)
+        st = sbc_mixed_validate(s, err);
     return st;
+}
+
+int sbc_settings_total_increments(const sbc_settings *s)
+{
+    return s->increments + (s->bc == SBC_BC_MIXED ? s->stress_increments : 0);
 }

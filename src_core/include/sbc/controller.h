@@ -95,6 +95,10 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
 /* Macroscopic F imposed at increment i: I + (i / i_tot) (F_final - I). */
 void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4]);
 
+/* The reference frame the controller works with: a copy of the host's frame,
+ * whose X, A and V a mixed BC renews after its stress stage (Sect. 5.1). */
+const sbc_frame *sbc_controller_frame(const sbc_controller *c);
+
 /* Increment now being relaxed, 0 .. i_tot. */
 int sbc_controller_increment(const sbc_controller *c);
 

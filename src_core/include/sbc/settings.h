@@ -13,6 +13,19 @@ typedef enum sbc_bc { SBC_BC_D = 0, SBC_BC_P, SBC_BC_T, SBC_BC_MIXED } sbc_bc;
 
 #define SBC_NAME_LEN 256
 
+/* Mixed boundary conditions (Sect. 5): how one displacement component of one
+ * edge is controlled. D: follows the prescribed F path (eq. 17 componentwise);
+ * P: periodic with the opposite edge, both components and the rotation
+ * (eq. 19); T: uniform traction a_q,c = P_cj A_q,j under servo control (eq. 48). */
+typedef enum sbc_mode { SBC_MODE_D = 0, SBC_MODE_P, SBC_MODE_T } sbc_mode;
+
+enum { SBC_EDGE_BOTTOM = 0, SBC_EDGE_RIGHT, SBC_EDGE_TOP, SBC_EDGE_LEFT };
+
+typedef struct sbc_stress_spec {
+    int i, j;     /* component P_ij, 0-based */
+    double value; /* final prescribed first Piola-Kirchhoff stress, N/m */
+} sbc_stress_spec;
+
 typedef struct sbc_settings {
     sbc_bc bc;
     double F[4];             /* final macroscopic F, row-major; F ramps from I; default I */
@@ -30,6 +43,12 @@ typedef struct sbc_settings {
     double tol_deformation;  /* eps_F (Table 4); 1e-2 */
     double predict;          /* inheritance factor n_f in [0, 1]; 0 = no prediction */
     int max_iterations;      /* servo iterations per increment; 10000 */
+    /* mixed only: edge_mode[edge][component] (SBC_EDGE_*, 0 = x, 1 = y); the
+       default is the paper's layer: bottom D D, right P P, top D T, left P P */
+    unsigned char edge_mode[4][2];
+    int nstress;                   /* prescribed stress components (keyword stress) */
+    sbc_stress_spec stress[4];
+    int stress_increments;         /* i_vs: increments of the stress stage (all stress keywords alike) */
     char frame_group[SBC_NAME_LEN]; /* host group of frame particles; "" = detect */
     char file[SBC_NAME_LEN];        /* CSV path; "" = none */
 } sbc_settings;
@@ -42,6 +61,10 @@ sbc_settings sbc_settings_default(void);
  * the offending value and what was expected, e.g.
  *   keyword 'relax': tolE value 'abc' is not a number (expected a real > 0) */
 sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *words, sbc_error *err);
+
+/* Total increments of the loading path: increments, plus the stress stage
+ * of a mixed BC (i_vs + i_tot - i_vs in Table 5). */
+int sbc_settings_total_increments(const sbc_settings *s);
 
 /* Name of a BC ("D", "P", "T", "mixed"). */
 const char *sbc_bc_name(sbc_bc bc);
