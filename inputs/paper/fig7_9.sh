@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Figs. 7-9 (Sect. 4.2.1): simple shear F12 = 0.5 in 100 increments on the
+# 232-particle packing (n0 = 200; the paper's has 228) under (D), (P), (T).
+#   fig7_9.sh [SET]     SET = table4 (default) or active, see irregular_case.sh
+# Fig. 7: -sigma~11, -sigma~22 (sigma~ = sigma Rbar / kn); Fig. 9: mean
+# overlap (eq. 39) and mean rotation (eq. 41); Fig. 8: VTK snapshots every 10
+# increments in out/paper/vtk/ (contact network: *_contacts_*.vtk, colour by
+# normal_force). About 10 min with table4.
+set -euo pipefail
+. "$(dirname "$0")/common.sh"
+set=${1:-table4}
+for bc in D P T; do bash "$top/inputs/paper/irregular_case.sh" "$bc" 200 "$set" > /dev/null; done
+out=$top/out/paper
+# Rbar = mean radius of all P + Q particles (Sect. 4.2.1), kn = 1e4 N/m
+rbar=$(awk '$1 != "box" && $1 !~ /^#/ { s += $3; n++ } END { printf "%.10g", s / n }' "$out/packing_200.txt")
+scale=$(awk -v r="$rbar" 'BEGIN { printf "%.10g", -r / 1e4 }')
+runs=()
+for bc in D P T; do runs+=("$out/irregular_${bc}_200_${set}.csv" "($bc)"); done
+"$plot" "$fig/fig7a_$set.svg" "Fig. 7a: simple shear, 232 particles" "F12" "-sigma~11" F12 1 sigma11 "$scale" "${runs[@]}"
+"$plot" "$fig/fig7b_$set.svg" "Fig. 7b: simple shear, 232 particles" "F12" "-sigma~22" F12 1 sigma22 "$scale" "${runs[@]}"
+"$plot" "$fig/fig9a_$set.svg" "Fig. 9a: mean normalized overlap (eq. 39)" "F12" "overlap" F12 1 overlap_mean 1 "${runs[@]}"
+"$plot" "$fig/fig9b_$set.svg" "Fig. 9b: mean rotation (eq. 41)" "F12" "rotation (rad)" F12 1 rotation_mean 1 "${runs[@]}"
+table_header
+for bc in D P T; do summary_row "($bc) $set" "$out/irregular_${bc}_200_${set}.csv"; done
+# path norm of eq. 42 (trapezoid over F12) for each BC
+for bc in D P T; do
+  awk -F, -v s="$scale" -v bc="$bc" 'NR > 1 { f = $3; a = ($10^2 + $11^2 + $12^2 + $13^2) * s * s
+      if (NR > 2) sum += 0.5 * (a + prev) * (f - fp); prev = a; fp = f }
+    END { printf "(%s) path norm of eq. 42: %.4g\n", bc, sqrt(sum) }' "$out/irregular_${bc}_200_${set}.csv"
+done
