@@ -206,11 +206,11 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         for (k = 0; k < q; ++k) {
             if (frame->side[k] != SBC_SIDE_CORNER && frame->partner[k] < 0 &&
                 (c->s.bc == SBC_BC_P || c->mode[2 * k] == SBC_MODE_P)) {
-                sbc_controller_free(c);
                 sbc_fail(err, SBC_ERR_FRAME,
                          "servo_bc %s: frame particle %d (packing index %d) has no periodic partner on the opposite "
                          "edge (opposite edges must hold equally many particles)",
                          sbc_bc_name(c->s.bc), (int)k, frame->particle[k]);
+                sbc_controller_free(c);
                 return NULL;
             }
         }
