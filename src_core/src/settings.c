@@ -227,6 +227,7 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
         } else if (strcmp(key, "file") == 0) {
             st = read_name(&c, "path", s->file);
         } else if (strcmp(key, "stress") == 0 || sbc_mixed_edge_index(key) >= 0) {
+            k = 0;
             if (s->bc != SBC_BC_MIXED)
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword '%s' needs boundary condition mixed (got %s)", key,
                               sbc_bc_name(s->bc));
