@@ -9,6 +9,9 @@ extern int check_passed, check_failed;
 extern const char *test_tmpdir;  /* scratch directory for files */
 extern const char *test_runner;  /* path of the servo-bc executable */
 
+/* 1 when a line of the file at path contains needle. */
+int file_contains(const char *path, const char *needle);
+
 #define CHECK(cond)                                                                          \
     do {                                                                                     \
         if (cond) {                                                                          \

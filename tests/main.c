@@ -5,11 +5,25 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/stat.h>
 
 int check_passed = 0, check_failed = 0;
 const char *test_tmpdir = "build/test-tmp";
 const char *test_runner = "build/servo-bc";
+
+int file_contains(const char *path, const char *needle)
+{
+    FILE *fp = fopen(path, "r");
+    char buf[512];
+    int found = 0;
+    if (!fp)
+        return 0;
+    while (!found && fgets(buf, sizeof buf, fp))
+        found = strstr(buf, needle) != NULL;
+    fclose(fp);
+    return found;
+}
 
 int main(int argc, char **argv)
 {
@@ -17,6 +31,7 @@ int main(int argc, char **argv)
         const char *name;
         void (*fn)(void);
     } suites[] = {{"frame", test_frame},     {"homogenize", test_homogenize}, {"contact", test_contact}, {"cohesive", test_cohesive},
+                  {"bonds", test_bonds}, {"bonds-runner", test_bonds_runner},
                   {"relax", test_relax},     {"lattice", test_lattice},       {"input", test_input},
                   {"outputs", test_outputs}, {"servo", test_servo}, {"restart", test_restart}, {"generate", test_generate}, {"mixed", test_mixed}};
     size_t k;

@@ -71,10 +71,19 @@ void test_cohesive(void)
     CHECK_REL(sbc_cohesive_criterion(&law, fn, &b), 100.0 / 300 + 8.0 / 60 + 0.02 / 0.2, 1e-14);
     /* eq. 12 with the rotational term */
     CHECK_REL(sbc_cohesive_energy(&law, -1e-6, &b), 0.5 * 1e8 * 1e-12 + 0.5 * 64 / 4e7 + 0.5 * 4e-4 / 20.0, 1e-14);
-    /* compression does not weaken the bond */
+    /* compression enters eq. 8 with its sign (tension positive): it lowers the criterion... */
     b.fs = b.m = 0.0;
     fn = sbc_cohesive_force(&law, 1e-4, 0.0, 0.0, &b, &broke);
-    CHECK(!b.broken && fn == 1e4 && sbc_cohesive_criterion(&law, fn, &b) == 0.0);
+    CHECK(!b.broken && fn == 1e4);
+    CHECK_REL(sbc_cohesive_criterion(&law, fn, &b), -1e4 / 300.0, 1e-14);
+    /* ...so that a bond compressed by 300 N holds a shear force of 2 fs_u = 120 N until just before 120 N */
+    {
+        sbc_bond c = {0.0, 0.0, 0};
+        sbc_cohesive_force(&law, 3e-6, 119.9 / 4e7, 0.0, &c, &broke);
+        CHECK(!c.broken && broke == 0);
+        sbc_cohesive_force(&law, 3e-6, 0.2 / 4e7, 0.0, &c, &broke);
+        CHECK(c.broken && broke == 1); /* -1 + 120.1/60 >= 1 */
+    }
     /* pure tension: intact just below f_u, broken exactly at it */
     b.fs = b.m = 0.0;
     sbc_cohesive_force(&law, -2.99e-6, 0.0, 0.0, &b, &broke);

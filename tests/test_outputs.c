@@ -10,18 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int file_contains(const char *path, const char *needle)
-{
-    FILE *fp = fopen(path, "r");
-    char buf[256];
-    int found = 0;
-    if (!fp)
-        return 0;
-    while (!found && fgets(buf, sizeof buf, fp))
-        found = strstr(buf, needle) != NULL;
-    fclose(fp);
-    return found;
-}
 
 void test_outputs(void)
 {

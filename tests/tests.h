@@ -4,6 +4,8 @@ void test_frame(void);
 void test_homogenize(void);
 void test_contact(void);
 void test_cohesive(void);
+void test_bonds(void);
+void test_bonds_runner(void);
 void test_relax(void);
 void test_lattice(void);
 void test_input(void);

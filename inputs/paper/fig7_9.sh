@@ -12,8 +12,7 @@ set=${1:-table4}
 for bc in D P T; do bash "$top/inputs/paper/irregular_case.sh" "$bc" 200 "$set" > /dev/null; done
 out=$top/out/paper
 # Rbar = mean radius of all P + Q particles (Sect. 4.2.1), kn = 1e4 N/m
-rbar=$(awk '$1 != "box" && $1 !~ /^#/ { s += $3; n++ } END { printf "%.10g", s / n }' "$out/packing_200.txt")
-scale=$(awk -v r="$rbar" 'BEGIN { printf "%.10g", -r / 1e4 }')
+scale=$(awk -v r="$(rbar "$out/packing_200.txt")" 'BEGIN { printf "%.10g", -r / 1e4 }')
 runs=()
 for bc in D P T; do runs+=("$out/irregular_${bc}_200_${set}.csv" "($bc)"); done
 "$plot" "$fig/fig7a_$set.svg" "Fig. 7a: simple shear, 232 particles" "F12" "-sigma~11" F12 1 sigma11 "$scale" "${runs[@]}"
@@ -24,7 +23,5 @@ table_header
 for bc in D P T; do summary_row "($bc) $set" "$out/irregular_${bc}_200_${set}.csv"; done
 # path norm of eq. 42 (trapezoid over F12) for each BC
 for bc in D P T; do
-  awk -F, -v s="$scale" -v bc="$bc" 'NR > 1 { f = $3; a = ($10^2 + $11^2 + $12^2 + $13^2) * s * s
-      if (NR > 2) sum += 0.5 * (a + prev) * (f - fp); prev = a; fp = f }
-    END { printf "(%s) path norm of eq. 42: %.4g\n", bc, sqrt(sum) }' "$out/irregular_${bc}_200_${set}.csv"
+  echo "($bc) path norm of eq. 42: $(path_norm "$out/irregular_${bc}_200_${set}.csv" "$scale")"
 done

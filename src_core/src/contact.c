@@ -28,7 +28,7 @@ double sbc_cohesive_criterion(const sbc_cohesive *law, double fn, const sbc_bond
 {
     if (b->broken)
         return 0.0;
-    return (fn < 0.0 ? -fn : 0.0) / law->fn_u + fabs(b->fs) / law->fs_u + fabs(b->m) / law->m_u; /* eq. 8 */
+    return -fn / law->fn_u + fabs(b->fs) / law->fs_u + fabs(b->m) / law->m_u; /* eq. 8, tension positive */
 }
 
 /* the frictional law of eq. 6 that a broken bond follows */

@@ -21,6 +21,9 @@ struct sbc_engine {
     double rmax, rmin;
     sbc_frictional law;
     int history;
+    int bonded;              /* the scene has cohesive bonds */
+    sbc_cohesive bond_law;   /* eqs. 7-8 */
+    int bond_count, bonds_initial;
     double dt, alpha, beta;
     sbc_pairs pairs;
     int stale; /* the pair list must be rebuilt before the next force evaluation */
@@ -60,6 +63,7 @@ sbc_engine *sbc_engine_create(const sbc_engine_def *d, sbc_error *err)
 {
     sbc_engine *e;
     size_t n = (size_t)d->n;
+    double skin;
     int k;
     if (d->n < 1) {
         sbc_fail(err, SBC_ERR_INPUT, "engine: no particles");
@@ -111,15 +115,37 @@ sbc_engine *sbc_engine_create(const sbc_engine_def *d, sbc_error *err)
         if (R < e->rmin) e->rmin = R;
     }
     e->law = d->law;
-    e->history = sbc_frictional_has_history(&d->law);
+    skin = d->skin > 0.0 ? d->skin : 0.25 * e->rmin;
+    if (d->bonds) {
+        const sbc_cohesive *b = d->bonds;
+        if (!(b->kn > 0.0) || !(b->ks >= 0.0) || !(b->kr >= 0.0) || !(b->mu >= 0.0) || !(b->fn_u > 0.0) ||
+            !(b->fs_u > 0.0) || !(b->m_u > 0.0) || !isfinite(b->fn_u / b->kn)) {
+            sbc_fail(err, SBC_ERR_INPUT,
+                     "engine: bond law needs kn, fn_u, fs_u, m_u > 0 and finite, ks, kr, mu >= 0");
+            sbc_engine_free(e);
+            return NULL;
+        }
+        e->bonded = 1;
+        e->bond_law = *b;
+        e->law.kn = b->kn; /* broken bonds and new contacts: eq. 6 with the bond's kn, ks, mu */
+        e->law.ks = b->ks;
+        e->law.mu = b->mu;
+        /* an intact bond stretches less than fn_u / kn (eq. 8, first term alone): a skin
+         * beyond that keeps every intact bond in the neighbour list */
+        if (skin < 1.5 * b->fn_u / b->kn)
+            skin = 1.5 * b->fn_u / b->kn;
+    }
+    e->history = sbc_frictional_has_history(&e->law) || e->bonded;
     e->dt = d->dt;
     e->alpha = d->alpha;
     e->beta = d->beta;
-    if (sbc_pairs_init(&e->pairs, d->n, d->skin > 0.0 ? d->skin : 0.25 * e->rmin, e->history, err) != SBC_OK ||
+    if (sbc_pairs_init(&e->pairs, d->n, skin, e->history, e->bonded, err) != SBC_OK ||
         sbc_pairs_build(&e->pairs, e->x, e->r, e->rmax, err) != SBC_OK) {
         sbc_engine_free(e);
         return NULL;
     }
+    if (e->bonded) /* "two particles in contact at the start are bonded" (Sect. 2.2.2) */
+        e->bond_count = e->bonds_initial = sbc_pairs_bond_touching(&e->pairs, e->x, e->r, 1e-6 * e->rmin);
     return e;
 }
 
@@ -149,18 +175,21 @@ void sbc_engine_set_frame(sbc_engine *e, const sbc_frame *frame)
  * the library free of global floating-point state (no FTZ/DAZ flags). */
 static inline double flush(double a) { return fabs(a) < 1e-120 ? 0.0 : a; }
 
-/* Pair loop: eq. 6 forces and moments, eq. 12 energy, eq. 39 overlap sum.
- * HISTORY is a compile-time constant in each instance, so that frictionless
- * scenes run without the tangential spring. */
-static inline void pair_loop(sbc_engine *e, const int history)
+/* Pair loop: eq. 6 forces and moments (eqs. 7-8 for intact bonds), eq. 12
+ * energy, eq. 39 overlap sum. HISTORY and BONDS are compile-time constants
+ * in each instance, so that frictionless scenes run without the tangential
+ * spring and unbonded scenes without the bond test. */
+static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
 {
     const sbc_frictional law = e->law;
     const double dt = e->dt, kn = law.kn, inv_ks = law.ks > 0.0 ? 1.0 / law.ks : 0.0;
     const double *restrict x = e->x, *restrict v = e->v, *restrict om = e->omega, *restrict r = e->r;
     const int *restrict start = e->pairs.start, *restrict pj = e->pairs.j;
-    double *restrict f = e->f, *restrict tq = e->tq, *restrict fsv = e->pairs.fs;
+    double *restrict f = e->f, *restrict tq = e->tq, *restrict fsv = e->pairs.fs, *restrict mv = e->pairs.m;
+    unsigned char *restrict bond = e->pairs.bond;
     double ep = 0.0, ov = 0.0;
     long nc = 0;
+    int broken = 0;
     int i, k, n = e->n;
     for (i = 0; i < n; ++i) {
         /* pairs (i, j > i) are contiguous: particle i's sums stay in registers */
@@ -173,7 +202,8 @@ static inline void pair_loop(sbc_engine *e, const int history)
             const double dx = x[2 * j] - xi, dy = x[2 * j + 1] - yi;
             const double rs = ri + r[j], d2 = dx * dx + dy * dy;
             double d, inv_d, nx, ny, dn, fn, fs = 0.0, fx, fy;
-            if (d2 >= rs * rs) {
+            const int bonded = bonds && bond[k];
+            if (!bonded && d2 >= rs * rs) {
                 if (history)
                     fsv[k] = 0.0; /* contact lost: history cleared */
                 continue;
@@ -184,7 +214,27 @@ static inline void pair_loop(sbc_engine *e, const int history)
             ny = dy * inv_d;
             dn = rs - d;
             fn = kn * dn;
-            if (history) {
+            if (bonded) {
+                /* eqs. 7-8: dus as below, dtheta = (w_j - w_i) dt; moment +m on i, -m on j */
+                const double dus =
+                    ((v[2 * j + 1] - vyi) * nx - (v[2 * j] - vxi) * ny - (wri + r[j] * om[j])) * dt;
+                sbc_bond b;
+                int broke;
+                b.fs = fsv[k];
+                b.m = mv[k];
+                b.broken = 0;
+                fn = sbc_cohesive_force(&e->bond_law, dn, dus, (om[j] - om[i]) * dt, &b, &broke);
+                fs = flush(b.fs);
+                fsv[k] = fs;
+                mv[k] = b.m;
+                if (broke) {
+                    bond[k] = 0;
+                    ++broken;
+                }
+                tqi += ri * fs + b.m;
+                tq[j] += r[j] * fs - b.m;
+                ep += sbc_cohesive_energy(&e->bond_law, dn, &b) - 0.5 * fn * dn; /* normal part added below */
+            } else if (history) {
                 /* t = (-ny, nx); dus = ((v_j - v_i).t - (R_i w_i + R_j w_j)) dt; eq. 6 */
                 const double dus =
                     ((v[2 * j + 1] - vyi) * nx - (v[2 * j] - vxi) * ny - (wri + r[j] * om[j])) * dt;
@@ -214,6 +264,7 @@ static inline void pair_loop(sbc_engine *e, const int history)
     e->ep = ep;
     e->overlap_sum = 2.0 * ov;
     e->contact_count = nc;
+    e->bond_count -= broken;
 }
 
 /* Explicit first-order update of eq. 9 with the local damping of eq. 10:
@@ -275,10 +326,12 @@ sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err)
     e->stale = 0;
     memset(e->f, 0, sizeof(double) * 2 * (size_t)e->n);
     memset(e->tq, 0, sizeof(double) * (size_t)e->n);
-    if (e->history)
-        pair_loop(e, 1);
+    if (e->bonded)
+        pair_loop(e, 1, 1);
+    else if (e->history)
+        pair_loop(e, 1, 0);
     else
-        pair_loop(e, 0);
+        pair_loop(e, 0, 0);
     if (e->alpha > 0.0 || e->beta > 0.0)
         integrate_interior(e, 1);
     else
@@ -369,6 +422,9 @@ sbc_engine_view sbc_engine_get_view(const sbc_engine *e)
     w.pair_count = e->pairs.count;
     w.pair_i = e->pairs.i;
     w.pair_j = e->pairs.j;
+    w.pair_bond = e->pairs.bond;
+    w.bond_count = e->bond_count;
+    w.bonds_initial = e->bonds_initial;
     w.law = e->law;
     w.step = e->step;
     w.time = (double)e->step * e->dt;
@@ -385,8 +441,14 @@ void sbc_engine_frame_masses(const sbc_engine *e, double *mass)
 double sbc_engine_critical_dt(const sbc_engine *e)
 {
     double mmin = DBL_MAX;
+    double dtc, imin = DBL_MAX;
     int k;
-    for (k = 0; k < e->n; ++k)
+    for (k = 0; k < e->n; ++k) {
         if (e->mass[k] < mmin) mmin = e->mass[k];
-    return 2.0 * sqrt(mmin / (2.0 * e->law.kn));
+        if (1.0 / e->inv_I[k] < imin) imin = 1.0 / e->inv_I[k];
+    }
+    dtc = 2.0 * sqrt(mmin / (2.0 * e->law.kn));
+    if (e->bonded && e->bond_law.kr > 0.0 && 2.0 * sqrt(imin / (2.0 * e->bond_law.kr)) < dtc)
+        dtc = 2.0 * sqrt(imin / (2.0 * e->bond_law.kr));
+    return dtc;
 }

@@ -6,20 +6,24 @@
 #include <stdlib.h>
 #include <string.h>
 
-sbc_status sbc_pairs_init(sbc_pairs *p, int n, double skin, int history, sbc_error *err)
+sbc_status sbc_pairs_init(sbc_pairs *p, int n, double skin, int history, int bonds, sbc_error *err)
 {
     memset(p, 0, sizeof *p);
     p->n = n;
     p->skin = skin;
     p->capacity = 4 * n + 16;
+    history = history || bonds;
     p->start = calloc((size_t)n + 1, sizeof(int));
     p->i = malloc(sizeof(int) * (size_t)p->capacity);
     p->j = malloc(sizeof(int) * (size_t)p->capacity);
     p->fs = history ? calloc((size_t)p->capacity, sizeof(double)) : NULL;
+    p->m = bonds ? calloc((size_t)p->capacity, sizeof(double)) : NULL;
+    p->bond = bonds ? calloc((size_t)p->capacity, 1) : NULL;
     p->cell_of = malloc(sizeof(int) * (size_t)n);
     p->cell_order = malloc(sizeof(int) * (size_t)n);
     p->x_build = malloc(sizeof(double) * 2 * (size_t)n);
-    if (!p->start || !p->i || !p->j || (history && !p->fs) || !p->cell_of || !p->cell_order || !p->x_build) {
+    if (!p->start || !p->i || !p->j || (history && !p->fs) || (bonds && (!p->m || !p->bond)) || !p->cell_of ||
+        !p->cell_order || !p->x_build) {
         sbc_pairs_free(p);
         return sbc_fail(err, SBC_ERR_NOMEM, "neighbour list: out of memory for %d particles", n);
     }
@@ -32,6 +36,8 @@ void sbc_pairs_free(sbc_pairs *p)
     free(p->i);
     free(p->j);
     free(p->fs);
+    free(p->m);
+    free(p->bond);
     free(p->cell_of);
     free(p->cell_start);
     free(p->cell_cursor);
@@ -40,33 +46,46 @@ void sbc_pairs_free(sbc_pairs *p)
     memset(p, 0, sizeof *p);
 }
 
-static int grow(sbc_pairs *p, int need, int **ni, int **nj, double **nfs)
+/* The new list under construction. */
+typedef struct new_list {
+    int *i, *j, *start;
+    double *fs, *m;
+    unsigned char *bond;
+} new_list;
+
+static int resize(void **a, size_t size)
 {
-    int cap = p->capacity;
-    while (cap < need)
-        cap *= 2;
-    if (cap == p->capacity)
+    void *b;
+    if (!*a)
         return 1;
-    {
-        int *a = realloc(*ni, sizeof(int) * (size_t)cap);
-        int *b;
-        double *c = NULL;
-        if (!a)
-            return 0;
-        *ni = a;
-        b = realloc(*nj, sizeof(int) * (size_t)cap);
-        if (!b)
-            return 0;
-        *nj = b;
-        if (nfs && *nfs) {
-            c = realloc(*nfs, sizeof(double) * (size_t)cap);
-            if (!c)
-                return 0;
-            *nfs = c;
-        }
-    }
-    p->capacity = cap;
+    b = realloc(*a, size);
+    if (!b)
+        return 0;
+    *a = b;
     return 1;
+}
+
+static int grow(sbc_pairs *p, int need, new_list *q)
+{
+    size_t cap = (size_t)p->capacity;
+    while (cap < (size_t)need)
+        cap *= 2;
+    if (!resize((void **)&q->i, sizeof(int) * cap) || !resize((void **)&q->j, sizeof(int) * cap) ||
+        !resize((void **)&q->fs, sizeof(double) * cap) || !resize((void **)&q->m, sizeof(double) * cap) ||
+        !resize((void **)&q->bond, cap))
+        return 0;
+    p->capacity = (int)cap;
+    return 1;
+}
+
+static void new_list_free(new_list *q)
+{
+    free(q->i);
+    free(q->j);
+    free(q->start);
+    free(q->fs);
+    free(q->m);
+    free(q->bond);
 }
 
 sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, double rmax, sbc_error *err)
@@ -74,8 +93,7 @@ sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, doubl
     double lo[2] = {DBL_MAX, DBL_MAX}, hi[2] = {-DBL_MAX, -DBL_MAX}, h, cut_extra = p->skin;
     long ncx, ncy, ncell;
     int n = p->n, k, count = 0;
-    int *ni = NULL, *nj = NULL, *nstart = NULL;
-    double *nfs = NULL;
+    new_list q;
 
     for (k = 0; k < n; ++k) {
         if (x[2 * k] < lo[0]) lo[0] = x[2 * k];
@@ -118,18 +136,20 @@ sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, doubl
     for (k = 0; k < n; ++k)
         p->cell_order[p->cell_cursor[p->cell_of[k]]++] = k;
 
-    ni = malloc(sizeof(int) * (size_t)p->capacity);
-    nj = malloc(sizeof(int) * (size_t)p->capacity);
-    nstart = malloc(sizeof(int) * ((size_t)n + 1));
-    if (p->fs)
-        nfs = malloc(sizeof(double) * (size_t)p->capacity);
-    if (!ni || !nj || !nstart || (p->fs && !nfs))
+    memset(&q, 0, sizeof q);
+    q.i = malloc(sizeof(int) * (size_t)p->capacity);
+    q.j = malloc(sizeof(int) * (size_t)p->capacity);
+    q.start = malloc(sizeof(int) * ((size_t)n + 1));
+    q.fs = p->fs ? malloc(sizeof(double) * (size_t)p->capacity) : NULL;
+    q.m = p->m ? malloc(sizeof(double) * (size_t)p->capacity) : NULL;
+    q.bond = p->bond ? malloc((size_t)p->capacity) : NULL;
+    if (!q.i || !q.j || !q.start || (p->fs && !q.fs) || (p->m && !q.m) || (p->bond && !q.bond))
         goto nomem;
 
     for (k = 0; k < n; ++k) {
         long cx = p->cell_of[k] % ncx, cy = p->cell_of[k] / ncx, ax, ay;
         int first = count, m;
-        nstart[k] = count;
+        q.start[k] = count;
         for (ay = cy - 1; ay <= cy + 1; ++ay) {
             if (ay < 0 || ay >= ncy) continue;
             for (ax = cx - 1; ax <= cx + 1; ++ax) {
@@ -145,32 +165,50 @@ sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, doubl
                     dy = x[2 * j + 1] - x[2 * k + 1];
                     cut = r[k] + r[j] + cut_extra;
                     if (dx * dx + dy * dy >= cut * cut) continue;
-                    if (count >= p->capacity && !grow(p, count + 1, &ni, &nj, &nfs))
+                    if (count >= p->capacity && !grow(p, count + 1, &q))
                         goto nomem;
-                    ni[count] = k;
-                    nj[count++] = j;
+                    q.i[count] = k;
+                    q.j[count++] = j;
                 }
             }
         }
         /* insertion sort of k's partners by j (few per particle) */
         for (m = first + 1; m < count; ++m) {
-            int v = nj[m], t = m;
-            while (t > first && nj[t - 1] > v) {
-                nj[t] = nj[t - 1];
+            int v = q.j[m], t = m;
+            while (t > first && q.j[t - 1] > v) {
+                q.j[t] = q.j[t - 1];
                 --t;
             }
-            nj[t] = v;
+            q.j[t] = v;
         }
     }
-    nstart[n] = count;
+    q.start[n] = count;
 
-    if (nfs) { /* carry the tangential history over by merging old and new lists of each i */
+    if (q.fs) { /* carry history and bonds over by merging the old and new lists of each i */
         for (k = 0; k < n; ++k) {
             int a = p->start[k], ae = p->start[k + 1], b;
-            for (b = nstart[k]; b < nstart[k + 1]; ++b) {
-                while (a < ae && p->j[a] < nj[b]) ++a;
-                nfs[b] = (a < ae && p->j[a] == nj[b]) ? p->fs[a] : 0.0;
+            for (b = q.start[k]; b < q.start[k + 1]; ++b) {
+                for (; a < ae && p->j[a] < q.j[b]; ++a)
+                    if (p->bond && p->bond[a])
+                        goto dropped_bond;
+                if (a < ae && p->j[a] == q.j[b]) {
+                    q.fs[b] = p->fs[a];
+                    if (q.m) {
+                        q.m[b] = p->m[a];
+                        q.bond[b] = p->bond[a];
+                    }
+                    ++a;
+                } else {
+                    q.fs[b] = 0.0;
+                    if (q.m) {
+                        q.m[b] = 0.0;
+                        q.bond[b] = 0;
+                    }
+                }
             }
+            for (; a < ae; ++a)
+                if (p->bond && p->bond[a])
+                    goto dropped_bond;
         }
     }
     /* the arrays may have grown: p->capacity is the new size */
@@ -178,17 +216,39 @@ sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, doubl
     free(p->j);
     free(p->start);
     free(p->fs);
-    p->i = ni;
-    p->j = nj;
-    p->start = nstart;
-    p->fs = nfs;
+    free(p->m);
+    free(p->bond);
+    p->i = q.i;
+    p->j = q.j;
+    p->start = q.start;
+    p->fs = q.fs;
+    p->m = q.m;
+    p->bond = q.bond;
     p->count = count;
     memcpy(p->x_build, x, sizeof(double) * 2 * (size_t)n);
     return SBC_OK;
+dropped_bond:
+    new_list_free(&q);
+    return sbc_fail(err, SBC_ERR_GEOMETRY,
+                    "neighbour list: an intact bond stretched beyond the skin of %g m (the engine's skin must exceed "
+                    "the bond's failure stretch fn_u / kn)",
+                    p->skin);
 nomem:
-    free(ni);
-    free(nj);
-    free(nstart);
-    free(nfs);
+    new_list_free(&q);
     return sbc_fail(err, SBC_ERR_NOMEM, "neighbour list: out of memory for %d pairs", count);
+}
+
+int sbc_pairs_bond_touching(sbc_pairs *p, const double *x, const double *r, double gap)
+{
+    int k, bonds = 0;
+    for (k = 0; p->bond && k < p->count; ++k) {
+        int i = p->i[k], j = p->j[k];
+        double dx = x[2 * j] - x[2 * i], dy = x[2 * j + 1] - x[2 * i + 1];
+        double d = sqrt(dx * dx + dy * dy);
+        p->bond[k] = d - r[i] - r[j] < gap;
+        p->m[k] = 0.0;
+        p->fs[k] = 0.0;
+        bonds += p->bond[k];
+    }
+    return bonds;
 }

@@ -1,4 +1,5 @@
-/* Private: cell-binned Verlet pair list with per-pair tangential history.
+/* Private: cell-binned Verlet pair list with per-pair tangential history and,
+ * for cohesive scenes, per-pair bond state.
  * Pairs (i < j) are stored by i (CSR) and sorted by j within i, so that the
  * history of surviving pairs is carried over at a rebuild by a merge: O(N). */
 #ifndef SBC_NEIGHBOR_H
@@ -13,17 +14,25 @@ typedef struct sbc_pairs {
     int *start;     /* [n+1] pairs of particle i are start[i] .. start[i+1]-1 */
     int *i, *j;     /* [capacity] */
     double *fs;     /* [capacity] tangential spring force, N; NULL without history */
+    double *m;      /* [capacity] bond moment on i, N m; NULL without bonds */
+    unsigned char *bond; /* [capacity] 1 while the pair's bond is intact; NULL without bonds */
     /* cell grid scratch */
     int *cell_of, *cell_start, *cell_cursor, *cell_order, cell_capacity;
     double *x_build; /* [2n] positions at the last build, m */
     double skin;     /* m */
 } sbc_pairs;
 
-sbc_status sbc_pairs_init(sbc_pairs *p, int n, double skin, int history, sbc_error *err);
+/* history: keep fs per pair; bonds: keep m and bond per pair (implies history). */
+sbc_status sbc_pairs_init(sbc_pairs *p, int n, double skin, int history, int bonds, sbc_error *err);
 void sbc_pairs_free(sbc_pairs *p);
 
 /* Rebuilds the list for positions x [2n] and radii r [n], keeping the
- * tangential history of pairs present before and after. */
+ * tangential history and bond state of pairs present before and after. An
+ * intact bond is never dropped as long as its stretch stays below the skin. */
 sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, double rmax, sbc_error *err);
+
+/* Bonds every listed pair whose gap |x_j - x_i| - R_i - R_j is below gap (m);
+ * returns the number of bonds. */
+int sbc_pairs_bond_touching(sbc_pairs *p, const double *x, const double *r, double gap);
 
 #endif

@@ -5,6 +5,7 @@
 #include "sbc/engine.h"
 #include "sbc/frame.h"
 #include "sbc/homogenize.h"
+#include "sbc/network.h"
 #include "sbc/packing.h"
 #include "sbc/plot.h"
 #include "sbc/results.h"
@@ -78,37 +79,86 @@ static sbc_status cmd_lattice(script *s, int nw, char **w, sbc_error *err)
     return st;
 }
 
+/* A keyword KEY followed by a real >= 0 (or > 0 when positive) at w[k], w[k + 1]. */
+static sbc_status keyed_real(char **w, int k, const char *key, int positive, const char *usage, double *out,
+                             sbc_error *err)
+{
+    sbc_status st = sbc_script_expect_key("contact", w[k], key, usage, err);
+    if (st != SBC_OK) return st;
+    if (positive) return sbc_script_positive("contact", key, w[k + 1], out, err);
+    if (sbc_parse_real(w[k + 1], key, out, NULL) != SBC_OK || !(*out >= 0.0))
+        return sbc_fail(err, SBC_ERR_INPUT, "contact: %s '%s' is not valid (expected a real >= 0)", key, w[k + 1]);
+    return SBC_OK;
+}
+
+/* contact frictional kn KN ks KS mu MU                                  (eq. 6)
+ * contact cohesive kn KN ks KS kr KR fn FN fs FS mr MR mu MU          (eqs. 7-8) */
 static sbc_status cmd_contact(script *s, int nw, char **w, sbc_error *err)
 {
-    static const char usage[] = "contact frictional kn KN ks KS mu MU";
-    sbc_status st = sbc_script_expect_count(nw, w, 8, usage, err);
-    if (st != SBC_OK) return st;
-    if (strcmp(w[1], "frictional") != 0)
-        return sbc_fail(err, SBC_ERR_INPUT, "contact: law '%s' is not known (expected 'frictional')", w[1]);
-    if ((st = sbc_script_expect_key("contact", w[2], "kn", usage, err)) != SBC_OK) return st;
-    if ((st = sbc_script_positive("contact", "kn", w[3], &s->law.kn, err)) != SBC_OK) return st;
-    if ((st = sbc_script_expect_key("contact", w[4], "ks", usage, err)) != SBC_OK) return st;
-    if (sbc_parse_real(w[5], "ks", &s->law.ks, NULL) != SBC_OK || s->law.ks < 0.0)
-        return sbc_fail(err, SBC_ERR_INPUT, "contact: ks '%s' is not valid (expected a real >= 0)", w[5]);
-    if ((st = sbc_script_expect_key("contact", w[6], "mu", usage, err)) != SBC_OK) return st;
-    if (sbc_parse_real(w[7], "mu", &s->law.mu, NULL) != SBC_OK || s->law.mu < 0.0)
-        return sbc_fail(err, SBC_ERR_INPUT, "contact: mu '%s' is not valid (expected a real >= 0)", w[7]);
+    static const char usage_f[] = "contact frictional kn KN ks KS mu MU";
+    static const char usage_c[] = "contact cohesive kn KN ks KS kr KR fn FN fs FS mr MR mu MU";
+    sbc_cohesive c;
+    sbc_status st;
+    if (nw >= 2 && strcmp(w[1], "frictional") == 0) {
+        if ((st = sbc_script_expect_count(nw, w, 8, usage_f, err)) != SBC_OK) return st;
+        if ((st = keyed_real(w, 2, "kn", 1, usage_f, &s->law.kn, err)) != SBC_OK) return st;
+        if ((st = keyed_real(w, 4, "ks", 0, usage_f, &s->law.ks, err)) != SBC_OK) return st;
+        if ((st = keyed_real(w, 6, "mu", 0, usage_f, &s->law.mu, err)) != SBC_OK) return st;
+        s->cohesive = 0;
+        s->have_contact = 1;
+        return SBC_OK;
+    }
+    if (nw < 2 || strcmp(w[1], "cohesive") != 0)
+        return sbc_fail(err, SBC_ERR_INPUT, "contact: law '%s' is not known (expected 'frictional' or 'cohesive')",
+                        nw >= 2 ? w[1] : "");
+    if ((st = sbc_script_expect_count(nw, w, 16, usage_c, err)) != SBC_OK) return st;
+    if ((st = keyed_real(w, 2, "kn", 1, usage_c, &c.kn, err)) != SBC_OK) return st;
+    if ((st = keyed_real(w, 4, "ks", 0, usage_c, &c.ks, err)) != SBC_OK) return st;
+    if ((st = keyed_real(w, 6, "kr", 0, usage_c, &c.kr, err)) != SBC_OK) return st;
+    if ((st = keyed_real(w, 8, "fn", 1, usage_c, &c.fn_u, err)) != SBC_OK) return st;
+    if ((st = keyed_real(w, 10, "fs", 1, usage_c, &c.fs_u, err)) != SBC_OK) return st;
+    if ((st = keyed_real(w, 12, "mr", 1, usage_c, &c.m_u, err)) != SBC_OK) return st;
+    if ((st = keyed_real(w, 14, "mu", 0, usage_c, &c.mu, err)) != SBC_OK) return st;
+    s->bond_law = c;
+    s->law.kn = c.kn; /* broken bonds and new contacts follow eq. 6 with these */
+    s->law.ks = c.ks;
+    s->law.mu = c.mu;
+    s->cohesive = 1;
     s->have_contact = 1;
     return SBC_OK;
 }
 
-static sbc_status cmd_vtk(script *s, int nw, char **w, sbc_error *err)
+/* vtk EVERY PREFIX | network EVERY PREFIX: snapshots every EVERY increments and at the last. */
+static sbc_status cmd_snapshots(int nw, char **w, int *every_out, char *prefix, sbc_error *err)
 {
+    char usage[32];
     long every;
-    sbc_status st = sbc_script_expect_count(nw, w, 3, "vtk EVERY PREFIX", err);
-    if (st != SBC_OK) return st;
+    sbc_status st;
+    snprintf(usage, sizeof usage, "%s EVERY PREFIX", w[0]);
+    if ((st = sbc_script_expect_count(nw, w, 3, usage, err)) != SBC_OK) return st;
     if (sbc_parse_int(w[1], "EVERY", 1, 100000000L, &every, NULL) != SBC_OK)
-        return sbc_fail(err, SBC_ERR_INPUT, "vtk: EVERY '%s' is not valid (expected an integer >= 1)", w[1]);
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: EVERY '%s' is not valid (expected an integer >= 1)", w[0], w[1]);
     if (strlen(w[2]) >= SBC_NAME_LEN)
-        return sbc_fail(err, SBC_ERR_INPUT, "vtk: PREFIX is too long");
-    s->vtk_every = (int)every;
-    strcpy(s->vtk_prefix, w[2]);
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: PREFIX is too long (at most %d characters)", w[0], SBC_NAME_LEN - 1);
+    *every_out = (int)every;
+    strcpy(prefix, w[2]);
     return SBC_OK;
+}
+
+/* the snapshots due at a converged increment */
+static sbc_status write_snapshots(const script *s, const sbc_engine *engine, int increment, int last, sbc_error *err)
+{
+    sbc_engine_view view = sbc_engine_get_view(engine);
+    sbc_status st = SBC_OK;
+    if (s->vtk_every && (increment % s->vtk_every == 0 || last))
+        st = sbc_vtk_write(s->vtk_prefix, increment, &view, err);
+    if (st == SBC_OK && s->network_every && (increment % s->network_every == 0 || last)) {
+        char path[SBC_NAME_LEN + 32], title[96];
+        snprintf(path, sizeof path, "%s_%06d.svg", s->network_prefix, increment);
+        snprintf(title, sizeof title, "contact network, increment %d", increment);
+        st = sbc_network_svg(path, title, &view, err);
+    }
+    return st;
 }
 
 /* Everything `run` needs, freed in one place. */
@@ -226,6 +276,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     def.r = s->packing.r;
     def.density = s->density;
     def.law = s->law;
+    def.bonds = s->cohesive ? &s->bond_law : NULL;
     def.dt = s->dt;
     def.alpha = s->settings.damping ? s->settings.alpha : 0.0;
     def.beta = s->settings.damping ? s->settings.beta : 0.0;
@@ -236,8 +287,8 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     dtc = sbc_engine_critical_dt(r.engine);
     if (s->dt > dtc) {
         run_free(&r);
-        return sbc_fail(err, SBC_ERR_INPUT, "timestep %g s exceeds the critical step %g s = 2 sqrt(M_min / (2 kn))",
-                        s->dt, dtc);
+        return sbc_fail(err, SBC_ERR_INPUT, "timestep %g s exceeds the critical step %g s = 2 sqrt(M_min / (2 kn))%s",
+                        s->dt, dtc, s->cohesive ? " or 2 sqrt(I_min / (2 kr))" : "");
     }
     sbc_engine_set_frame(r.engine, &r.frame);
     r.mass = malloc(sizeof(double) * (size_t)r.frame.n);
@@ -266,6 +317,9 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     if (s->log)
         fprintf(s->log, "servo_bc %s: %d particles, frame of %d, %d increments, dt = %g s (critical %g s)\n",
                 sbc_bc_name(s->settings.bc), s->packing.n, r.frame.n, sbc_settings_total_increments(&s->settings), s->dt, dtc);
+    if (s->log && s->cohesive)
+        fprintf(s->log, "servo_bc: %d cohesive bonds between the pairs touching at the start\n",
+                sbc_engine_get_view(r.engine).bonds_initial);
     for (;;) {
         sbc_commands cmd;
         sbc_event ev = sbc_controller_step(r.ctl, &snap, err);
@@ -277,14 +331,13 @@ static sbc_status cmd_run(script *s, sbc_error *err)
             const sbc_result *row = sbc_controller_result(r.ctl);
             if ((st = keep_row(&r, row, err)) != SBC_OK) break;
             if (r.csv && (st = sbc_csv_write(r.csv, row, err)) != SBC_OK) break;
-            if (s->vtk_every && (row->increment % s->vtk_every == 0 || ev == SBC_EVENT_FINISHED)) {
-                sbc_engine_view view = sbc_engine_get_view(r.engine);
-                if ((st = sbc_vtk_write(s->vtk_prefix, row->increment, &view, err)) != SBC_OK) break;
-            }
+            if ((st = write_snapshots(s, r.engine, row->increment, ev == SBC_EVENT_FINISHED, err)) != SBC_OK) break;
             if (s->log)
                 fprintf(s->log, "increment %d/%d  F12 %+.5f  sigma11 %+.6e  sigma12 %+.6e N/m  steps %ld  HM %.1e\n",
                         row->increment, sbc_settings_total_increments(&s->settings), row->F[1], row->sigma[0], row->sigma[1],
                         row->relax_steps, row->hill_mandel);
+            if (s->log && s->cohesive)
+                fprintf(s->log, "  bonds intact %d\n", sbc_engine_get_view(r.engine).bond_count);
             if (ev == SBC_EVENT_FINISHED) break;
         }
         cmd = sbc_controller_commands(r.ctl);
@@ -316,6 +369,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
                 (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
         if (s->settings.file[0]) fprintf(s->log, "  results: %s\n", s->settings.file);
         if (s->vtk_every) fprintf(s->log, "  vtk:     %s_particles_*.vtk, %s_contacts_*.vtk\n", s->vtk_prefix, s->vtk_prefix);
+        if (s->network_every) fprintf(s->log, "  network: %s_*.svg\n", s->network_prefix);
         if (s->plot[0]) fprintf(s->log, "  plot:    %s\n", s->plot);
     }
     run_free(&r);
@@ -367,7 +421,8 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
         s->servo_line = s->line;
         return SBC_OK;
     }
-    if (strcmp(c, "vtk") == 0) return cmd_vtk(s, nw, w, err);
+    if (strcmp(c, "vtk") == 0) return cmd_snapshots(nw, w, &s->vtk_every, s->vtk_prefix, err);
+    if (strcmp(c, "network") == 0) return cmd_snapshots(nw, w, &s->network_every, s->network_prefix, err);
     if (strcmp(c, "plot") == 0) {
         if ((st = sbc_script_expect_count(nw, w, 2, "plot FILE.svg", err)) != SBC_OK) return st;
         if (strlen(w[1]) >= SBC_NAME_LEN) return sbc_fail(err, SBC_ERR_INPUT, "plot: file name is too long");
@@ -380,7 +435,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
     }
     return sbc_fail(err, SBC_ERR_INPUT,
                     "unknown command '%s' (expected dimension, lattice, read_packing, generate, write_packing, rose, "
-                    "contact, density, timestep, servo_bc, vtk, plot or run)",
+                    "contact, density, timestep, servo_bc, vtk, network, plot or run)",
                     c);
 }
 

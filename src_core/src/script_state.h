@@ -18,11 +18,15 @@ typedef struct script {
     sbc_packing packing;
     int have_packing, have_contact, have_density, have_dt, have_servo;
     sbc_frictional law;
+    int cohesive;          /* 'contact cohesive': bonds between the pairs touching at the start */
+    sbc_cohesive bond_law; /* eqs. 7-8 */
     double density, dt;
     sbc_settings settings;
     int servo_line;
     int vtk_every;
     char vtk_prefix[SBC_NAME_LEN];
+    int network_every;
+    char network_prefix[SBC_NAME_LEN];
     char plot[SBC_NAME_LEN];
 } script;
 

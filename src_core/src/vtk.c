@@ -14,11 +14,17 @@ static FILE *open_file(const char *prefix, const char *what, int increment, char
     return fp;
 }
 
-static double overlap(const sbc_engine_view *w, int i, int j)
+static double overlap(const sbc_engine_view *w, int k)
 {
+    int i = w->pair_i[k], j = w->pair_j[k];
     double dx = w->x[2 * j] - w->x[2 * i], dy = w->x[2 * j + 1] - w->x[2 * i + 1];
     return w->r[i] + w->r[j] - sqrt(dx * dx + dy * dy);
 }
+
+static int bonded(const sbc_engine_view *w, int k) { return w->pair_bond && w->pair_bond[k]; }
+
+/* a pair carries force when it overlaps or holds an intact bond (which may be in tension) */
+static int carries(const sbc_engine_view *w, int k) { return overlap(w, k) > 0.0 || bonded(w, k); }
 
 sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_view *w, sbc_error *err)
 {
@@ -53,7 +59,7 @@ sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_vie
         return sbc_fail(err, SBC_ERR_IO, "vtk: write to '%s' failed", name);
 
     for (k = 0; k < w->pair_count; ++k)
-        nc += overlap(w, w->pair_i[k], w->pair_j[k]) > 0.0;
+        nc += carries(w, k);
     fp = open_file(prefix, "contacts", increment, name, sizeof name, err);
     if (!fp)
         return SBC_ERR_IO;
@@ -64,20 +70,20 @@ sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_vie
         fprintf(fp, "%.12g %.12g 0\n", w->x[2 * k], w->x[2 * k + 1]);
     fprintf(fp, "LINES %d %d\n", nc, 3 * nc);
     for (k = 0; k < w->pair_count; ++k)
-        if (overlap(w, w->pair_i[k], w->pair_j[k]) > 0.0)
+        if (carries(w, k))
             fprintf(fp, "2 %d %d\n", w->pair_i[k], w->pair_j[k]);
     fprintf(fp, "CELL_DATA %d\nSCALARS normal_force double 1\nLOOKUP_TABLE default\n", nc);
-    for (k = 0; k < w->pair_count; ++k) {
-        double dn = overlap(w, w->pair_i[k], w->pair_j[k]);
-        if (dn > 0.0)
-            fprintf(fp, "%.12g\n", w->law.kn * dn);
-    }
+    for (k = 0; k < w->pair_count; ++k)
+        if (carries(w, k))
+            fprintf(fp, "%.12g\n", w->law.kn * overlap(w, k)); /* eqs. 6-7: fn = kn dn */
     fprintf(fp, "SCALARS overlap double 1\nLOOKUP_TABLE default\n");
-    for (k = 0; k < w->pair_count; ++k) {
-        double dn = overlap(w, w->pair_i[k], w->pair_j[k]);
-        if (dn > 0.0)
-            fprintf(fp, "%.12g\n", dn);
-    }
+    for (k = 0; k < w->pair_count; ++k)
+        if (carries(w, k))
+            fprintf(fp, "%.12g\n", overlap(w, k));
+    fprintf(fp, "SCALARS bond int 1\nLOOKUP_TABLE default\n");
+    for (k = 0; k < w->pair_count; ++k)
+        if (carries(w, k))
+            fprintf(fp, "%d\n", bonded(w, k));
     if (fclose(fp) != 0)
         return sbc_fail(err, SBC_ERR_IO, "vtk: write to '%s' failed", name);
     return SBC_OK;

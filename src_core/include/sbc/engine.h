@@ -2,7 +2,8 @@
  *
  * Explicit integration of eq. 9 (mass M = rho pi R^2, disc inertia
  * I = M R^2 / 2), local non-viscous damping of eq. 10 on interior particles,
- * frictional contacts of eq. 6, cell-list neighbour search. Frame particles
+ * frictional contacts of eq. 6, optional cohesive bonds of eqs. 7-8 between
+ * the pairs touching at the start, cell-list neighbour search. Frame particles
  * are kinematic: each step they move to the controller's targets. The engine
  * drives the controller exactly as an external host does:
  *
@@ -22,6 +23,10 @@ typedef struct sbc_engine_def {
     const double *r;     /* [n] radii, m */
     double density;      /* mass per area, kg/m^2 */
     sbc_frictional law;  /* contact law, eq. 6 */
+    const sbc_cohesive *bonds; /* NULL: no bonds. Otherwise every pair whose gap is below
+                                  1e-6 R_min at creation is bonded (eqs. 7-8), and `law` is
+                                  replaced by (kn, ks, mu) of the bond law, which broken bonds
+                                  and new contacts follow (eq. 6). Copied at creation. */
     double dt;           /* time step, s */
     double alpha, beta;  /* local damping of eq. 10 (0 = none) */
     double skin;         /* neighbour-list skin, m; <= 0: a quarter of the smallest radius */
@@ -61,6 +66,8 @@ typedef struct sbc_engine_view {
     const unsigned char *kinematic;
     int pair_count;
     const int *pair_i, *pair_j;
+    const unsigned char *pair_bond; /* [pair_count] 1 = intact bond; NULL in a scene without bonds */
+    int bond_count, bonds_initial;  /* intact bonds now and at creation */
     sbc_frictional law;
     long step;
     double time; /* s */
@@ -72,7 +79,8 @@ sbc_engine_view sbc_engine_get_view(const sbc_engine *e);
 void sbc_engine_frame_masses(const sbc_engine *e, double *mass);
 
 /* Critical time step estimate 2 sqrt(M_min / (2 kn)) (s): the period limit
- * of the stiffest particle-contact oscillator. */
+ * of the stiffest particle-contact oscillator; with bonds also
+ * 2 sqrt(I_min / (2 kr)) for the bending spring, whichever is smaller. */
 double sbc_engine_critical_dt(const sbc_engine *e);
 
 #endif

@@ -4,8 +4,10 @@
  *   PREFIX_particles_NNNNNN.vtk  points with radius (m), rotation (rad),
  *                                velocity (m/s) and frame flag; render with
  *                                Glyph (sphere/disc) scaled by "radius";
- *   PREFIX_contacts_NNNNNN.vtk   one line per contact between the centres,
- *                                cell data normal_force (N) and overlap (m). */
+ *   PREFIX_contacts_NNNNNN.vtk   one line per contact or intact bond between
+ *                                the centres, cell data normal_force (N,
+ *                                negative in a bond under tension), overlap
+ *                                (m) and bond (1 = intact cohesive bond). */
 #ifndef SBC_VTK_H
 #define SBC_VTK_H
 

@@ -1,0 +1,70 @@
+/* Contact network picture (Figs. 8 and 12) as a self-contained SVG file. */
+#include "sbc/network.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+
+#define WIDTH 640.0 /* px of the packing's extent along x */
+#define MARGIN 20.0 /* px */
+#define TOP 60.0    /* px of title and legend above the picture */
+
+sbc_status sbc_network_svg(const char *path, const char *title, const sbc_engine_view *w, sbc_error *err)
+{
+    double lo[2] = {DBL_MAX, DBL_MAX}, hi[2] = {-DBL_MAX, -DBL_MAX}, s, fmax = 0.0, height;
+    int k, contacts = 0, bonds = 0;
+    FILE *fp;
+    for (k = 0; k < w->n; ++k) {
+        int a;
+        for (a = 0; a < 2; ++a) {
+            if (w->x[2 * k + a] - w->r[k] < lo[a]) lo[a] = w->x[2 * k + a] - w->r[k];
+            if (w->x[2 * k + a] + w->r[k] > hi[a]) hi[a] = w->x[2 * k + a] + w->r[k];
+        }
+    }
+    if (w->n < 1 || !(hi[0] > lo[0]) || !(hi[1] > lo[1]) || !isfinite(hi[0] - lo[0]) || !isfinite(hi[1] - lo[1]))
+        return sbc_fail(err, SBC_ERR_INPUT, "network: no particles or a non-finite extent");
+    s = WIDTH / (hi[0] - lo[0]); /* px per m */
+    height = (hi[1] - lo[1]) * s;
+    /* |fn| = kn |dn| of every force-carrying pair (eqs. 6-7), for the line widths */
+    for (k = 0; k < w->pair_count; ++k) {
+        int i = w->pair_i[k], j = w->pair_j[k], b = w->pair_bond && w->pair_bond[k];
+        double dn = w->r[i] + w->r[j] - hypot(w->x[2 * j] - w->x[2 * i], w->x[2 * j + 1] - w->x[2 * i + 1]);
+        if (dn > 0.0 || b) {
+            if (fabs(w->law.kn * dn) > fmax) fmax = fabs(w->law.kn * dn);
+            bonds += b;
+            contacts += !b;
+        }
+    }
+    if (!(fp = fopen(path, "w")))
+        return sbc_fail(err, SBC_ERR_IO, "network: cannot open '%s' for writing", path);
+    fprintf(fp, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" font-family=\"sans-serif\" "
+                "font-size=\"13\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",
+            WIDTH + 2 * MARGIN, height + TOP + MARGIN);
+    fprintf(fp, "<text x=\"%g\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">%s</text>\n", 0.5 * WIDTH + MARGIN,
+            title);
+    fprintf(fp, "<text x=\"%g\" y=\"44\" text-anchor=\"middle\"><tspan fill=\"#1f4fd8\">%d frictional contacts"
+                "</tspan>, <tspan fill=\"#d62728\">%d cohesive bonds</tspan>; line width ~ |fn|, max %.4g N; "
+                "t = %.6g s</text>\n",
+            0.5 * WIDTH + MARGIN, contacts, bonds, fmax, w->time);
+    /* SVG y grows downwards: y_px = TOP + (hi_y - y) s */
+#define PX(v) (MARGIN + ((v) - lo[0]) * s)
+#define PY(v) (TOP + (hi[1] - (v)) * s)
+    for (k = 0; k < w->n; ++k)
+        fprintf(fp, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"%s\" stroke=\"#999\" stroke-width=\"0.6\"/>\n",
+                PX(w->x[2 * k]), PY(w->x[2 * k + 1]), w->r[k] * s, w->kinematic[k] ? "#e4e4e4" : "none");
+    for (k = 0; k < w->pair_count; ++k) {
+        int i = w->pair_i[k], j = w->pair_j[k], b = w->pair_bond && w->pair_bond[k];
+        double dn = w->r[i] + w->r[j] - hypot(w->x[2 * j] - w->x[2 * i], w->x[2 * j + 1] - w->x[2 * i + 1]);
+        double width = fmax > 0.0 ? 0.4 + 4.0 * fabs(w->law.kn * dn) / fmax : 0.4;
+        if (!(dn > 0.0 || b)) continue;
+        fprintf(fp, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"%s\" stroke-width=\"%.2f\"%s/>\n",
+                PX(w->x[2 * i]), PY(w->x[2 * i + 1]), PX(w->x[2 * j]), PY(w->x[2 * j + 1]), b ? "#d62728" : "#1f4fd8",
+                width, b && dn < 0.0 ? " stroke-dasharray=\"3 2\"" : "");
+    }
+#undef PX
+#undef PY
+    fprintf(fp, "</svg>\n");
+    if (ferror(fp) | (fclose(fp) != 0))
+        return sbc_fail(err, SBC_ERR_IO, "network: write to '%s' failed", path);
+    return SBC_OK;
+}
