@@ -3,13 +3,19 @@
 # 232-particle packing (n0 = 200; the paper's has 228) under (D), (P), (T).
 #   fig7_9.sh [SET]     SET = table4 (default) or active, see irregular_case.sh
 # Fig. 7: -sigma~11, -sigma~22 (sigma~ = sigma Rbar / kn); Fig. 9: mean
-# overlap (eq. 39) and mean rotation (eq. 41); Fig. 8: VTK snapshots every 10
-# increments in out/paper/vtk/ (contact network: *_contacts_*.vtk, colour by
-# normal_force). About 10 min with table4.
+# overlap (eq. 39) and mean rotation (eq. 41); Fig. 8: contact networks at
+# F12 = 0.05, 0.1, 0.3, 0.5 as docs/figures/fig8_BC_{a,b,c,d}.svg (and VTK
+# snapshots every 10 increments in out/paper/vtk/). About 15 min with table4.
 set -euo pipefail
 . "$(dirname "$0")/common.sh"
 set=${1:-table4}
-for bc in D P T; do bash "$top/inputs/paper/irregular_case.sh" "$bc" 200 "$set" > /dev/null; done
+for bc in D P T; do
+  bash "$top/inputs/paper/irregular_case.sh" "$bc" 200 "$set" > /dev/null || echo "($bc) stopped before the end (message above); plotting the increments it converged"
+  for pair in a:10 b:20 c:60 d:100; do
+    svg=$top/out/paper/net/irregular_${bc}_200_${set}_$(printf %06d "${pair#*:}").svg
+    [ -f "$svg" ] && cp "$svg" "$fig/fig8_${bc}_${set}_${pair%%:*}.svg"
+  done
+done
 out=$top/out/paper
 # Rbar = mean radius of all P + Q particles (Sect. 4.2.1), kn = 1e4 N/m
 scale=$(awk -v r="$(rbar "$out/packing_200.txt")" 'BEGIN { printf "%.10g", -r / 1e4 }')

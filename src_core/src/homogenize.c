@@ -5,20 +5,43 @@
 
 double sbc_det2(const double T[4]) { return T[0] * T[3] - T[1] * T[2]; }
 
-/* eq. 15: F_ij = (1/V) sum_q x_qi A_qj */
+/* sum_q y_qi A_qj for positions y [2Q] */
+static void moment(const sbc_frame *f, const double *y, double s[4])
+{
+    int q;
+    s[0] = s[1] = s[2] = s[3] = 0.0;
+    for (q = 0; q < f->n; ++q) {
+        const double *yq = &y[2 * q], *A = &f->A[2 * q];
+        s[0] += yq[0] * A[0];
+        s[1] += yq[0] * A[1];
+        s[2] += yq[1] * A[0];
+        s[3] += yq[1] * A[1];
+    }
+}
+
+/* eq. 15: F_ij = (1/V) sum_q x_qi A_qj, with V generalized to the tensor
+ * G = sum_q X_q (x) A_q: F = (sum_q x_q (x) A_q) G^-1. For the frames the
+ * library builds (a lattice ring or a periodic square) G = V I to round-off
+ * and this is eq. 15; for the reference renewed after the stress stage of a
+ * mixed BC, whose top edge is no longer a periodic copy of the bottom, G
+ * departs from V I by ~5e-4 and eq. 15 taken literally would report
+ * F = diag(0.9995, ...) for the undeformed reference itself. */
 void sbc_homogenize_F(const sbc_frame *f, const double *x, double F[4])
 {
-    double s[4] = {0.0, 0.0, 0.0, 0.0};
-    int q;
-    for (q = 0; q < f->n; ++q) {
-        const double *xq = &x[2 * q], *A = &f->A[2 * q];
-        s[0] += xq[0] * A[0];
-        s[1] += xq[0] * A[1];
-        s[2] += xq[1] * A[0];
-        s[3] += xq[1] * A[1];
+    double s[4], G[4], det;
+    moment(f, x, s);
+    moment(f, f->X, G);
+    det = sbc_det2(G);
+    if (!(fabs(det) > 0.0)) { /* degenerate frame: eq. 15 as written */
+        int q;
+        for (q = 0; q < 4; ++q)
+            F[q] = s[q] / f->V;
+        return;
     }
-    for (q = 0; q < 4; ++q)
-        F[q] = s[q] / f->V;
+    F[0] = (s[0] * G[3] - s[1] * G[2]) / det;
+    F[1] = (-s[0] * G[1] + s[1] * G[0]) / det;
+    F[2] = (s[2] * G[3] - s[3] * G[2]) / det;
+    F[3] = (-s[2] * G[1] + s[3] * G[0]) / det;
 }
 
 /* eq. 23: P_ij = (1/V) sum_q a_qi X_qj */
