@@ -19,9 +19,12 @@ table_header() {
 }
 # rbar PACKING: mean radius of all P + Q particles (Sect. 4.2.1), m
 rbar() { awk '$1 != "box" && $1 !~ /^#/ && NF >= 3 { s += $3; n++ } END { printf "%.10g", s / n }' "$1"; }
-# path_norm CSV SCALE: eq. 42, (sum_ij int (SCALE sigma_ij)^2 dF12)^(1/2), trapezoid over the rows
+# path_norm CSV SCALE [FMAX]: eq. 42, (sum_ij int (SCALE sigma_ij)^2 dF12)^(1/2),
+# trapezoid over the rows with F12 <= FMAX (default: all)
 path_norm() {
-  awk -F, -v s="$2" 'NR > 1 { f = $3; a = ($10^2 + $11^2 + $12^2 + $13^2) * s * s
-      if (NR > 2) sum += 0.5 * (a + prev) * (f - fp); prev = a; fp = f }
+  awk -F, -v s="$2" -v fmax="${3:-1e300}" 'NR > 1 && $3 <= fmax + 1e-12 { f = $3; a = ($10^2 + $11^2 + $12^2 + $13^2) * s * s
+      if (n++) sum += 0.5 * (a + prev) * (f - fp); prev = a; fp = f }
     END { printf "%.6g", sqrt(sum) }' "$1"
 }
+# last_F12 CSV: F12 of the last converged increment
+last_F12() { tail -n 1 "$1" | cut -d, -f3; }

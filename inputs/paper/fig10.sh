@@ -2,36 +2,49 @@
 # Fig. 10 (Sect. 4.2.2): the stress norm of eq. 42 along simple shear
 # F12 = 0.5 (100 increments) against the particle number, for the five packings
 # of Fig. 6 (n0 = 25, 100, 200, 400, 600) under (D), (P) and (T), Table 4
-# settings as in Figs. 7-9. Runs that already have a complete CSV in out/paper
-# are reused (delete it to rerun). About 1 h on one core, mostly (P) and (T) of
-# the two largest packings.
+# settings as in Figs. 7-9. Runs that already have a CSV in out/paper are
+# reused (delete it to rerun); each run is limited to LIMIT seconds (default
+# 1800). A run that stops early ((T) stagnates, see the docs) enters the
+# full-path table with its last F12; the second table integrates every run
+# over the range all of them reached, so that the norms compare.
 #   fig10.sh [SET]     SET = table4 (default) or active
 set -euo pipefail
 . "$(dirname "$0")/common.sh"
 set=${1:-table4}
+limit=${LIMIT:-1800}
 out=$top/out/paper
-table=$out/fig10_$set.csv
-echo "particles,D,P,T" > "$table"
 for n0 in 25 100 200 400 600; do
-  row=$(awk '$1 != "box" && $1 !~ /^#/ && NF >= 3 { n++ } END { print n }' "$out/packing_$n0.txt" 2>/dev/null || true)
   for bc in D P T; do
     csv=$out/irregular_${bc}_${n0}_${set}.csv
-    if [ ! -f "$csv" ] || [ "$(wc -l < "$csv")" -lt 102 ]; then
-      bash "$top/inputs/paper/irregular_case.sh" "$bc" "$n0" "$set" > /dev/null
-    fi
+    [ -f "$csv" ] || timeout "$limit" bash "$top/inputs/paper/irregular_case.sh" "$bc" "$n0" "$set" > /dev/null ||
+      echo "($bc) n0 $n0: stopped at F12 = $(last_F12 "$csv")"
+  done
+done
+# common range: the smallest last F12 over all runs
+fc=$(for f in "$out"/irregular_[DPT]_*_"$set".csv; do last_F12 "$f"; done | sort -g | head -1)
+for range in full common; do
+  table=$out/fig10_${set}_$range.csv
+  echo "particles,D,P,T,D_to,P_to,T_to" > "$table"
+  for n0 in 25 100 200 400 600; do
+    row=$(awk '$1 != "box" && $1 !~ /^#/ && NF >= 3 { n++ } END { print n }' "$out/packing_$n0.txt")
+    ends=
     # sigma~ = sigma Rbar / kn, kn = 1e4 N/m (Sect. 4.2.1)
     scale=$(awk -v r="$(rbar "$out/packing_$n0.txt")" 'BEGIN { printf "%.10g", r / 1e4 }')
-    row="$row,$(path_norm "$csv" "$scale")"
+    for bc in D P T; do
+      csv=$out/irregular_${bc}_${n0}_${set}.csv
+      if [ $range = full ]; then row="$row,$(path_norm "$csv" "$scale")"; else row="$row,$(path_norm "$csv" "$scale" "$fc")"; fi
+      ends="$ends,$(last_F12 "$csv")"
+    done
+    echo "$row$ends" >> "$table"
   done
-  echo "$row" >> "$table"
+  echo "$range path$([ $range = common ] && echo " (F12 <= $fc)"):"; cat "$table"
+  # one file per BC for the overlay: particles,norm
+  series=()
+  for c in 2 3 4; do
+    bc=$(head -1 "$table" | cut -d, -f$c)
+    awk -F, -v c=$c 'NR == 1 { print "particles,norm"; next } { print $1 "," $c }' "$table" > "$out/fig10_${set}_${range}_$bc.csv"
+    series+=("$out/fig10_${set}_${range}_$bc.csv" "($bc)")
+  done
+  "$plot" "$fig/fig10_${set}_$range.svg" "Fig. 10: stress norm of eq. 42 ($range path)" "particles" "norm of sigma~ (eq. 42)" \
+    particles 1 norm 1 "${series[@]}"
 done
-cat "$table"
-# one file per BC for the overlay: particles,norm
-series=()
-for c in 2 3 4; do
-  bc=$(head -1 "$table" | cut -d, -f$c)
-  awk -F, -v c=$c 'NR == 1 { print "particles,norm"; next } { print $1 "," $c }' "$table" > "$out/fig10_${set}_$bc.csv"
-  series+=("$out/fig10_${set}_$bc.csv" "($bc)")
-done
-"$plot" "$fig/fig10_$set.svg" "Fig. 10: stress norm of eq. 42 vs particle number" "particles" "norm of sigma~ (eq. 42)" \
-  particles 1 norm 1 "${series[@]}"
