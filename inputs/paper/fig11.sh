@@ -61,7 +61,7 @@ runs=()
 for law in frictional cohesive; do
   [ -f "$out/mixed_${law}_${n0}_fig11.csv" ] && runs+=("$out/mixed_${law}_${n0}_fig11.csv" "$law")
 done
-"$plot" "$fig/fig11a.svg" "Fig. 11a: stress ratio, layer of $n0 discs" "F12" "-sigma12 / sigma22" F12 1 ratio 1 "${runs[@]}"
+"$plot" "$fig/fig11a.svg" "Fig. 11a: stress ratio, layer (n0 = $n0)" "F12" "-sigma12 / sigma22" F12 1 ratio 1 "${runs[@]}"
 "$plot" "$fig/fig11b.svg" "Fig. 11b: det F (after stage 1 = 1)" "F12" "det F" F12 1 detF 1 "${runs[@]}"
 "$plot" "$fig/fig11c.svg" "Fig. 11c: mean rotation (eq. 41)" "F12" "mean rotation (rad)" F12 1 rotation 1 "${runs[@]}"
 # peak and end of the stress ratio
