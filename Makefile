@@ -92,6 +92,7 @@ $(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_HDR)/fix_neigh_history.
 check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_driver
 	bash tests/lammps/closed_form.sh $(B)/lmp_servo $(B)/plugin_driver $(B)/servo_bc_plugin.so
 	bash tests/lammps/cross_host.sh $(B)/lmp_servo $(B)/servo-bc
+	bash tests/lammps/mixed_layer.sh $(B)/lmp_servo $(B)/servo-bc
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)

@@ -112,6 +112,23 @@ static void test_generated_frame(const sbc_packing *a, double L)
         CHECK(sbc_frame_detect_box(&g, a->n, a->x, a->r, box, &err) == SBC_ERR_FRAME &&
               strstr(err.message, "frame:"));
     }
+    /* a host's frame group (the type-2 atoms of the LAMMPS data file), in any
+       order: the periodic square is found from its corner copies, and the
+       frame is the one of sbc_frame_detect_box */
+    {
+        sbc_frame g;
+        int *list = malloc(sizeof(int) * (size_t)f.n), q, same = 1;
+        for (q = 0; q < f.n; ++q)
+            list[q] = f.particle[(q * 7) % f.n]; /* a permutation: f.n is not a multiple of 7 here */
+        CHECK(f.n % 7 != 0);
+        CHECK(sbc_frame_from_list(&g, f.n, list, a->x, a->r, &err) == SBC_OK);
+        CHECK(g.n == f.n && g.V == f.V);
+        for (q = 0; q < f.n && g.n == f.n; ++q)
+            same = same && g.particle[q] == f.particle[q] && g.partner[q] == f.partner[q] && g.A[2 * q] == f.A[2 * q];
+        CHECK(same);
+        sbc_frame_free(&g);
+        free(list);
+    }
     sbc_frame_free(&f);
     /* the runner: generate, write, read back and run two (P) increments */
     snprintf(path, sizeof path, "%s/runner_generated.txt", test_tmpdir);

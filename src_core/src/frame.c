@@ -254,15 +254,11 @@ sbc_status sbc_frame_detect(sbc_frame *f, int n, const double *x, const double *
     return build(f, n, NULL, n, x, r, band, NULL, err);
 }
 
-sbc_status sbc_frame_detect_box(sbc_frame *f, int n, const double *x, const double *r, const double box[4],
-                                sbc_error *err)
+/* A geometrically periodic packing pairs every edge particle with a copy at
+ * exactly +-L; frees f and fails when one has none. */
+static sbc_status check_periodic(sbc_frame *f, const double box[4], sbc_error *err)
 {
     int k;
-    sbc_status st = build(f, n, NULL, n, x, r, 0.0, box, err);
-    if (st != SBC_OK)
-        return st;
-    /* a geometrically periodic packing pairs every edge particle with a copy
-       at exactly +-L: anything else is not such a packing */
     for (k = 0; k < f->n; ++k) {
         /* bottom -> top differ by +L in y (c = 1), left -> right by +L in x (c = 0) */
         int q = f->partner[k], c = f->side[k] == SBC_SIDE_BOTTOM ? 1 : 0;
@@ -282,6 +278,53 @@ sbc_status sbc_frame_detect_box(sbc_frame *f, int n, const double *x, const doub
     return SBC_OK;
 }
 
+sbc_status sbc_frame_detect_box(sbc_frame *f, int n, const double *x, const double *r, const double box[4],
+                                sbc_error *err)
+{
+    sbc_status st = build(f, n, NULL, n, x, r, 0.0, box, err);
+    return st != SBC_OK ? st : check_periodic(f, box, err);
+}
+
+/* The largest rectangle whose four corners are listed particles of equal
+ * radius at exactly (x, y), (x + Lx, y), (x, y + Ly), (x + Lx, y + Ly) (to
+ * 1e-12 of the listed extent): the corner copies of a geometrically periodic
+ * packing (Sect. 4.2). Returns 0 when there is none. O(count^2). */
+static int periodic_corners(int count, const int *list, const double *x, const double *r, double box[4])
+{
+    double lo = HUGE_VAL, hi = -HUGE_VAL, eps, best = 0.0;
+    int a, b, c, d;
+    for (a = 0; a < count; ++a) {
+        const double *p = &x[2 * list[a]];
+        lo = fmin(lo, fmin(p[0], p[1]));
+        hi = fmax(hi, fmax(p[0], p[1]));
+    }
+    eps = 1e-12 * (hi - lo);
+    for (a = 0; a < count; ++a) {
+        const double *p = &x[2 * list[a]];
+        for (b = 0; b < count; ++b) { /* same y, to the right */
+            const double *q = &x[2 * list[b]];
+            if (fabs(q[1] - p[1]) > eps || !(q[0] > p[0] + eps) || r[list[b]] != r[list[a]])
+                continue;
+            for (c = 0; c < count; ++c) { /* same x, above */
+                const double *u = &x[2 * list[c]];
+                if (fabs(u[0] - p[0]) > eps || !(u[1] > p[1] + eps) || r[list[c]] != r[list[a]])
+                    continue;
+                if ((q[0] - p[0]) * (u[1] - p[1]) <= best)
+                    continue;
+                for (d = 0; d < count; ++d) { /* the fourth corner */
+                    const double *w = &x[2 * list[d]];
+                    if (fabs(w[0] - q[0]) <= eps && fabs(w[1] - u[1]) <= eps && r[list[d]] == r[list[a]]) {
+                        best = (q[0] - p[0]) * (u[1] - p[1]);
+                        box[0] = p[0], box[1] = q[0], box[2] = p[1], box[3] = u[1];
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    return best > 0.0;
+}
+
 sbc_status sbc_frame_detect_packing(sbc_frame *f, const sbc_packing *p, sbc_error *err)
 {
     if (p->has_box)
@@ -292,9 +335,21 @@ sbc_status sbc_frame_detect_packing(sbc_frame *f, const sbc_packing *p, sbc_erro
 sbc_status sbc_frame_from_list(sbc_frame *f, int count, const int *list, const double *x,
                                const double *r, sbc_error *err)
 {
+    double box[4];
     int n = 0, k;
     for (k = 0; k < count; ++k)
         if (list[k] + 1 > n) n = list[k] + 1;
+    /* the frame group of a geometrically periodic packing: the discs crossing
+       the square spanned by its corner copies, every one with its copy at +-L */
+    if (periodic_corners(count, list, x, r, box)) {
+        sbc_error quiet;
+        if (build(f, count, list, n, x, r, 0.0, box, &quiet) == SBC_OK) {
+            if (f->n == count && check_periodic(f, box, &quiet) == SBC_OK)
+                return SBC_OK;
+            if (f->n > 0)
+                sbc_frame_free(f);
+        }
+    }
     return build(f, count, list, n, x, r, 0.0, NULL, err);
 }
 

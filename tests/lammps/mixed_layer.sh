@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# The mixed (D)-(P)-(T) layer of Sect. 5.3 on a small generated periodic
+# packing (n0 = 25: 37 discs, polydispersity 1.5, R_min = 0.8 mm, Table 6
+# frictional physics): fix servo_bc in LAMMPS (frame = the type-2 atoms of the
+# data file the core writes) against the embedded engine reading the same
+# packing. Stage 1: P22* = -1.05e6 N/m in 3 increments; stage 2: F12 = 0.004
+# in 2 increments. Every converged increment: every sigma component within
+# 0.5 % of the stress scale (max |sigma| of the run). Prints "N passed, N failed".
+# Relaxation tolerance 1e-5, not the paper's 1e-3: at 1e-3 the two engines stop
+# relaxing at different residual motions and the frictional history of the
+# sheared layer parts by 0.65 % of the stress scale after the 2 shear increments
+# (0.47 % with servo tolerances 1e-8); at 1e-5 by 0.32 % (measured).
+# Usage: mixed_layer.sh LMP_SERVO SERVO_BC
+set -u
+lmp=$(cd "$(dirname "${1:?usage: mixed_layer.sh LMP_SERVO SERVO_BC}")" && pwd)/$(basename "$1")
+emb=$(cd "$(dirname "${2:?usage: mixed_layer.sh LMP_SERVO SERVO_BC}")" && pwd)/$(basename "$2")
+tmp=$(mktemp -d)
+pass=0 fail=0
+SERVO="F 1 0.004 0 1 increments 2 stress P22 -1.05e6 3 relax 1e-5 20 damping 0.7 0.7 gain_force 1 gain_moment 1 tol_force 1e-6 tol_moment 1e-6 max_iterations 100000"
+cat > "$tmp/layer.sbc" <<SBC
+dimension 2
+generate periodic n0 25 rmin 0.8e-3 polydispersity 1.5 seed 1
+density 1e4
+write_packing text $tmp/layer.txt
+write_packing lammps $tmp/layer.data
+read_packing $tmp/layer.txt
+contact frictional kn 1e8 ks 4e7 mu 0.6
+timestep 5e-6
+servo_bc mixed $SERVO file $tmp/emb.csv
+run
+SBC
+cat > "$tmp/layer.in" <<LMP
+units           si
+dimension       2
+boundary        f f p
+atom_style      sphere
+read_data       layer.data
+group           frame_atoms type 2
+pair_style      gran/hooke/history 1e8 4e7 0 0 0.6 0
+pair_coeff      * *
+comm_modify     vel yes
+neighbor        0.0002 bin
+neigh_modify    delay 0 every 1 check yes
+timestep        5e-6
+fix             servo all servo_bc mixed $SERVO frame frame_atoms file lmp.csv
+fix             integrate servo_interior nve/sphere disc
+fix             plane all enforce2d
+thermo          1000000
+run             100000000
+LMP
+"$emb" "$tmp/layer.sbc" > "$tmp/emb.log" 2>&1 || { echo "servo-bc failed:"; tail -3 "$tmp/emb.log"; }
+(cd "$tmp" && "$lmp" -in layer.in -log none > lmp.log 2>&1) || { echo "lmp_servo failed:"; tail -3 "$tmp/lmp.log"; }
+res=$(paste -d, "$tmp/emb.csv" "$tmp/lmp.csv" | awk -F, 'NR > 1 {
+    for (c = 10; c <= 13; c++) { a = $c < 0 ? -$c : $c; if (a > s) s = a; d = $c - $(c + 20); if (d < 0) d = -d; if (d > m) m = d }
+    n++ }
+  END { printf "%d %.4g", n, (s > 0 ? 100 * m / s : 100) }')
+set -- $res
+if [ "${1:-0}" = 6 ] && awk -v e="${2:-100}" 'BEGIN { exit !(e <= 0.5) }'; then
+  pass=$((pass + 1)); echo "cross-host (mixed layer), 37 particles: 6 increments, max |sigma_lammps - sigma_embedded| = $2 % of the stress scale"
+else
+  fail=$((fail + 1)); echo "FAIL cross-host (mixed layer): ${1:-0} increments (expected 6), max difference ${2:-?} % (limit 0.5 %)"
+fi
+echo "$pass passed, $fail failed"
+[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"
+[ $fail = 0 ]
