@@ -141,6 +141,20 @@ static void test_generated_frame(const sbc_packing *a, double L)
              path, path);
     CHECK(sbc_script_run_string(script, "generated", NULL, &err) == SBC_OK);
     if (err.status != SBC_OK) printf("  %s\n", err.message);
+    /* a disc outside the frame is not confined: the run stops at once, naming it */
+    {
+        FILE *fp = fopen(path, "a");
+        if (fp) {
+            fprintf(fp, "1.0 1.0 0.67e-3\n");
+            fclose(fp);
+        }
+        snprintf(script, sizeof script,
+                 "dimension 2\nread_packing %s\ncontact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\n"
+                 "timestep 1e-5\nservo_bc D F 1 0.01 0 1 increments 2\nrun\n",
+                 path);
+        CHECK(sbc_script_run_string(script, "escaped", NULL, &err) == SBC_ERR_GEOMETRY &&
+              strstr(err.message, "increment 0: interior particle 36 escaped through a gap between frame particles"));
+    }
     CHECK(sbc_script_run_string("generate periodic n0 25 rmin 0.67e-3 polydispersity 3 seed 1\n", "bad", NULL,
                                 &err) == SBC_ERR_INPUT &&
           strstr(err.message, "bad:1: generate: polydispersity '3'"));

@@ -145,6 +145,35 @@ static sbc_status cmd_snapshots(int nw, char **w, int *every_out, char *prefix, 
     return SBC_OK;
 }
 
+/* An interior disc whose centre has left the frame's bounding box (widened by
+ * the largest radius) has escaped through a gap between frame discs: nothing
+ * confines it any more, and no later increment can be trusted. */
+static sbc_status check_confined(const sbc_engine *engine, int increment, sbc_error *err)
+{
+    sbc_engine_view w = sbc_engine_get_view(engine);
+    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, rmax = 0.0;
+    int k, c;
+    for (k = 0; k < w.n; ++k) {
+        if (w.r[k] > rmax) rmax = w.r[k];
+        for (c = 0; w.kinematic[k] && c < 2; ++c) {
+            if (w.x[2 * k + c] < lo[c]) lo[c] = w.x[2 * k + c];
+            if (w.x[2 * k + c] > hi[c]) hi[c] = w.x[2 * k + c];
+        }
+    }
+    for (k = 0; k < w.n && lo[0] <= hi[0]; ++k) {
+        if (w.kinematic[k])
+            continue;
+        for (c = 0; c < 2; ++c)
+            if (w.x[2 * k + c] < lo[c] - rmax || w.x[2 * k + c] > hi[c] + rmax)
+                return sbc_fail(err, SBC_ERR_GEOMETRY,
+                                "run: increment %d: interior particle %d escaped through a gap between frame "
+                                "particles (centre (%g, %g) m, frame within [%g, %g] x [%g, %g] m); the results "
+                                "before increment %d stand",
+                                increment, k, w.x[2 * k], w.x[2 * k + 1], lo[0], hi[0], lo[1], hi[1], increment);
+    }
+    return SBC_OK;
+}
+
 /* the snapshots due at a converged increment */
 static sbc_status write_snapshots(const script *s, const sbc_engine *engine, int increment, int last, sbc_error *err)
 {
@@ -329,6 +358,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         }
         if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
             const sbc_result *row = sbc_controller_result(r.ctl);
+            if ((st = check_confined(r.engine, row->increment, err)) != SBC_OK) break;
             if ((st = keep_row(&r, row, err)) != SBC_OK) break;
             if (r.csv && (st = sbc_csv_write(r.csv, row, err)) != SBC_OK) break;
             if ((st = write_snapshots(s, r.engine, row->increment, ev == SBC_EVENT_FINISHED, err)) != SBC_OK) break;
