@@ -282,7 +282,9 @@ void FixServoBC::post_force(int)
       const double vx = v[i][0] + dt * f[i][0] / rmass[i], vy = v[i][1] + dt * f[i][1] / rmass[i];
       const double w = omega[i][2] + dt * torque[i][2] / I;
       theta_atom[i] += dt * w;
-      ek += 0.5 * rmass[i] * (vx * vx + vy * vy) + 0.5 * I * w * w;
+      // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
+      if (f[i][0] != 0.0 || f[i][1] != 0.0 || torque[i][2] != 0.0)
+        ek += 0.5 * rmass[i] * (vx * vx + vy * vy) + 0.5 * I * w * w;
     }
     rot += std::fabs(theta_atom[i]);
     npart += 1.0;

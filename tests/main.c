@@ -32,6 +32,7 @@ int main(int argc, char **argv)
         void (*fn)(void);
     } suites[] = {{"frame", test_frame},     {"homogenize", test_homogenize}, {"contact", test_contact}, {"cohesive", test_cohesive},
                   {"bonds", test_bonds}, {"bonds-runner", test_bonds_runner},
+                  {"rattler", test_rattler_energy},
                   {"relax", test_relax},     {"lattice", test_lattice},       {"input", test_input},
                   {"outputs", test_outputs}, {"servo", test_servo}, {"restart", test_restart}, {"generate", test_generate}, {"mixed", test_mixed}};
     size_t k;

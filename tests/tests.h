@@ -6,6 +6,7 @@ void test_contact(void);
 void test_cohesive(void);
 void test_bonds(void);
 void test_bonds_runner(void);
+void test_rattler_energy(void);
 void test_relax(void);
 void test_lattice(void);
 void test_input(void);

@@ -305,7 +305,11 @@ static inline void integrate_interior(sbc_engine *e, const int damped)
         x[2 * k] += dt * vx;
         x[2 * k + 1] += dt * vy;
         th[k] += dt * w;
-        ek += mass[k] * (0.5 * (vx * vx + vy * vy) + 0.25 * r[k] * r[k] * w * w);
+        /* Ek of eq. 12 over the particles that carry force: a disc without contacts
+         * (a rattler) keeps its speed and spin, since the damping of eq. 10 acts
+         * through the force, and would hold Ek up for good */
+        if (fx != 0.0 || fy != 0.0 || m != 0.0)
+            ek += mass[k] * (0.5 * (vx * vx + vy * vy) + 0.25 * r[k] * r[k] * w * w);
         rot += fabs(th[k]);
         ddx = x[2 * k] - xb[2 * k];
         ddy = x[2 * k + 1] - xb[2 * k + 1];

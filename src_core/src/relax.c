@@ -12,7 +12,7 @@ void sbc_relax_start(sbc_relax *r, double tol_E, int window)
 }
 
 /* eq. 11: Ek/Ep <= tolE, held for r->window consecutive steps after a
- * kinetic-energy maximum, or with Ek never rising (see relax.h). */
+ * kinetic-energy maximum (see relax.h). */
 int sbc_relax_update(sbc_relax *r, double ek, double ep)
 {
     int ok;
@@ -27,7 +27,7 @@ int sbc_relax_update(sbc_relax *r, double ek, double ep)
     if (ek == 0.0)
         ok = 1;
     else
-        ok = (r->past_peak || !r->rising) && ep > 0.0 && ek <= r->tol_E * ep;
+        ok = r->past_peak && ep > 0.0 && ek <= r->tol_E * ep;
     r->count = ok ? r->count + 1 : 0;
     return r->count >= r->window;
 }

@@ -199,6 +199,8 @@ typedef struct run_state {
     FILE *csv;
     sbc_result *rows;
     int nrows, cap;
+    int increment_now; /* the increment in progress */
+    long since_check;  /* engine steps since the last confinement check */
 } run_state;
 
 static void run_free(run_state *r)
@@ -352,12 +354,24 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     for (;;) {
         sbc_commands cmd;
         sbc_event ev = sbc_controller_step(r.ctl, &snap, err);
+        /* an escaped disc explains a stalled servo better than its residuals do;
+           looked for at every converged increment and every 10^4 steps */
+        if (ev == SBC_EVENT_FAILED || ++r.since_check == 10000) {
+            sbc_error esc;
+            r.since_check = 0;
+            if (check_confined(r.engine, r.increment_now, &esc) != SBC_OK) {
+                *err = esc;
+                st = err->status;
+                break;
+            }
+        }
         if (ev == SBC_EVENT_FAILED) {
             st = err->status;
             break;
         }
         if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
             const sbc_result *row = sbc_controller_result(r.ctl);
+            r.increment_now = row->increment + 1;
             if ((st = check_confined(r.engine, row->increment, err)) != SBC_OK) break;
             if ((st = keep_row(&r, row, err)) != SBC_OK) break;
             if (r.csv && (st = sbc_csv_write(r.csv, row, err)) != SBC_OK) break;

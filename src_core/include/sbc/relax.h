@@ -8,13 +8,11 @@
  * unbalanced; with the literal criterion the paper's 25-particle (D) case is
  * "relaxed" 21 steps after every frame move, i.e. not relaxed at all. A step
  * with Ek exactly 0 (no interior motion at all) always counts. With Ep = 0
- * (no loaded contact) only Ek = 0 counts. Steps also count while Ek has not
- * risen at all since the relaxation started (a frame move too small to
- * disturb the interior): a rattler spinning without contacts keeps a constant
- * Ek that local damping (eq. 10, proportional to the moment) never removes,
- * and without this rule no peak ever comes (measured: the 455-particle
- * frictional layer of Sect. 5.3 at F12 = 0.144 waited 2e5 steps per iteration
- * with Ek/Ep = 1.6e-6). */
+ * (no loaded contact) only Ek = 0 counts. Hosts sum Ek over the interior
+ * particles that carry a force or moment: a contact-free rattler keeps its
+ * spin for good (local damping acts through the force), and counted it would
+ * hold Ek above tolE Ep forever (measured: the 455-particle frictional layer of
+ * Sect. 5.3 at F12 = 0.144, Ek = 4.5e-5 J). */
 #ifndef SBC_RELAX_H
 #define SBC_RELAX_H
 
