@@ -145,32 +145,34 @@ static sbc_status cmd_snapshots(int nw, char **w, int *every_out, char *prefix, 
     return SBC_OK;
 }
 
-/* An interior disc whose centre has left the frame's bounding box (widened by
- * the largest radius) has escaped through a gap between frame discs: nothing
- * confines it any more, and no later increment can be trusted. */
-static sbc_status check_confined(const sbc_engine *engine, int increment, sbc_error *err)
+/* 1 when point p lies inside the polygon of the frame particles' centres x,
+ * taken in frame order (crossing number). */
+static int inside_frame(const sbc_frame *f, const double *x, const double *p)
+{
+    int q, in = 0;
+    for (q = 0; q < f->n; ++q) {
+        const double *a = &x[2 * f->particle[q]], *b = &x[2 * f->particle[(q + 1) % f->n]];
+        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+            in = !in;
+    }
+    return in;
+}
+
+/* An interior disc whose centre has left the polygon of the frame's centres
+ * has slipped through a gap between frame discs: nothing confines it any
+ * more, and no later increment can be trusted. (No generated packing or
+ * lattice starts with such a disc.) O(N Q). */
+static sbc_status check_confined(const sbc_frame *frame, const sbc_engine *engine, int increment, sbc_error *err)
 {
     sbc_engine_view w = sbc_engine_get_view(engine);
-    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, rmax = 0.0;
-    int k, c;
-    for (k = 0; k < w.n; ++k) {
-        if (w.r[k] > rmax) rmax = w.r[k];
-        for (c = 0; w.kinematic[k] && c < 2; ++c) {
-            if (w.x[2 * k + c] < lo[c]) lo[c] = w.x[2 * k + c];
-            if (w.x[2 * k + c] > hi[c]) hi[c] = w.x[2 * k + c];
-        }
-    }
-    for (k = 0; k < w.n && lo[0] <= hi[0]; ++k) {
-        if (w.kinematic[k])
-            continue;
-        for (c = 0; c < 2; ++c)
-            if (w.x[2 * k + c] < lo[c] - rmax || w.x[2 * k + c] > hi[c] + rmax)
-                return sbc_fail(err, SBC_ERR_GEOMETRY,
-                                "run: increment %d: interior particle %d escaped through a gap between frame "
-                                "particles (centre (%g, %g) m, frame within [%g, %g] x [%g, %g] m); the results "
-                                "before increment %d stand",
-                                increment, k, w.x[2 * k], w.x[2 * k + 1], lo[0], hi[0], lo[1], hi[1], increment);
-    }
+    int k;
+    for (k = 0; k < w.n; ++k)
+        if (!w.kinematic[k] && !inside_frame(frame, w.x, &w.x[2 * k]))
+            return sbc_fail(err, SBC_ERR_GEOMETRY,
+                            "run: increment %d: interior particle %d escaped through a gap between frame particles "
+                            "(its centre (%g, %g) m is outside the polygon of the frame's centres); the results "
+                            "before increment %d stand",
+                            increment, k, w.x[2 * k], w.x[2 * k + 1], increment);
     return SBC_OK;
 }
 
@@ -355,11 +357,11 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         sbc_commands cmd;
         sbc_event ev = sbc_controller_step(r.ctl, &snap, err);
         /* an escaped disc explains a stalled servo better than its residuals do;
-           looked for at every converged increment and every 10^4 steps */
+           looked for at every converged increment, every 10^4 steps and on failure */
         if (ev == SBC_EVENT_FAILED || ++r.since_check == 10000) {
             sbc_error esc;
             r.since_check = 0;
-            if (check_confined(r.engine, r.increment_now, &esc) != SBC_OK) {
+            if (check_confined(&r.frame, r.engine, r.increment_now, &esc) != SBC_OK) {
                 *err = esc;
                 st = err->status;
                 break;
@@ -372,7 +374,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
             const sbc_result *row = sbc_controller_result(r.ctl);
             r.increment_now = row->increment + 1;
-            if ((st = check_confined(r.engine, row->increment, err)) != SBC_OK) break;
+            if ((st = check_confined(&r.frame, r.engine, row->increment, err)) != SBC_OK) break;
             if ((st = keep_row(&r, row, err)) != SBC_OK) break;
             if (r.csv && (st = sbc_csv_write(r.csv, row, err)) != SBC_OK) break;
             if ((st = write_snapshots(s, r.engine, row->increment, ev == SBC_EVENT_FINISHED, err)) != SBC_OK) break;
