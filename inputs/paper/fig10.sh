@@ -40,8 +40,12 @@ for range in full common; do
   echo "$range path$([ $range = common ] && echo " (F12 <= $fc)"):"; cat "$table"
   # one file per BC for the overlay: particles,norm
   series=()
+  # a BC enters the full-path picture only when all its runs reached F12 = 0.5
   for c in 2 3 4; do
     bc=$(head -1 "$table" | cut -d, -f$c)
+    if [ $range = full ] && awk -F, -v c=$((c + 3)) 'NR > 1 && $c < 0.5 - 1e-9 { bad = 1 } END { exit !bad }' "$table"; then
+      echo "($bc) left out of the full-path picture: not every run reached F12 = 0.5"; continue
+    fi
     awk -F, -v c=$c 'NR == 1 { print "particles,norm"; next } { print $1 "," $c }' "$table" > "$out/fig10_${set}_${range}_$bc.csv"
     series+=("$out/fig10_${set}_${range}_$bc.csv" "($bc)")
   done
