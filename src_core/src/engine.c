@@ -201,7 +201,7 @@ static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
             const int j = pj[k];
             const double dx = x[2 * j] - xi, dy = x[2 * j + 1] - yi;
             const double rs = ri + r[j], d2 = dx * dx + dy * dy;
-            double d, inv_d, nx, ny, dn, fn, fs = 0.0, fx, fy;
+            double d, inv_d, nx, ny, dn, fn, fs = 0.0, fx, fy, dus;
             const int bonded = bonds && bond[k];
             if (!bonded && d2 >= rs * rs) {
                 if (history)
@@ -214,10 +214,10 @@ static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
             ny = dy * inv_d;
             dn = rs - d;
             fn = kn * dn;
+            /* t = (-ny, nx); dus = ((v_j - v_i).t - (R_i w_i + R_j w_j)) dt (bonds imply history) */
+            dus = history ? ((v[2 * j + 1] - vyi) * nx - (v[2 * j] - vxi) * ny - (wri + r[j] * om[j])) * dt : 0.0;
             if (bonded) {
-                /* eqs. 7-8: dus as below, dtheta = (w_j - w_i) dt; moment +m on i, -m on j */
-                const double dus =
-                    ((v[2 * j + 1] - vyi) * nx - (v[2 * j] - vxi) * ny - (wri + r[j] * om[j])) * dt;
+                /* eqs. 7-8, dtheta = (w_j - w_i) dt; moment +m on i, -m on j */
                 sbc_bond b;
                 int broke;
                 b.fs = fsv[k];
@@ -234,10 +234,7 @@ static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
                 tqi += ri * fs + b.m;
                 tq[j] += r[j] * fs - b.m;
                 ep += sbc_cohesive_energy(&e->bond_law, dn, &b) - 0.5 * fn * dn; /* normal part added below */
-            } else if (history) {
-                /* t = (-ny, nx); dus = ((v_j - v_i).t - (R_i w_i + R_j w_j)) dt; eq. 6 */
-                const double dus =
-                    ((v[2 * j + 1] - vyi) * nx - (v[2 * j] - vxi) * ny - (wri + r[j] * om[j])) * dt;
+            } else if (history) { /* eq. 6 */
                 fs = fsv[k];
                 sbc_frictional_force(&law, dn, dus, &fs, NULL);
                 fs = flush(fs);
