@@ -3,6 +3,7 @@
 #   make demo     the paper's 25-particle (D) case on the embedded engine
 #   make check    every test: core, ASan+UBSan build, valgrind, LAMMPS (installs what it needs)
 #   make lammps   build/lmp_servo: LAMMPS with fix servo_bc (Debian package)
+#   make yade     the YADE engine's library (build/libservo_bc.so) and the Debian YADE package
 #   make bench    benchmarks (prints figures; LAMMPS side when installed)
 
 CC      ?= cc
@@ -18,7 +19,7 @@ CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 TEST_HDR = $(wildcard tests/*.h)
 
-.PHONY: all demo check deps check-core check-sanitize check-valgrind check-lammps lammps bench clean
+.PHONY: all demo check deps check-core check-sanitize check-valgrind check-lammps check-yade lammps yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
 $(B)/core/%.o: src_core/src/%.c $(CORE_HDR)
@@ -51,7 +52,7 @@ demo: all
 	$(B)/servo-bc inputs/demo_D_25.sbc
 
 check: deps
-	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind check-lammps
+	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind check-lammps check-yade
 
 deps:
 	@bash scripts/install-deps.sh core
@@ -93,6 +94,13 @@ check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_d
 	bash tests/lammps/closed_form.sh $(B)/lmp_servo $(B)/plugin_driver $(B)/servo_bc_plugin.so
 	bash tests/lammps/cross_host.sh $(B)/lmp_servo $(B)/servo-bc
 	bash tests/lammps/mixed_layer.sh $(B)/lmp_servo $(B)/servo-bc
+
+# YADE engine: Python (yade_adapter/servo_bc.py) over the core's shared library
+yade: $(B)/libservo_bc.so $(B)/servo-bc
+	@bash scripts/install-deps.sh yade
+
+check-yade: yade
+	bash tests/yade/run.sh $(B)/libservo_bc.so $(B)/servo-bc
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)

@@ -169,8 +169,8 @@ void FixServoBC::detect_frame()
 
 void FixServoBC::make_buffers()
 {
-  buf.assign(6 * frame.n + 6, 0.0);
-  sum.assign(6 * frame.n + 6, 0.0);
+  buf.assign(6 * frame.n + 2, 0.0);
+  sum.assign(6 * frame.n + 2, 0.0);
   slot.clear();
   for (int q = 0; q < frame.n; q++) slot[frame_tag[q]] = q;
 }
@@ -249,53 +249,51 @@ void FixServoBC::initial_integrate(int)
   }
 }
 
-/* snapshot, MPI sums, controller step; local damping (eq. 10) on the interior */
-void FixServoBC::post_force(int)
+/* local damping (eq. 10) on the interior, its rotations and its Ek (J) */
+double FixServoBC::interior_pass()
 {
-  if (finished) return;
-  const int nlocal = atom->nlocal, Q = frame.n, *mask = atom->mask;
-  const tagint *tag = atom->tag;
-  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
+  const int nlocal = atom->nlocal, *mask = atom->mask;
+  // flat views of the contiguous per-atom arrays
+  const double *v = &atom->v[0][0], *omega = &atom->omega[0][0];
+  double *f = &atom->f[0][0], *torque = &atom->torque[0][0];
   const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
-  std::fill(buf.begin(), buf.end(), 0.0);
-
-  double ek = 0.0, ep = 0.0, ov = 0.0, nc = 0.0, rot = 0.0, npart = 0.0;
+  const double alpha = settings.damping ? settings.alpha : 0.0, beta = settings.damping ? settings.beta : 0.0;
+  double ek = 0.0;
+  if (nlocal == 0) return 0.0;    // the per-atom arrays may not exist yet
   for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    if (mask[i] & frame_bit) {
-      int q = slot[tag[i]];
-      buf[2 * q] = x[i][0];
-      buf[2 * q + 1] = x[i][1];
-      buf[2 * Q + 2 * q] = f[i][0];
-      buf[2 * Q + 2 * q + 1] = f[i][1];
-      buf[4 * Q + q] = torque[i][2];
-      buf[5 * Q + q] = theta_atom[i];
-    } else {
-      if (settings.damping) {    // eq. 10, with the half-step velocities
-        for (int k = 0; k < 2; k++) f[i][k] -= settings.alpha * std::fabs(f[i][k]) * ((v[i][k] > 0) - (v[i][k] < 0));
-        double w = omega[i][2];
-        torque[i][2] -= settings.beta * std::fabs(torque[i][2]) * ((w > 0.0) - (w < 0.0));
-      }
-      // Ek and the rotation with the velocities after this step's kick
-      // (v^(n+1/2) = v^(n-1/2) + dt f/m), as the embedded engine measures them
-      const double I = inertia * rmass[i] * radius[i] * radius[i];
-      const double vx = v[i][0] + dt * f[i][0] / rmass[i], vy = v[i][1] + dt * f[i][1] / rmass[i];
-      const double w = omega[i][2] + dt * torque[i][2] / I;
-      theta_atom[i] += dt * w;
-      // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
-      if (f[i][0] != 0.0 || f[i][1] != 0.0 || torque[i][2] != 0.0)
-        ek += 0.5 * rmass[i] * (vx * vx + vy * vy) + 0.5 * I * w * w;
-    }
-    rot += std::fabs(theta_atom[i]);
-    npart += 1.0;
+    if (!(mask[i] & interior_bit)) continue;
+    double *fi = &f[3 * i], *ti = &torque[3 * i];
+    const double vx0 = v[3 * i], vy0 = v[3 * i + 1], w0 = omega[3 * i + 2];
+    // eq. 10, with the half-step velocities (no damping at v = 0)
+    fi[0] -= vx0 != 0.0 ? std::copysign(alpha * std::fabs(fi[0]), vx0) : 0.0;
+    fi[1] -= vy0 != 0.0 ? std::copysign(alpha * std::fabs(fi[1]), vy0) : 0.0;
+    ti[2] -= w0 != 0.0 ? std::copysign(beta * std::fabs(ti[2]), w0) : 0.0;
+    // Ek and the rotation with the velocities after this step's kick
+    // (v^(n+1/2) = v^(n-1/2) + dt f/m), as the embedded engine measures them;
+    // one division: 1/m = I/(m I), 1/I = m/(m I)
+    const double m = rmass[i], I = inertia * m * radius[i] * radius[i], inv = dt / (m * I);
+    const double vx = vx0 + fi[0] * I * inv, vy = vy0 + fi[1] * I * inv, w = w0 + ti[2] * m * inv;
+    theta_atom[i] += dt * w;
+    // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
+    if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) ek += 0.5 * m * (vx * vx + vy * vy) + 0.5 * I * w * w;
   }
-  // eq. 12 over the pair style's own half list and its shear history: per
-  // contact kn dn^2/2 + kt |shear|^2/2 (the stored shear is the elastic one,
-  // rescaled at the Coulomb limit). Each contact once: with newton pair off an
-  // owned-ghost pair stands on both ranks, and the lower tag counts it.
-  const int newton = force->newton_pair;
+  return ek;
+}
+
+/* eq. 12 over the pair style's own half list and its shear history: per
+   contact kn dn^2/2 + kt |shear|^2/2 (the stored shear is the elastic one,
+   rescaled at the Coulomb limit); also sum dn / Rbar and the contact count
+   (eq. 39). Each contact once: with newton pair off an owned-ghost pair stands
+   on both ranks, and the lower tag counts it. */
+void FixServoBC::contact_pass(double out[3])
+{
+  const int nlocal = atom->nlocal, *mask = atom->mask, newton = force->newton_pair;
+  const tagint *tag = atom->tag;
+  double **x = atom->x;
+  const double *radius = atom->radius;
   NeighList *list = pair_gran->list;
   FixNeighHistory *history = GranAccess::history_of(pair_gran);
+  double ep = 0.0, ov = 0.0, nc = 0.0;
   for (int ii = 0; ii < list->inum; ii++) {
     int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
@@ -318,26 +316,76 @@ void FixServoBC::post_force(int)
       nc += 1.0;
     }
   }
-  double *s = &buf[6 * Q];
-  s[0] = ek; s[1] = ep; s[2] = ov; s[3] = nc; s[4] = rot; s[5] = npart;
-  MPI_Allreduce(buf.data(), sum.data(), (int) buf.size(), MPI_DOUBLE, MPI_SUM, world);
+  out[0] = ep;
+  out[1] = ov;
+  out[2] = nc;
+}
 
-  sbc_snapshot snap;
-  snap.x = &sum[0];
-  snap.force = &sum[2 * Q];
-  snap.torque = &sum[4 * Q];
-  snap.theta = &sum[5 * Q];
-  snap.kinetic_energy = sum[6 * Q];
-  snap.potential_energy = sum[6 * Q + 1];
-  snap.overlap_sum = sum[6 * Q + 2];
-  snap.contact_count = (long) sum[6 * Q + 3];
-  snap.rotation_sum = sum[6 * Q + 4];
-  snap.particle_count = (long) sum[6 * Q + 5];
+/* frame positions, reactions and rotations in frame order, plus sum |theta|
+   and the particle count (eq. 41), into buf (summed over ranks later) */
+void FixServoBC::frame_pass()
+{
+  const int nlocal = atom->nlocal, Q = frame.n, *mask = atom->mask;
+  double **x = atom->x, **f = atom->f, **torque = atom->torque;
+  std::fill(buf.begin(), buf.end(), 0.0);
+  double rot = 0.0, npart = 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    if (mask[i] & frame_bit) {
+      int q = slot[atom->tag[i]];
+      buf[2 * q] = x[i][0];
+      buf[2 * q + 1] = x[i][1];
+      buf[2 * Q + 2 * q] = f[i][0];
+      buf[2 * Q + 2 * q + 1] = f[i][1];
+      buf[4 * Q + q] = torque[i][2];
+      buf[5 * Q + q] = theta_atom[i];
+    }
+    rot += std::fabs(theta_atom[i]);
+    npart += 1.0;
+  }
+  buf[6 * Q] = rot;
+  buf[6 * Q + 1] = npart;
+}
+
+/* damping, then what the controller asks for (sbc_controller_needs): Ek every
+   step, Ep and the contact sums past the kinetic-energy peak, the frame when
+   the relaxation ends; then the controller step */
+void FixServoBC::post_force(int)
+{
+  if (finished) return;
+  const int Q = frame.n;
+  double ek_local = interior_pass(), ek = 0.0;
+  MPI_Allreduce(&ek_local, &ek, 1, MPI_DOUBLE, MPI_SUM, world);
 
   // the setup of a later run (or of a restarted one) sees the configuration of
   // the last step again: the controller has already taken it
   if (update->ntimestep == last_step) return;
   last_step = update->ntimestep;
+
+  double contacts[3] = {SBC_RELAX_EP_UNMEASURED, 0.0, 0.0}, local[3];
+  unsigned need = sbc_controller_needs(ctl, ek, SBC_RELAX_EP_UNMEASURED);
+  if (need) {
+    contact_pass(local);
+    MPI_Allreduce(local, contacts, 3, MPI_DOUBLE, MPI_SUM, world);
+    need = sbc_controller_needs(ctl, ek, contacts[0]);
+  }
+  sbc_snapshot snap;
+  std::memset(&snap, 0, sizeof snap);
+  snap.kinetic_energy = ek;
+  snap.potential_energy = contacts[0];
+  snap.overlap_sum = contacts[1];
+  snap.contact_count = (long) contacts[2];
+  if (need & SBC_NEED_FRAME) {
+    frame_pass();
+    MPI_Allreduce(buf.data(), sum.data(), (int) buf.size(), MPI_DOUBLE, MPI_SUM, world);
+    snap.x = &sum[0];
+    snap.force = &sum[2 * Q];
+    snap.torque = &sum[4 * Q];
+    snap.theta = &sum[5 * Q];
+    snap.rotation_sum = sum[6 * Q];
+    snap.particle_count = (long) sum[6 * Q + 1];
+  }
+
   sbc_error err;
   sbc_event ev = sbc_controller_step(ctl, &snap, &err);
   if (ev == SBC_EVENT_FAILED) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);

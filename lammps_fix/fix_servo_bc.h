@@ -58,7 +58,6 @@ class FixServoBC : public Fix {
   std::vector<double> frame_mass;  // [Q] kg
   std::vector<double> buf, sum;    // reduction buffers
   std::unordered_map<tagint, int> slot;  // atom ID -> frame position, built with the frame
-  std::vector<double> snap_x, snap_f, snap_t, snap_theta;
   double *theta_atom;              // per-atom accumulated rotation, rad
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
   double kn, kt;                   // from pair gran/hooke/history
@@ -71,9 +70,11 @@ class FixServoBC : public Fix {
   int restored;                      // the frame came from a restart file
   bigint last_step;                  // timestep of the last controller step
 
+  double interior_pass();
+  void contact_pass(double out[3]);
+  void frame_pass();
   void detect_frame();
   void make_buffers();
-  void fail(const char *what);
 };
 
 }    // namespace LAMMPS_NS

@@ -3,6 +3,7 @@
 #   scripts/install-deps.sh core     compiler, make, valgrind (make check)
 #   scripts/install-deps.sh lammps   the Debian LAMMPS package (bench/, LAMMPS side)
 #   scripts/install-deps.sh lammps-dev   LAMMPS, its headers and an MPI C++ compiler (make lammps)
+#   scripts/install-deps.sh yade     the Debian YADE package (make yade, make check)
 # Already-installed tools are left alone; without root or apt-get it only reports.
 set -euo pipefail
 need=()
@@ -22,7 +23,10 @@ for what in "$@"; do
       command -v mpicxx >/dev/null || need+=(libopenmpi-dev openmpi-bin)
       command -v g++ >/dev/null || need+=(g++)
       ;;
-    *) echo "install-deps: unknown set '$what' (expected core, lammps or lammps-dev)" >&2; exit 2 ;;
+    yade)
+      command -v yade >/dev/null || need+=(yade python3-yade)
+      ;;
+    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev or yade)" >&2; exit 2 ;;
   esac
 done
 [ ${#need[@]} -eq 0 ] && exit 0

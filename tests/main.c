@@ -34,7 +34,8 @@ int main(int argc, char **argv)
                   {"bonds", test_bonds}, {"bonds-runner", test_bonds_runner},
                   {"rattler", test_rattler_energy},
                   {"relax", test_relax},     {"lattice", test_lattice},       {"input", test_input},
-                  {"outputs", test_outputs}, {"servo", test_servo}, {"restart", test_restart}, {"generate", test_generate}, {"mixed", test_mixed}};
+                  {"outputs", test_outputs}, {"servo", test_servo}, {"restart", test_restart}, {"generate", test_generate}, {"mixed", test_mixed},
+                  {"host", test_host}};
     size_t k;
     if (argc > 1) test_runner = argv[1];
     if (argc > 2) test_tmpdir = argv[2];

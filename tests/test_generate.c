@@ -95,8 +95,30 @@ static void test_generated_frame(const sbc_packing *a, double L)
         CHECK(mass_err < 1e-15);
     }
     snprintf(path, sizeof path, "%s/generated.yade", test_tmpdir);
-    CHECK(sbc_packing_write_yade(a, path, &err) == SBC_OK);
-    CHECK(count_lines(path, "#") == 1 && count_lines(path, "") == a->n + 1);
+    {
+        int *is_frame = calloc((size_t)a->n, sizeof *is_frame), q;
+        for (q = 0; q < f.n; ++q)
+            is_frame[f.particle[q]] = 1;
+        CHECK(sbc_packing_write_yade(a, is_frame, path, &err) == SBC_OK);
+        CHECK(count_lines(path, "#") == 1 && count_lines(path, "") == a->n + 1);
+        /* the fifth column flags exactly the frame */
+        {
+            FILE *fp = fopen(path, "r");
+            char buf[256];
+            int k = 0, flagged = 0, right = 1, flag;
+            double x, y, z, r;
+            while (fp && fgets(buf, sizeof buf, fp)) {
+                if (buf[0] == '#') continue;
+                if (sscanf(buf, "%lf %lf %lf %lf %d", &x, &y, &z, &r, &flag) != 5) { right = 0; break; }
+                right &= x == a->x[2 * k] && y == a->x[2 * k + 1] && z == 0.0 && r == a->r[k] && flag == is_frame[k];
+                flagged += flag;
+                ++k;
+            }
+            if (fp) fclose(fp);
+            CHECK(right && k == a->n && flagged == f.n);
+        }
+        free(is_frame);
+    }
     /* rose diagram: one wedge per bin */
     CHECK(sbc_packing_contact_angles(a, 1e-6 * 0.67e-3, &angle, &n, &err) == SBC_OK);
     CHECK(n > a->n); /* coordination above 2 */

@@ -15,4 +15,5 @@ void test_servo(void);
 void test_restart(void);
 void test_generate(void);
 void test_mixed(void);
+void test_host(void);
 #endif

@@ -274,11 +274,10 @@ void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4]
         F[k] = I[k] + t * (c->s.F[k] - I[k]);
 }
 
-static int snapshot_finite(const sbc_frame *f, const sbc_snapshot *s, const char **what)
+/* The frame part of a snapshot, read once the relaxation is over. */
+static int frame_finite(const sbc_frame *f, const sbc_snapshot *s, const char **what)
 {
     int k;
-    if (!isfinite(s->kinetic_energy)) { *what = "kinetic energy"; return 0; }
-    if (!isfinite(s->potential_energy)) { *what = "potential energy"; return 0; }
     for (k = 0; k < 2 * f->n; ++k) {
         if (!isfinite(s->x[k])) { *what = "frame position"; return 0; }
         if (!isfinite(s->force[k])) { *what = "frame reaction force"; return 0; }
@@ -286,6 +285,27 @@ static int snapshot_finite(const sbc_frame *f, const sbc_snapshot *s, const char
     for (k = 0; k < f->n; ++k)
         if (!isfinite(s->theta[k]) || !isfinite(s->torque[k])) { *what = "frame rotation or moment"; return 0; }
     return 1;
+}
+
+static int potential_needed(const sbc_controller *c, double ek)
+{
+    return sbc_relax_needs_potential(&c->relax, ek) || c->relax.steps + 1 >= c->s.max_relax_steps;
+}
+
+unsigned sbc_controller_needs(const sbc_controller *c, double ek, double ep)
+{
+    sbc_relax next = c->relax;
+    unsigned need = 0;
+    if (!isfinite(ek) || c->increment > c->total)
+        return SBC_NEED_POTENTIAL | SBC_NEED_FRAME; /* step reports it */
+    if (potential_needed(c, ek)) {
+        need |= SBC_NEED_POTENTIAL;
+        if (!(ep >= 0.0))
+            return need;
+    }
+    if (sbc_relax_update(&next, ek, ep))
+        need |= SBC_NEED_FRAME;
+    return need;
 }
 
 /* Homogenized measures of a relaxed state (eqs. 15, 23, 30, 31, 39, 41). */
@@ -374,11 +394,19 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: the loading path is already finished", sbc_bc_name(c->s.bc));
         return SBC_EVENT_FAILED;
     }
-    if (!snapshot_finite(c->frame, snap, &what)) {
+    if (!isfinite(snap->kinetic_energy) || isnan(snap->potential_energy) || isinf(snap->potential_energy)) {
         sbc_fail(err, SBC_ERR_NUMERIC,
                  "servo_bc %s: increment %d, relaxation step %ld: non-finite %s (the packing blew up; "
                  "lower the time step)",
-                 sbc_bc_name(c->s.bc), c->increment, c->relax.steps + 1, what);
+                 sbc_bc_name(c->s.bc), c->increment, c->relax.steps + 1,
+                 isfinite(snap->kinetic_energy) ? "potential energy" : "kinetic energy");
+        return SBC_EVENT_FAILED;
+    }
+    if (snap->potential_energy < 0.0 && potential_needed(c, snap->kinetic_energy)) {
+        sbc_fail(err, SBC_ERR_INPUT,
+                 "servo_bc %s: increment %d, relaxation step %ld: the host left Ep unmeasured although "
+                 "sbc_controller_needs asked for it",
+                 sbc_bc_name(c->s.bc), c->increment, c->relax.steps + 1);
         return SBC_EVENT_FAILED;
     }
     if (!sbc_relax_update(&c->relax, snap->kinetic_energy, snap->potential_energy)) {
@@ -391,6 +419,20 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
             return SBC_EVENT_FAILED;
         }
         return SBC_EVENT_RELAXING;
+    }
+    if (!snap->x || !snap->force || !snap->theta || !snap->torque) {
+        sbc_fail(err, SBC_ERR_INPUT,
+                 "servo_bc %s: increment %d, relaxation step %ld: the relaxation is over but the host passed no "
+                 "frame snapshot (sbc_controller_needs asked for it)",
+                 sbc_bc_name(c->s.bc), c->increment, c->relax.steps);
+        return SBC_EVENT_FAILED;
+    }
+    if (!frame_finite(c->frame, snap, &what)) {
+        sbc_fail(err, SBC_ERR_NUMERIC,
+                 "servo_bc %s: increment %d, relaxation step %ld: non-finite %s (the packing blew up; "
+                 "lower the time step)",
+                 sbc_bc_name(c->s.bc), c->increment, c->relax.steps, what);
+        return SBC_EVENT_FAILED;
     }
     {
         int k;

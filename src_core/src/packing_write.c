@@ -72,15 +72,16 @@ sbc_status sbc_packing_write_lammps(const sbc_packing *p, const int *is_frame, d
     return finish(fp, path, err);
 }
 
-sbc_status sbc_packing_write_yade(const sbc_packing *p, const char *path, sbc_error *err)
+sbc_status sbc_packing_write_yade(const sbc_packing *p, const int *is_frame, const char *path, sbc_error *err)
 {
     FILE *fp;
     int k;
     sbc_status st = open_for_writing(&fp, p, path, err);
     if (st != SBC_OK)
         return st;
-    fprintf(fp, "# servo_bc packing: %d discs, x y z r (m), for yade.ymport.text\n", p->n);
+    fprintf(fp, "# servo_bc packing: %d discs, x y z r (m) frame (1 = frame particle), for yade.ymport.text\n",
+            p->n);
     for (k = 0; k < p->n; ++k)
-        fprintf(fp, "%.17g %.17g 0 %.17g\n", p->x[2 * k], p->x[2 * k + 1], p->r[k]);
+        fprintf(fp, "%.17g %.17g 0 %.17g %d\n", p->x[2 * k], p->x[2 * k + 1], p->r[k], is_frame && is_frame[k]);
     return finish(fp, path, err);
 }

@@ -58,12 +58,11 @@ sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
         return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no packing (use 'lattice', 'read_packing' or 'generate' first)");
     if (strcmp(w[1], "text") == 0)
         return sbc_packing_write_text(&s->packing, w[2], err);
-    if (strcmp(w[1], "yade") == 0)
-        return sbc_packing_write_yade(&s->packing, w[2], err);
-    if (strcmp(w[1], "lammps") == 0) {
+    if (strcmp(w[1], "lammps") == 0 || strcmp(w[1], "yade") == 0) {
+        /* both carry the frame: LAMMPS as atom type 2, YADE as a fifth column */
         sbc_frame frame;
         int *is_frame, k;
-        if (!s->have_density)
+        if (w[1][0] == 'l' && !s->have_density)
             return sbc_fail(err, SBC_ERR_INPUT, "write_packing lammps: no density (use 'density RHO' first: the data "
                                                 "file carries the masses)");
         if ((st = sbc_frame_detect_packing(&frame, &s->packing, err)) != SBC_OK)
@@ -74,7 +73,8 @@ sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
         }
         for (k = 0; k < frame.n; ++k)
             is_frame[frame.particle[k]] = 1;
-        st = sbc_packing_write_lammps(&s->packing, is_frame, s->density, w[2], err);
+        st = w[1][0] == 'l' ? sbc_packing_write_lammps(&s->packing, is_frame, s->density, w[2], err)
+                            : sbc_packing_write_yade(&s->packing, is_frame, w[2], err);
         free(is_frame);
         sbc_frame_free(&frame);
         return st;

@@ -11,6 +11,7 @@ set -u
 lmp=$(cd "$(dirname "${1:?usage: cross_host.sh LMP_SERVO SERVO_BC}")" && pwd)/$(basename "$1")
 emb=$(cd "$(dirname "${2:?usage: cross_host.sh LMP_SERVO SERVO_BC}")" && pwd)/$(basename "$2")
 side=${3:-10} inc=${4:-30}
+here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 pass=0 fail=0
 F=$(awk -v t="$inc" 'BEGIN { t /= 300; printf "%.17g %.17g %.17g %.17g", 1 - 0.03 * t, -0.3 * t, -0.3 * t, 1 - 0.03 * t }')
@@ -51,10 +52,7 @@ run             10000000
 LMP
   "$emb" "$tmp/$bc.sbc" > "$tmp/emb_$bc.log" 2>&1 || { echo "servo-bc $bc failed:"; tail -3 "$tmp/emb_$bc.log"; }
   (cd "$tmp" && "$lmp" -in "$bc.in" -log none > "lmp_$bc.log" 2>&1) || { echo "lmp_servo $bc failed:"; tail -3 "$tmp/lmp_$bc.log"; }
-  res=$(paste -d, "$tmp/emb_$bc.csv" "$tmp/lmp_$bc.csv" | awk -F, 'NR > 1 {
-      for (c = 10; c <= 13; c++) { a = $c < 0 ? -$c : $c; if (a > s) s = a; d = $c - $(c + 20); if (d < 0) d = -d; if (d > m) m = d }
-      n++ }
-    END { printf "%d %.4g", n, (s > 0 ? 100 * m / s : 100) }')
+  res=$(paste -d, "$tmp/emb_$bc.csv" "$tmp/lmp_$bc.csv" | awk -F, -f "$here/../sigma_diff.awk")
   set -- $res
   if [ "${1:-0}" = $((inc + 1)) ] && awk -v e="${2:-100}" 'BEGIN { exit !(e <= 0.5) }'; then
     pass=$((pass + 1)); echo "cross-host ($bc), $((side * side)) particles: $((inc + 1)) increments, max |sigma_lammps - sigma_embedded| = $2 % of the stress scale"

@@ -13,6 +13,7 @@
 #define SBC_CONTROLLER_H
 
 #include "sbc/frame.h"
+#include "sbc/relax.h"
 #include "sbc/settings.h"
 
 typedef enum sbc_event {
@@ -74,6 +75,17 @@ sbc_commands sbc_controller_commands(const sbc_controller *c);
  * holds a message naming the BC, the increment, the step or iteration and
  * the offending value. */
 sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err);
+
+/* What sbc_controller_step will read of this step's snapshot, for hosts
+ * that measure lazily (a contact sum and an MPI reduction saved on most
+ * steps). Call with the interior's Ek and ep = SBC_RELAX_EP_UNMEASURED
+ * (relax.h); if the answer has SBC_NEED_POTENTIAL, measure Ep and call again
+ * with it. SBC_NEED_FRAME: the relaxation ends on this step, so pass the
+ * frame arrays and the contact statistics. What is not needed may be left
+ * NULL (frame arrays) or SBC_RELAX_EP_UNMEASURED (Ep); the decisions are
+ * those of a fully measured snapshot. */
+enum { SBC_NEED_POTENTIAL = 1u, SBC_NEED_FRAME = 2u };
+unsigned sbc_controller_needs(const sbc_controller *c, double ek, double ep);
 
 /* The result of the last accepted increment. */
 const sbc_result *sbc_controller_result(const sbc_controller *c);

@@ -1,0 +1,62 @@
+/* servo_bc: the core behind one opaque handle, for hosts that reach C through
+ * a foreign-function interface (YADE's Python via ctypes) and should not
+ * mirror the core's structs. Plain types only: words as one string, arrays
+ * of doubles, events as ints, messages as C strings owned by the handle.
+ *
+ * One handle = parsed settings + frame + controller + the CSV of `file`.
+ * Per host step: sbc_host_needs (relax.h, controller.h: what to measure),
+ * sbc_host_step, then the commands (sbc_host_command_*). */
+#ifndef SBC_HOST_H
+#define SBC_HOST_H
+
+#include <stddef.h>
+
+#include "sbc/controller.h"
+
+typedef struct sbc_host sbc_host;
+
+/* words: the servo_bc words, BC first ("P F 1 0.1 0 1 increments 10 ...").
+ * n particles with centres xy [2n] (m), radii r [n] (m), masses m [n] (kg).
+ * The frame: when the words name one (`frame NAME`), the host resolves NAME
+ * to the indices list [nlist] (any order; the core orders them); otherwise
+ * list must be empty and the frame is detected from the centres. dt: the
+ * host's time step (s). Returns NULL on failure with the message in msg (cap
+ * bytes, which may be 0). */
+sbc_host *sbc_host_create(const char *words, int n, const double *xy, const double *r, const double *m, int nlist,
+                          const int *list, double dt, char *msg, size_t cap);
+void sbc_host_free(sbc_host *h);
+
+/* The damping of eq. 10, which a host applies itself: returns 1 and sets
+ * alpha, beta when the words ask for damping, 0 otherwise. */
+int sbc_host_damping(const sbc_host *h, double *alpha, double *beta);
+
+/* Q and the frame's particles [Q], as indices into the creation arrays, in
+ * frame order (the order of every per-frame array below). */
+int sbc_host_frame_size(const sbc_host *h);
+const int *sbc_host_frame_particles(const sbc_host *h);
+
+/* sbc_controller_needs. */
+unsigned sbc_host_needs(const sbc_host *h, double ek, double ep);
+
+/* One host step (sbc_controller_step) with the snapshot's fields as
+ * arguments; frame arrays may be NULL where sbc_host_needs allowed it.
+ * Returns the sbc_event; on SBC_EVENT_INCREMENT and SBC_EVENT_FINISHED the
+ * result row has been written to the CSV. On SBC_EVENT_FAILED the message is
+ * in sbc_host_message. */
+int sbc_host_step(sbc_host *h, double ek, double ep, double overlap_sum, long contact_count, double rotation_sum,
+                  long particle_count, const double *x, const double *theta, const double *force,
+                  const double *torque);
+const char *sbc_host_message(const sbc_host *h);
+
+/* The commands in force: target positions [2Q] (m), rotations [Q] (rad),
+ * free-rotation flags [Q]; valid until the next sbc_host_step. */
+const double *sbc_host_command_x(const sbc_host *h);
+const double *sbc_host_command_theta(const sbc_host *h);
+const unsigned char *sbc_host_command_free(const sbc_host *h);
+
+/* The last accepted increment as SBC_HOST_ROW doubles, in the columns of
+ * sbc_csv_header (results.h), followed by the Hill-Mandel residual. */
+#define SBC_HOST_ROW 21
+void sbc_host_result(const sbc_host *h, double *row);
+
+#endif

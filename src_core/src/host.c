@@ -1,0 +1,170 @@
+/* The core behind one handle, for hosts reaching C through an FFI (host.h). */
+#include "sbc/host.h"
+
+#include "sbc/results.h"
+#include "words.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct sbc_host {
+    sbc_settings settings;
+    sbc_frame frame;
+    sbc_controller *ctl;
+    FILE *csv;
+    sbc_error err;
+};
+
+static sbc_host *fail_create(sbc_host *h, const sbc_error *err, char *msg, size_t cap)
+{
+    if (msg && cap > 0)
+        snprintf(msg, cap, "%s", err->message);
+    sbc_host_free(h);
+    return NULL;
+}
+
+sbc_host *sbc_host_create(const char *words, int n, const double *xy, const double *r, const double *m, int nlist,
+                          const int *list, double dt, char *msg, size_t cap)
+{
+    sbc_host *h = calloc(1, sizeof *h);
+    sbc_error err;
+    char *line, **w;
+    int nw, q;
+    double *frame_mass;
+    sbc_error_clear(&err);
+    if (!h || !words) {
+        sbc_fail(&err, SBC_ERR_NOMEM, "servo_bc: out of memory");
+        return fail_create(h, &err, msg, cap);
+    }
+    if (!(line = malloc(strlen(words) + 1))) {
+        sbc_fail(&err, SBC_ERR_NOMEM, "servo_bc: out of memory");
+        return fail_create(h, &err, msg, cap);
+    }
+    strcpy(line, words);
+    nw = sbc_split_words(line, NULL, 0);
+    strcpy(line, words);
+    w = malloc(sizeof *w * (size_t)(nw > 0 ? nw : 1));
+    if (!w) {
+        free(line);
+        sbc_fail(&err, SBC_ERR_NOMEM, "servo_bc: out of memory");
+        return fail_create(h, &err, msg, cap);
+    }
+    sbc_split_words(line, w, nw);
+    if (sbc_settings_parse(&h->settings, nw, (const char *const *)w, &err) != SBC_OK) {
+        free(w);
+        free(line);
+        return fail_create(h, &err, msg, cap);
+    }
+    free(w);
+    free(line);
+    if (n < 4) {
+        sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: %d particles given; a frame needs at least 4", n);
+        return fail_create(h, &err, msg, cap);
+    }
+    if (h->settings.frame_group[0] && nlist < 1) {
+        sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: keyword 'frame': '%s' names no particle", h->settings.frame_group);
+        return fail_create(h, &err, msg, cap);
+    }
+    if (!h->settings.frame_group[0] && nlist > 0) {
+        sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: %d frame particles given but no keyword 'frame'", nlist);
+        return fail_create(h, &err, msg, cap);
+    }
+    for (q = 0; q < nlist; ++q)
+        if (list[q] < 0 || list[q] >= n) {
+            sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: keyword 'frame': particle index %d is not in [0, %d)", list[q], n);
+            return fail_create(h, &err, msg, cap);
+        }
+    if ((nlist > 0 ? sbc_frame_from_list(&h->frame, nlist, list, xy, r, &err)
+                   : sbc_frame_detect(&h->frame, n, xy, r, 0.0, &err)) != SBC_OK)
+        return fail_create(h, &err, msg, cap);
+    if (!(frame_mass = malloc(sizeof *frame_mass * (size_t)h->frame.n))) {
+        sbc_fail(&err, SBC_ERR_NOMEM, "servo_bc: out of memory");
+        return fail_create(h, &err, msg, cap);
+    }
+    for (q = 0; q < h->frame.n; ++q)
+        frame_mass[q] = m[h->frame.particle[q]];
+    h->ctl = sbc_controller_create(&h->frame, &h->settings, frame_mass, dt, &err);
+    free(frame_mass);
+    if (!h->ctl)
+        return fail_create(h, &err, msg, cap);
+    if (h->settings.file[0] && sbc_csv_open(&h->csv, h->settings.file, &err) != SBC_OK)
+        return fail_create(h, &err, msg, cap);
+    return h;
+}
+
+void sbc_host_free(sbc_host *h)
+{
+    if (!h)
+        return;
+    sbc_controller_free(h->ctl);
+    sbc_frame_free(&h->frame);
+    if (h->csv)
+        fclose(h->csv);
+    free(h);
+}
+
+int sbc_host_damping(const sbc_host *h, double *alpha, double *beta)
+{
+    *alpha = h->settings.damping ? h->settings.alpha : 0.0;
+    *beta = h->settings.damping ? h->settings.beta : 0.0;
+    return h->settings.damping;
+}
+
+int sbc_host_frame_size(const sbc_host *h) { return h->frame.n; }
+
+const int *sbc_host_frame_particles(const sbc_host *h) { return h->frame.particle; }
+
+unsigned sbc_host_needs(const sbc_host *h, double ek, double ep) { return sbc_controller_needs(h->ctl, ek, ep); }
+
+int sbc_host_step(sbc_host *h, double ek, double ep, double overlap_sum, long contact_count, double rotation_sum,
+                  long particle_count, const double *x, const double *theta, const double *force,
+                  const double *torque)
+{
+    sbc_snapshot s;
+    sbc_event ev;
+    s.x = x;
+    s.theta = theta;
+    s.force = force;
+    s.torque = torque;
+    s.kinetic_energy = ek;
+    s.potential_energy = ep;
+    s.overlap_sum = overlap_sum;
+    s.contact_count = contact_count;
+    s.rotation_sum = rotation_sum;
+    s.particle_count = particle_count;
+    ev = sbc_controller_step(h->ctl, &s, &h->err);
+    if ((ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) && h->csv &&
+        sbc_csv_write(h->csv, sbc_controller_result(h->ctl), &h->err) != SBC_OK)
+        return SBC_EVENT_FAILED;
+    return (int)ev;
+}
+
+const char *sbc_host_message(const sbc_host *h) { return h->err.message; }
+
+const double *sbc_host_command_x(const sbc_host *h) { return sbc_controller_commands(h->ctl).x; }
+
+const double *sbc_host_command_theta(const sbc_host *h) { return sbc_controller_commands(h->ctl).theta; }
+
+const unsigned char *sbc_host_command_free(const sbc_host *h)
+{
+    return sbc_controller_commands(h->ctl).free_rotation;
+}
+
+void sbc_host_result(const sbc_host *h, double *row)
+{
+    const sbc_result *r = sbc_controller_result(h->ctl);
+    int k, at = 0;
+    row[at++] = r->increment;
+    for (k = 0; k < 4; ++k) row[at++] = r->F[k];
+    for (k = 0; k < 4; ++k) row[at++] = r->P[k];
+    for (k = 0; k < 4; ++k) row[at++] = r->sigma[k];
+    row[at++] = r->overlap_mean;
+    row[at++] = r->rotation_mean;
+    row[at++] = r->iterations;
+    row[at++] = (double)r->relax_steps;
+    row[at++] = r->r_force;
+    row[at++] = r->r_moment;
+    row[at++] = r->r_deformation;
+    row[at] = r->hill_mandel; /* at = SBC_HOST_ROW - 1 */
+}

@@ -1,0 +1,92 @@
+# The YADE engine on the closed-form lattice of tests/test_lattice.c, and its
+# refusals. Run: yade -n -x tests/yade/closed_form.py PACKING (a 5 x 5 lattice,
+# spacing 2 mm, R = 1.02 mm, written by the runner). Prints "N passed, N failed".
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), '..', '..', 'yade_adapter'))
+import servo_bc  # noqa: E402
+
+packing = sys.argv[1]
+passed = failed = 0
+
+
+def check(ok, label):
+    global passed, failed
+    if ok:
+        passed += 1
+        print('yade %s' % label)
+    else:
+        failed += 1
+        print('FAIL yade %s' % label)
+
+
+def closed_form(bc, extra):
+    """P11 = -N kn (2R - d F11)/((N-1) d), P22 likewise, P12 = P21 = 0 (frictionless)."""
+    words = '%s F 1.002 0 0 0.997 increments 2 relax 1e-22 20 %s' % (bc, extra)
+    servo = servo_bc.run_case(packing, words, density=2e3, kn=1e4, ks=0.0, mu=0.4, dt=1e-5)
+    worst = 0.0
+    for row in servo.rows:
+        t = row['increment'] / 2.0
+        f11, f22 = 1 + t * 0.002, 1 - t * 0.003
+        p11 = -5 * 1e4 * (2.04e-3 - 2e-3 * f11) / (4 * 2e-3)
+        p22 = -5 * 1e4 * (2.04e-3 - 2e-3 * f22) / (4 * 2e-3)
+        worst = max(worst, abs(row['P11'] - p11) / -p11, abs(row['P22'] - p22) / -p22,
+                    abs(row['P12']) / -p11, abs(row['P21']) / -p11)
+    check(len(servo.rows) == 3 and worst <= 1e-9,
+          '(%s) closed form: %d increments, max relative error %.3g' % (bc, len(servo.rows), worst))
+
+
+closed_form('D', '')
+closed_form('P', 'tol_force 1e-14 tol_moment 1e-14 gain_force 1e3 gain_moment 1e3')
+
+# kn, ks hold exactly on every contact, for unequal radii too (Ip2 MatchMakers)
+servo_bc.O.reset()
+mat = servo_bc.O.materials.append(servo_bc.FrictMat(young=1e7, poisson=0.3, frictionAngle=0.4))
+a = servo_bc.O.bodies.append(servo_bc.utils.sphere((0, 0, 0), 1e-3, material=mat))
+b = servo_bc.O.bodies.append(servo_bc.utils.sphere((2.4e-3, 0, 0), 1.5e-3, material=mat))
+
+
+class Frozen(object):
+    engine = servo_bc.PyRunner(command='pass', iterPeriod=1000000)
+    damping = 0.0
+
+
+servo_bc.O.engines = servo_bc.engines(Frozen, kn=1e4, ks=2e3)
+servo_bc.O.dt = 1e-7
+servo_bc.O.run(1, True)
+i = servo_bc.O.interactions[a, b]
+check(i.phys.kn == 1e4 and i.phys.ks == 2e3, 'stiffness: kn = %g, ks = %g on a contact of radii 1 and 1.5 mm'
+      % (i.phys.kn, i.phys.ks))
+
+
+def refused(words, expect, **keywords):
+    servo_bc.O.reset()
+    ids, _ = servo_bc.load_packing(packing, 2e3, 1e4, 2e3, 0.4)
+    try:
+        servo_bc.ServoBC(words, ids, 1e-5, **keywords)
+        check(False, "refuses '%s' (accepted)" % words)
+    except servo_bc.ServoBCError as e:
+        check(expect in str(e), "refuses '%s': %s" % (words, e))
+
+
+refused('D F 1 2 2 1', "keyword 'F': det F = -3 is not positive")
+refused('D F 1 0 0 1 foo 3', "foo")
+refused('Q', "'Q'")
+refused('D', 'increments', increments=0)
+refused('D damping 0.7 0.5', "alpha 0.7 and beta 0.5 differ")
+refused('D frame boundary', "'boundary' is not a YADE group mask")
+refused('D frame 64', "keyword 'frame': '64' names no particle")
+
+# a diverging controller stops the run with the core's message, no NaN
+servo_bc.O.reset()
+try:
+    servo_bc.run_case(packing, 'P F 0.99 -0.02 -0.02 0.99 increments 2 tol_force 1e-14 gain_force 1e9', 2e3, 1e4,
+                      2e3, 0.4, 1e-5)
+    check(False, 'divergence: no error')
+except servo_bc.ServoBCError as e:
+    check('increment 1, iteration 0' in str(e) and 'half its radius' in str(e), 'divergence: %s' % e)
+
+print('%d passed, %d failed' % (passed, failed))
+sys.exit(1 if failed else 0)

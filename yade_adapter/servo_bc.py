@@ -1,0 +1,412 @@
+"""servo_bc for YADE: micro-scale boundary conditions (D), (P), (T), mixed on a
+frame of boundary particles, driven by the servo_bc core (libservo_bc.so).
+
+Python only moves data between YADE and the core (ctypes over sbc/host.h);
+every decision -- relaxation, residuals, corrections, increments -- is the
+core's, the same code that drives the embedded engine and the LAMMPS fix.
+ctypes rather than a CPython extension: YADE ships no C++ headers, the core
+already builds as a shared library, and the per-step cost is YADE's attribute
+access, not the call (see docs/yade/servo_bc.md for the measured split).
+
+Usage (2D: spheres in z = 0 with blockedDOFs 'zXY'):
+
+    import servo_bc
+    ids, frame = servo_bc.load_packing('packing.yade', density=2e3, kn=1e4, ks=2e3, mu=0.4)
+    servo = servo_bc.ServoBC('P F 1 0.1 0 1 increments 10 file out.csv', ids, dt=1e-6)
+    O.engines = servo_bc.engines(servo, kn=1e4, ks=2e3)
+    servo.run()          # returns when the path is finished; raises ServoBCError otherwise
+"""
+import ctypes
+import math
+import os
+
+from yade import O, utils
+from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop,
+                          Ig2_Sphere_Sphere_ScGeom, Ip2_FrictMat_FrictMat_FrictPhys,
+                          Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator, PyRunner, FrictMat,
+                          MatchMaker)
+
+__all__ = ['ServoBCError', 'ServoBC', 'load_packing', 'engines', 'run_case', 'COLUMNS', 'FRAME_MASK']
+
+# the CSV columns of DESIGN.md (sbc_csv_header), then the Hill-Mandel residual
+COLUMNS = ('increment', 'F11', 'F12', 'F21', 'F22', 'P11', 'P12', 'P21', 'P22', 'sigma11', 'sigma12',
+           'sigma21', 'sigma22', 'overlap_mean', 'rotation_mean', 'iterations', 'relax_steps', 'r_force',
+           'r_moment', 'r_deformation', 'hill_mandel')
+ROW = len(COLUMNS)                      # SBC_HOST_ROW
+EP_UNMEASURED = -1.0                    # SBC_RELAX_EP_UNMEASURED
+NEED_POTENTIAL, NEED_FRAME = 1, 2       # SBC_NEED_*
+RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED = range(5)   # sbc_event
+RATTLER_SCAN = 1000                     # steps between full scans for contact-free bodies
+FRAME_MASK = 2                          # groupMask bit of the frame bodies load_packing flags
+
+
+class ServoBCError(RuntimeError):
+    """A servo_bc message: bad words, a frame that cannot be built, a diverging controller."""
+
+
+def _library():
+    here = os.path.dirname(os.path.abspath(__file__))
+    candidates = [os.environ.get('SERVO_BC_LIB', ''), os.path.join(here, 'libservo_bc.so'),
+                  os.path.join(here, '..', 'build', 'libservo_bc.so')]
+    for path in candidates:
+        if path and os.path.exists(path):
+            lib = ctypes.CDLL(os.path.abspath(path))
+            break
+    else:
+        raise ServoBCError('servo_bc: libservo_bc.so not found (run `make yade`, or set SERVO_BC_LIB)')
+    D, I, L, P = ctypes.c_double, ctypes.c_int, ctypes.c_long, ctypes.c_void_p
+    pd, pi = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_int)
+    sig = {
+        'sbc_host_create': (P, [ctypes.c_char_p, I, pd, pd, pd, I, pi, D, ctypes.c_char_p, ctypes.c_size_t]),
+        'sbc_host_free': (None, [P]),
+        'sbc_host_frame_size': (I, [P]),
+        'sbc_host_frame_particles': (pi, [P]),
+        'sbc_host_needs': (ctypes.c_uint, [P, D, D]),
+        'sbc_host_step': (I, [P, D, D, D, L, D, L, pd, pd, pd, pd]),
+        'sbc_host_message': (ctypes.c_char_p, [P]),
+        'sbc_host_command_x': (pd, [P]),
+        'sbc_host_command_theta': (pd, [P]),
+        'sbc_host_command_free': (ctypes.POINTER(ctypes.c_ubyte), [P]),
+        'sbc_host_result': (None, [P, pd]),
+        'sbc_host_damping': (I, [P, pd, pd]),
+    }
+    for name, (res, args) in sig.items():
+        fn = getattr(lib, name)
+        fn.restype, fn.argtypes = res, args
+    return lib
+
+
+_lib = None
+
+
+def _core():
+    global _lib
+    if _lib is None:
+        _lib = _library()
+    return _lib
+
+
+def _doubles(values):
+    return (ctypes.c_double * len(values))(*values)
+
+
+def load_packing(path, density, kn, ks, mu, young=None):
+    """Creates the discs of a packing written by the runner (`write_packing yade FILE`:
+    x y z r frame per line, m). Each disc gets the 2D mass rho_A pi R^2 (density: kg/m^2)
+    and the disc inertia M R^2 / 2 about z, so that the dynamics are the embedded
+    engine's; blockedDOFs 'zXY'. Material: FrictMat with friction angle atan(mu); the
+    stiffnesses kn, ks (N/m) are imposed per contact by engines(). Particles flagged in the
+    fifth column get the groupMask bit FRAME_MASK (servo words `frame 2`).
+    Returns (ids, frame_ids)."""
+    if not (density > 0 and kn > 0 and ks >= 0 and mu >= 0):
+        raise ServoBCError('servo_bc load_packing: density %g, kn %g must be > 0; ks %g, mu %g >= 0'
+                           % (density, kn, ks, mu))
+    rows = []
+    with open(path) as f:
+        for number, line in enumerate(f, 1):
+            words = line.split('#', 1)[0].split()
+            if not words:
+                continue
+            if len(words) not in (4, 5):
+                raise ServoBCError('servo_bc load_packing: %s:%d: expected "x y z r [frame]", got %d words'
+                                   % (path, number, len(words)))
+            try:
+                values = [float(w) for w in words]
+            except ValueError:
+                raise ServoBCError('servo_bc load_packing: %s:%d: not a number in "%s"' % (path, number, line.strip()))
+            rows.append(values)
+    if not rows:
+        raise ServoBCError('servo_bc load_packing: %s holds no particle' % path)
+    rmin = min(r[3] for r in rows)
+    mat = O.materials.append(FrictMat(young=young or kn / rmin, poisson=ks / kn, frictionAngle=math.atan(mu),
+                                      density=1.0))
+    ids, frame = [], []
+    for x, y, z, r, *flag in rows:
+        b = utils.sphere((x, y, z), r, material=mat)
+        m = density * math.pi * r * r
+        b.state.mass = m
+        b.state.inertia = (0.5 * m * r * r,) * 3
+        b.state.blockedDOFs = 'zXY'
+        i = O.bodies.append(b)
+        ids.append(i)
+        if flag and flag[0] != 0:
+            b.groupMask |= FRAME_MASK
+            frame.append(i)
+    return ids, frame
+
+
+def run_case(packing, words, density, kn, ks, mu, dt, max_steps=None):
+    """One servo_bc run on a packing file: the discs, the engines, the loading path.
+    Returns the ServoBC object (rows, plot_data); raises ServoBCError on failure."""
+    O.reset()
+    ids, _ = load_packing(packing, density, kn, ks, mu)
+    servo = ServoBC(words, ids, dt)
+    O.engines = engines(servo, kn, ks)
+    servo.run(max_steps)
+    return servo
+
+
+def engines(servo, kn, ks):
+    """The engine list of a servo_bc scene: contact law of eq. 6 with kn, ks (N/m) on every
+    contact (Ip2 MatchMakers: exact for any radii), the servo_bc engine after the forces and
+    before NewtonIntegrator, whose damping is eq. 10 with alpha = beta."""
+    return [ForceResetter(),
+            InsertionSortCollider([Bo1_Sphere_Aabb()]),
+            InteractionLoop([Ig2_Sphere_Sphere_ScGeom()],
+                            [Ip2_FrictMat_FrictMat_FrictPhys(kn=MatchMaker(algo='val', val=kn),
+                                                             ks=MatchMaker(algo='val', val=ks))],
+                            [Law2_ScGeom_FrictPhys_CundallStrack(label='servo_bc_law')]),
+            servo.engine,
+            NewtonIntegrator(damping=servo.damping, label='servo_bc_newton')]
+
+
+_instances = []
+
+
+class ServoBC(object):
+    """The servo_bc engine. words: the servo_bc words (BC first), the grammar of every host;
+    or the words as keyword arguments (ServoBC('P', F=(1, .1, 0, 1), increments=10)).
+    bodies: the specimen's body ids. A `frame MASK` word takes the frame from the bodies
+    whose groupMask shares a bit with MASK; otherwise the core detects it. dt: O.dt (s).
+    done: called with this object when the path finishes or fails."""
+
+    def __init__(self, words, bodies, dt, done=None, **keywords):
+        lib = _core()
+        for key, value in keywords.items():
+            values = value if isinstance(value, (tuple, list)) else (value,)
+            words += ' %s %s' % (key, ' '.join(str(v) for v in values))
+        self.words = words
+        self.bodies = list(bodies)
+        self.dt = float(dt)
+        self.done = done
+        self.rows = []            # one dict per converged increment (yade.plot: see plot_data)
+        self.error = None
+        self.finished = False
+        self.steps = 0
+        n = len(self.bodies)
+        xy, r, m = [], [], []
+        for i in self.bodies:
+            b = O.bodies[i]
+            xy += [b.state.pos[0], b.state.pos[1]]
+            r.append(b.shape.radius)
+            m.append(b.state.mass)
+        frame_list = self._frame_list(words)
+        msg = ctypes.create_string_buffer(512)
+        lst = (ctypes.c_int * max(1, len(frame_list)))(*frame_list)
+        self._h = lib.sbc_host_create(words.encode(), n, _doubles(xy), _doubles(r), _doubles(m), len(frame_list),
+                                      lst, self.dt, msg, 512)
+        if not self._h:
+            text = msg.value.decode()
+            raise ServoBCError(text if text.startswith('servo_bc') else 'servo_bc: ' + text)
+        alpha, beta = ctypes.c_double(), ctypes.c_double()
+        if lib.sbc_host_damping(self._h, ctypes.byref(alpha), ctypes.byref(beta)):
+            if alpha.value != beta.value:
+                raise ServoBCError('servo_bc: keyword damping: alpha %g and beta %g differ; YADE\'s NewtonIntegrator '
+                                   'damps forces and moments with one factor' % (alpha.value, beta.value))
+            self.damping = alpha.value
+        else:
+            self.damping = 0.0
+        self.Q = lib.sbc_host_frame_size(self._h)
+        particles = lib.sbc_host_frame_particles(self._h)
+        self.frame = [self.bodies[particles[q]] for q in range(self.Q)]
+        frame_set = set(self.frame)
+        self.interior = [i for i in self.bodies if i not in frame_set]
+        self.theta = [0.0] * self.Q           # the frame's rotations, kept here (prescribed ones)
+        self._free = None
+        self._rattlers = []
+        self._law_functor = None
+        self._states = [O.bodies[i].state for i in self.frame]
+        self._moving = False
+        self._buffers = [(ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)(),
+                         (ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)()]
+        self._row = (ctypes.c_double * ROW)()
+        _instances.append(self)
+        self.engine = PyRunner(command='import servo_bc; servo_bc._instances[%d].step()' % (len(_instances) - 1),
+                               iterPeriod=1, label='servo_bc_%d' % (len(_instances) - 1))
+        self._apply_commands()
+
+    def _frame_list(self, words):
+        w = words.split('#', 1)[0].split()
+        if 'frame' not in w[1:]:
+            return []
+        k = w.index('frame', 1)
+        if k + 1 >= len(w):
+            return []                        # the core names the missing value
+        try:
+            mask = int(w[k + 1])
+        except ValueError:
+            raise ServoBCError("servo_bc: keyword 'frame': '%s' is not a YADE group mask (an integer)" % w[k + 1])
+        return [k for k, i in enumerate(self.bodies) if O.bodies[i].groupMask & mask]
+
+    def __del__(self):
+        if getattr(self, '_h', None) and _lib is not None:
+            _lib.sbc_host_free(self._h)
+            self._h = None
+
+    # -- one step -----------------------------------------------------------
+    def _kinetic_energy(self):
+        """Ek of the interior (eq. 12): YADE's sum over dynamic bodies (prescribed frame
+        bodies are not dynamic) less freely rotating frame bodies and contact-free rattlers,
+        which the core leaves out (relax.h). The velocities are YADE's at this point of the
+        step, half a step before the embedded engine's."""
+        ek = utils.kineticEnergy()
+        if self._free_any:
+            for q, s in enumerate(self._states):
+                if self._free[q]:
+                    ek -= 0.5 * s.inertia[2] * s.angVel[2] ** 2
+                    if self._moving:
+                        ek -= 0.5 * s.mass * s.vel.squaredNorm()
+        if self.steps % RATTLER_SCAN == 0:
+            self._rattlers = [i for i in self.interior if self._contact_free(i)]
+        for i in self._rattlers:
+            if self._contact_free(i):
+                s = O.bodies[i].state
+                ek -= 0.5 * (s.mass * s.vel.squaredNorm() + s.inertia[2] * s.angVel[2] ** 2)
+        return max(ek, 0.0)
+
+    def _law(self):
+        if self._law_functor is None:
+            loops = [e for e in O.engines if isinstance(e, InteractionLoop)]
+            laws = [f for e in loops for f in e.lawDispatcher.functors
+                    if isinstance(f, Law2_ScGeom_FrictPhys_CundallStrack)]
+            if not laws:
+                raise ServoBCError('servo_bc: Ep (eq. 12) needs Law2_ScGeom_FrictPhys_CundallStrack in an '
+                                   'InteractionLoop of O.engines (see servo_bc.engines)')
+            self._law_functor = laws[0]
+        return self._law_functor
+
+    @staticmethod
+    def _contact_free(i):
+        return O.forces.f(i).squaredNorm() == 0.0 and O.forces.t(i)[2] == 0.0
+
+    def _potential_energy(self):
+        """Ep (eq. 12): sum over contacts of Fn^2/2kn + Fs^2/2ks. The law's own sum (C++)
+        divides by ks, which is 0 for frictionless contacts: then the sum is taken here."""
+        ep = self._law().elasticEnergy()
+        if math.isfinite(ep):
+            return ep
+        ep = 0.0
+        for I in O.interactions:
+            if I.isReal:
+                p = I.phys
+                ep += 0.5 * p.normalForce.squaredNorm() / p.kn
+                if p.ks > 0.0:
+                    ep += 0.5 * p.shearForce.squaredNorm() / p.ks
+        return ep
+
+    def _contact_sums(self):
+        ov, nc = 0.0, 0
+        for I in O.interactions:
+            if I.isReal and I.geom.penetrationDepth > 0.0:
+                ov += I.geom.penetrationDepth / (0.5 * (I.geom.refR1 + I.geom.refR2))
+                nc += 1
+        return ov, nc
+
+    def step(self):
+        """Called by the PyRunner each step, after the forces and before NewtonIntegrator."""
+        if self.finished:
+            return
+        try:
+            self._step()
+        except ServoBCError as e:
+            self._stop(e)
+
+    def _step(self):
+        lib = _core()
+        ek = self._kinetic_energy()
+        ep = EP_UNMEASURED
+        need = lib.sbc_host_needs(self._h, ek, EP_UNMEASURED)
+        if need & NEED_POTENTIAL:
+            ep = self._potential_energy()
+            need = lib.sbc_host_needs(self._h, ek, ep)
+        if need & NEED_FRAME:
+            x, theta, force, torque = self._buffers
+            for q, i in enumerate(self.frame):
+                s = self._states[q]
+                f, t = O.forces.f(i), O.forces.t(i)
+                x[2 * q], x[2 * q + 1] = s.pos[0], s.pos[1]
+                force[2 * q], force[2 * q + 1] = f[0], f[1]
+                torque[q] = t[2]
+                theta[q] = self._frame_theta(q, s)
+            ov, nc = self._contact_sums()
+            rot = sum(abs(O.bodies[i].state.rot()[2]) for i in self.interior) + sum(abs(v) for v in theta)
+            ev = lib.sbc_host_step(self._h, ek, ep, ov, nc, rot, len(self.bodies), x, theta, force, torque)
+        else:
+            ev = lib.sbc_host_step(self._h, ek, ep, 0.0, 0, 0.0, 0, None, None, None, None)
+        self.steps += 1
+        if ev == FAILED:
+            self._stop(ServoBCError(lib.sbc_host_message(self._h).decode()))
+            return
+        if ev in (INCREMENT, FINISHED):
+            lib.sbc_host_result(self._h, self._row)
+            row = dict(zip(COLUMNS, self._row))
+            self.rows.append(row)
+            print('servo_bc: increment %d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %d iterations %d'
+                  % (row['increment'], row['F12'], row['sigma11'], row['sigma12'], row['relax_steps'],
+                     row['iterations']), flush=True)
+        if ev == FINISHED:
+            self._stop(None)
+            return
+        self._apply_commands(ev in (CORRECTED, INCREMENT))
+
+    def _frame_theta(self, q, state):
+        return state.rot()[2] if self._free[q] else self.theta[q]
+
+    def _apply_commands(self, changed=True):
+        """Frame bodies reach new targets within the next NewtonIntegrator pass
+        (velocity = (target - position) / dt) and are stopped on the step after;
+        prescribed rotations likewise; free ones ((T)) are integrated by YADE
+        (blockedDOFs 'xyzXY'). Steps without new commands cost nothing here."""
+        if not changed:
+            if self._moving:
+                for q, s in enumerate(self._states):
+                    s.vel = (0.0, 0.0, 0.0)
+                    if not self._free[q]:
+                        s.angVel = (0.0, 0.0, 0.0)
+                self._moving = False
+            return
+        lib = _core()
+        cx = lib.sbc_host_command_x(self._h)
+        ct = lib.sbc_host_command_theta(self._h)
+        cf = lib.sbc_host_command_free(self._h)
+        free = [bool(cf[q]) for q in range(self.Q)]
+        if free != self._free:
+            self._free = free
+            self._free_any = any(free)
+            for q, s in enumerate(self._states):
+                s.blockedDOFs = 'xyzXY' if free[q] else 'xyzXYZ'
+        inv = 1.0 / self.dt
+        for q, s in enumerate(self._states):
+            pos = s.pos
+            s.vel = ((cx[2 * q] - pos[0]) * inv, (cx[2 * q + 1] - pos[1]) * inv, 0.0)
+            if not free[q]:
+                s.angVel = (0.0, 0.0, (ct[q] - self.theta[q]) * inv)
+                self.theta[q] = ct[q]
+        self._moving = True
+
+    def _stop(self, error):
+        self.finished = True
+        self.error = error
+        O.pause()
+        if self.done:
+            self.done(self)
+
+    # -- driving and results --------------------------------------------------
+    def run(self, max_steps=None):
+        """Runs until the loading path is finished; raises ServoBCError with the core's
+        message when it fails, and when max_steps pass first."""
+        O.dt = self.dt
+        if max_steps:
+            O.run(int(max_steps), True)
+        else:
+            O.run()
+            O.wait()
+        if self.error:
+            raise self.error
+        if not self.finished:
+            raise ServoBCError('servo_bc: the loading path is not finished after %d steps (%d increments done)'
+                               % (self.steps, len(self.rows)))
+
+    def plot_data(self):
+        """The converged increments as columns, e.g. for yade.plot.data."""
+        return {c: [row[c] for row in self.rows] for c in COLUMNS}
