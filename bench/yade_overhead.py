@@ -58,6 +58,7 @@ inside[0] = 0.0
 t = time.perf_counter(); O.run(steps, True); driven = time.perf_counter() - t
 n = side * side
 extra = (driven - held) / steps
+print('(%d increments converged in the servo_bc run)' % len(servo.rows))
 print('yade %6d particles: held %.1f us/step (%.0f ns/particle-step), servo_bc %.1f us/step: +%.1f us/step '
       '(%.0f %%), of which core %.1f us, Python marshalling %.1f us'
       % (n, 1e6 * held / steps, 1e9 * held / steps / n, 1e6 * driven / steps, 1e6 * extra,

@@ -47,7 +47,7 @@ enum { VEC_SIZE = 18 };
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), kn(0.0), kt(0.0), inertia(0.5), pair_gran(nullptr),
-    csv(nullptr), finished(0), restored(0), last_step(-1)
+    csv(nullptr), finished(0), restored(0), last_step(-1), frame_still(0), any_free(1)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
@@ -226,8 +226,14 @@ void FixServoBC::setup(int)
 void FixServoBC::initial_integrate(int)
 {
   if (finished) return;
+  // a frame at rest on unchanged targets with no free rotation stays as it is
+  // (x = target, v = omega = 0 since the step after the last move)
+  if (frame_still >= 2 && !any_free) return;
+  frame_still++;
   const double dt = update->dt;
   sbc_commands cmd = sbc_controller_commands(ctl);
+  any_free = 0;
+  for (int q = 0; q < frame.n; q++) any_free |= cmd.free_rotation[q];
   double **x = atom->x, **v = atom->v, **omega = atom->omega, **torque = atom->torque;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & frame_bit)) continue;
@@ -389,6 +395,7 @@ void FixServoBC::post_force(int)
   sbc_error err;
   sbc_event ev = sbc_controller_step(ctl, &snap, &err);
   if (ev == SBC_EVENT_FAILED) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+  if (ev == SBC_EVENT_CORRECTED || ev == SBC_EVENT_INCREMENT) frame_still = 0;
   if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
     last = *sbc_controller_result(ctl);
     if (comm->me == 0) {

@@ -69,6 +69,8 @@ class FixServoBC : public Fix {
   std::vector<double> saved_state;  // controller state from a restart file, loaded in init()
   int restored;                      // the frame came from a restart file
   bigint last_step;                  // timestep of the last controller step
+  int frame_still;                   // steps since the commands last changed (initial_integrate)
+  int any_free;                      // some frame rotation is free ((T)): integrated every step
 
   double interior_pass();
   void contact_pass(double out[3]);

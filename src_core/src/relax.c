@@ -14,26 +14,20 @@ void sbc_relax_start(sbc_relax *r, double tol_E, int window)
     r->ek_known = 0.0;
 }
 
-/* the ratio below which Ek counts without a kinetic-energy maximum */
-static double roundoff_limit(const sbc_relax *r)
-{
-    return r->tol_E < SBC_RELAX_ROUNDOFF ? r->tol_E : SBC_RELAX_ROUNDOFF;
-}
-
 int sbc_relax_needs_potential(const sbc_relax *r, double ek)
 {
     double bound;
     const int past_peak = r->past_peak || (r->steps > 0 && r->rising && ek <= r->ek_prev);
-    if (ek == 0.0)
+    if (ek == 0.0 || !past_peak)
         return 0;
     if (r->known_step == 0 || r->steps + 1 - r->known_step >= SBC_RELAX_EP_REFRESH)
         return 1;
     bound = r->ep_known + r->ek_known - ek;
-    return bound <= 0.0 || ek <= 2.0 * (past_peak ? r->tol_E : roundoff_limit(r)) * bound;
+    return bound <= 0.0 || ek <= 2.0 * r->tol_E * bound;
 }
 
 /* eq. 11: Ek/Ep <= tolE, held for r->window consecutive steps after a
- * kinetic-energy maximum, or Ek/Ep below the round-off limit (see relax.h). */
+ * kinetic-energy maximum (see relax.h). */
 int sbc_relax_update(sbc_relax *r, double ek, double ep)
 {
     int ok;
@@ -52,8 +46,6 @@ int sbc_relax_update(sbc_relax *r, double ek, double ep)
     }
     if (ek == 0.0)
         ok = 1;
-    else if (ep > 0.0 && ek <= roundoff_limit(r) * ep)
-        ok = 1; /* round-off motion of a balanced packing */
     else
         ok = r->past_peak && ep > 0.0 && ek <= r->tol_E * ep;
     r->count = ok ? r->count + 1 : 0;
