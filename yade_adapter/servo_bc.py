@@ -19,6 +19,7 @@ Usage (2D: spheres in z = 0 with blockedDOFs 'zXY'):
 import ctypes
 import math
 import os
+import sys
 
 from yade import O, utils
 from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop,
@@ -225,8 +226,11 @@ class ServoBC(object):
                          (ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)()]
         self._row = (ctypes.c_double * ROW)()
         _instances.append(self)
-        self.engine = PyRunner(command='import servo_bc; servo_bc._instances[%d].step()' % (len(_instances) - 1),
-                               iterPeriod=1, label='servo_bc_%d' % (len(_instances) - 1))
+        # the PyRunner's command runs in __main__: a bound method placed there
+        # costs a name lookup per step instead of an import and an index
+        name = '_servo_bc_step_%d' % (len(_instances) - 1)
+        setattr(sys.modules['__main__'], name, self.step)
+        self.engine = PyRunner(command='%s()' % name, iterPeriod=1, label='servo_bc_%d' % (len(_instances) - 1))
         self._apply_commands()
 
     def _frame_list(self, words):
