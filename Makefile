@@ -3,6 +3,7 @@
 #   make demo     the paper's 25-particle (D) case on the embedded engine
 #   make check    every test: core, ASan+UBSan build, valgrind, LAMMPS (installs what it needs)
 #   make lammps   build/lmp_servo: LAMMPS with fix servo_bc (Debian package)
+#   make liggghts build/liggghts_servo: LIGGGHTS with fix servo_bc (Debian package)
 #   make yade     the YADE engine's library (build/libservo_bc.so) and the Debian YADE package
 #   make bench    benchmarks (prints figures; LAMMPS side when installed)
 
@@ -19,7 +20,8 @@ CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 TEST_HDR = $(wildcard tests/*.h)
 
-.PHONY: all demo check deps check-core check-sanitize check-valgrind check-lammps check-yade lammps yade bench clean
+.PHONY: all demo check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-yade lammps liggghts \
+  yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
 $(B)/core/%.o: src_core/src/%.c $(CORE_HDR)
@@ -52,7 +54,7 @@ demo: all
 	$(B)/servo-bc inputs/demo_D_25.sbc
 
 check: deps
-	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind check-lammps check-yade
+	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind check-lammps check-liggghts check-yade
 
 deps:
 	@bash scripts/install-deps.sh core
@@ -69,7 +71,7 @@ check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 
 # LAMMPS adapter against the Debian package: build/lmp_servo (work in progress, see issues)
 LMP_HDR = $(B)/lammps-headers
-LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h lammps_fix/lmp_servo.cpp
+LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h lammps_fix/fix_servo_bc_lammps.h lammps_fix/lmp_servo.cpp
 
 lammps: $(B)/lmp_servo $(B)/servo_bc_plugin.so
 
@@ -94,6 +96,25 @@ check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_d
 	bash tests/lammps/closed_form.sh $(B)/lmp_servo $(B)/plugin_driver $(B)/servo_bc_plugin.so
 	bash tests/lammps/cross_host.sh $(B)/lmp_servo $(B)/servo-bc
 	bash tests/lammps/mixed_layer.sh $(B)/lmp_servo $(B)/servo-bc
+
+# LIGGGHTS adapter: the LAMMPS fix source compiled against LIGGGHTS 3.8
+# (lammps_fix/fix_servo_bc.cpp with -DSERVO_BC_LIGGGHTS; the differences are in
+# liggghts_fix/fix_servo_bc_liggghts.h)
+LIG_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h liggghts_fix/fix_servo_bc_liggghts.h \
+  liggghts_fix/liggghts_servo.cpp
+
+liggghts: $(B)/liggghts_servo
+
+/usr/include/liggghts/pair_gran.h:
+	@bash scripts/install-deps.sh liggghts-dev
+
+$(B)/liggghts_servo: $(LIG_SRC) $(B)/libservo_bc.a /usr/include/liggghts/pair_gran.h
+	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -DSERVO_BC_LIGGGHTS -Wall -Wextra -isystem /usr/include/liggghts \
+	  -Iliggghts_fix -Ilammps_fix -Isrc_core/include -o $@ liggghts_fix/liggghts_servo.cpp lammps_fix/fix_servo_bc.cpp \
+	  $(B)/libservo_bc.a -lliggghts -lm
+
+check-liggghts: $(B)/liggghts_servo $(B)/lmp_servo $(B)/servo-bc
+	bash tests/liggghts/run.sh $(B)/liggghts_servo $(B)/servo-bc $(B)/lmp_servo
 
 # YADE engine: Python (yade_adapter/servo_bc.py) over the core's shared library
 yade: $(B)/libservo_bc.so $(B)/servo-bc

@@ -1,6 +1,8 @@
 /* ----------------------------------------------------------------------
-   fix servo_bc for LAMMPS (see fix_servo_bc.h). Same keywords as every host:
-   the words after the style are parsed by the core (sbc_settings_parse).
+   fix servo_bc for LAMMPS and LIGGGHTS (see fix_servo_bc.h). Same keywords as
+   every host: the words after the style are parsed by the core
+   (sbc_settings_parse). Only the Fix API the two hosts share is used here;
+   the rest is in fix_servo_bc_lammps.h / fix_servo_bc_liggghts.h.
 ------------------------------------------------------------------------- */
 
 #include "fix_servo_bc.h"
@@ -9,7 +11,6 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_neigh_history.h"
 #include "force.h"
 #include "group.h"
 #include "memory.h"
@@ -17,12 +18,12 @@
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
-#include "pair_gran_hooke_history.h"
-#include "timer.h"
 #include "update.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <cstring>
 #include <numeric>
 #include <unordered_map>
@@ -35,28 +36,20 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-// kn, kt are protected in PairGranHookeHistory; a derived class may name them
-// (a pointer to member taken in its scope), which is how we read them.
-struct GranAccess : PairGranHookeHistory {
-  static double kn_of(PairGranHookeHistory *p) { return p->*(&GranAccess::kn); }
-  static double kt_of(PairGranHookeHistory *p) { return p->*(&GranAccess::kt); }
-  static FixNeighHistory *history_of(PairGranHookeHistory *p) { return p->*(&GranAccess::fix_history); }
-};
 enum { VEC_SIZE = 18 };
+enum { CALLBACK_GROW = 0, CALLBACK_RESTART = 1 };    // Atom::GROW, Atom::RESTART in LAMMPS
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), kn(0.0), kt(0.0), inertia(0.5), pair_gran(nullptr),
-    csv(nullptr), finished(0), restored(0), last_step(-1), frame_still(0), any_free(1)
+    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), frame_still(0), any_free(1)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
   std::memset(&last, 0, sizeof last);
   if (sbc_settings_parse(&settings, narg - 3, arg + 3, &err) != SBC_OK)
-    error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
-  if (!atom->sphere_flag) error->all(FLERR, "Fix servo_bc requires atom style sphere");
-  if (domain->dimension != 2)
-    error->all(FLERR, "Fix servo_bc: this version imposes 2d boundary conditions; the box is 3d (use dimension 2)");
+    fail(err.message);
+  if (!atom->sphere_flag) fail("requires atom_style sphere");
+  if (domain->dimension != 2) fail("this version imposes 2d boundary conditions; the box is 3d (use dimension 2)");
 
   vector_flag = 1;
   size_vector = VEC_SIZE;
@@ -67,8 +60,8 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   restart_peratom = 1;
 
   grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
+  atom->add_callback(CALLBACK_GROW);
+  atom->add_callback(CALLBACK_RESTART);
   for (int i = 0; i < atom->nlocal; i++) theta_atom[i] = 0.0;
 
   // after read_restart, the groups ID_frame and ID_interior come back with the
@@ -86,8 +79,8 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
 
 FixServoBC::~FixServoBC()
 {
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
+  atom->delete_callback(id, CALLBACK_GROW);
+  atom->delete_callback(id, CALLBACK_RESTART);
   memory->destroy(theta_atom);
   sbc_controller_free(ctl);
   sbc_frame_free(&frame);
@@ -108,8 +101,7 @@ void FixServoBC::detect_frame()
   if (settings.frame_group[0]) {
     int ig = group->find(settings.frame_group);
     if (ig < 0)
-      error->all(FLERR, std::string("Fix servo_bc: keyword 'frame': group '") + settings.frame_group +
-                          "' does not exist");
+      fail(std::string("keyword 'frame': group '") + settings.frame_group + "' does not exist");
     frame_group_bit = group->bitmask[ig];
   }
   std::vector<double> mine;
@@ -142,7 +134,7 @@ void FixServoBC::detect_frame()
   sbc_status st = settings.frame_group[0]
       ? sbc_frame_from_list(&frame, (int) listed.size(), listed.data(), xy.data(), r.data(), &err)
       : sbc_frame_detect(&frame, n, xy.data(), r.data(), 0.0, &err);
-  if (st != SBC_OK) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+  if (st != SBC_OK) fail(err.message);
 
   const int Q = frame.n;
   frame_tag.resize(Q);
@@ -153,18 +145,18 @@ void FixServoBC::detect_frame()
     frame_mass[q] = m[frame.particle[q]];
     is_frame[frame_tag[q]] = q;
   }
-  int igf = group->find_or_create((std::string(id) + "_frame").c_str());
-  int igi = group->find_or_create((std::string(id) + "_interior").c_str());
-  frame_bit = group->bitmask[igf];
-  interior_bit = group->bitmask[igi];
+  std::vector<int> in_frame(nlocal), in_interior(nlocal);
   for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    atom->mask[i] |= is_frame.count(atom->tag[i]) ? frame_bit : interior_bit;
+    in_frame[i] = (mask[i] & groupbit) && is_frame.count(atom->tag[i]);
+    in_interior[i] = (mask[i] & groupbit) && !in_frame[i];
   }
+  const std::string gf = std::string(id) + "_frame", gi = std::string(id) + "_interior";
+  group->create(gf.c_str(), in_frame.data());
+  group->create(gi.c_str(), in_interior.data());
+  frame_bit = group->bitmask[group->find(gf.c_str())];
+  interior_bit = group->bitmask[group->find(gi.c_str())];
   make_buffers();
-  if (comm->me == 0)
-    utils::logmesg(lmp, fmt::format("fix servo_bc: {} particles, frame of {} (groups {}_frame, {}_interior)\n", n, Q,
-                                    id, id));
+  log("fix servo_bc: %d particles, frame of %d (groups %s, %s)\n", n, Q, gf.c_str(), gi.c_str());
 }
 
 void FixServoBC::make_buffers()
@@ -178,16 +170,10 @@ void FixServoBC::make_buffers()
 void FixServoBC::init()
 {
   if (frame.n == 0)
-    error->all(FLERR, fmt::format("Fix servo_bc: groups {}_frame and {}_interior exist but no restart data of fix {} "
-                                  "restored the frame (re-use the fix ID of the restart file, or delete the groups)",
-                                  id, id, id));
-  Pair *pair = force->pair_match("gran/hooke/history", 1);
-  auto *gran = dynamic_cast<PairGranHookeHistory *>(pair);
-  if (!gran)
-    error->all(FLERR, "Fix servo_bc requires pair_style gran/hooke/history (the paper's contact law, eq. 6)");
-  kn = GranAccess::kn_of(gran);
-  kt = GranAccess::kt_of(gran);
-  pair_gran = gran;
+    fail(std::string("groups ") + id + "_frame and " + id + "_interior exist but no restart data of fix " + id +
+         " restored the frame (re-use the fix ID of the restart file, or delete the groups)");
+  std::string missing = law.attach(lmp);
+  if (!missing.empty()) fail(missing);
 
   // frame atoms are moved by this fix only
   for (int k = 0; k < modify->nfix; k++) {
@@ -198,22 +184,20 @@ void FixServoBC::init()
       if ((atom->mask[i] & frame_bit) && (atom->mask[i] & other->groupbit)) mine = 1;
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
     if (any)
-      error->all(FLERR, fmt::format("Fix servo_bc: frame atoms are also integrated by fix {} ({}); integrate "
-                                    "group {}_interior instead",
-                                    other->id, other->style, id));
+      fail(std::string("frame atoms are also integrated by fix ") + other->id + " (" + other->style +
+           "); integrate group " + id + "_interior instead");
   }
 
 
   if (!ctl) {
     sbc_error err;
     ctl = sbc_controller_create(&frame, &settings, frame_mass.data(), update->dt, &err);
-    if (!ctl) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
-    if (!saved_state.empty() &&
-        sbc_controller_load(ctl, saved_state.data(), saved_state.size(), &err) != SBC_OK)
-      error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+    if (!ctl) fail(err.message);
+    if (!saved_state.empty() && sbc_controller_load(ctl, saved_state.data(), saved_state.size(), &err) != SBC_OK)
+      fail(err.message);
     if (comm->me == 0 && settings.file[0] &&
         (restored ? sbc_csv_append(&csv, settings.file, &err) : sbc_csv_open(&csv, settings.file, &err)) != SBC_OK)
-      error->one(FLERR, std::string("Fix servo_bc: ") + err.message);
+      error->one(FLERR, (std::string("Fix servo_bc: ") + err.message).c_str());
   }
 }
 
@@ -246,7 +230,7 @@ void FixServoBC::initial_integrate(int)
     if (cmd.free_rotation[q]) {    // (T): free rotation with the damping of eq. 10
       double m = torque[i][2], w = omega[i][2];
       if (settings.damping) m -= settings.beta * std::fabs(m) * ((w > 0.0) - (w < 0.0));
-      omega[i][2] = w + dt * m / (inertia * atom->rmass[i] * atom->radius[i] * atom->radius[i]);
+      omega[i][2] = w + dt * m / (servo_bc_host::inertia * atom->rmass[i] * atom->radius[i] * atom->radius[i]);
       theta_atom[i] += dt * omega[i][2];
     } else {
       omega[i][2] = (cmd.theta[q] - theta_atom[i]) / dt;
@@ -255,8 +239,9 @@ void FixServoBC::initial_integrate(int)
   }
 }
 
-/* local damping (eq. 10) on the interior, its rotations and its Ek (J) */
-double FixServoBC::interior_pass()
+/* local damping (eq. 10) on the interior, its rotations and its Ek (J); again:
+   the setup of a later run revisits the last step, whose rotation is counted */
+double FixServoBC::interior_pass(bool again)
 {
   const int nlocal = atom->nlocal, *mask = atom->mask;
   // flat views of the contiguous per-atom arrays
@@ -264,6 +249,7 @@ double FixServoBC::interior_pass()
   double *f = &atom->f[0][0], *torque = &atom->torque[0][0];
   const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
   const double alpha = settings.damping ? settings.alpha : 0.0, beta = settings.damping ? settings.beta : 0.0;
+  const double inertia = servo_bc_host::inertia, turn = again ? 0.0 : dt;
   double ek = 0.0;
   if (nlocal == 0) return 0.0;    // the per-atom arrays may not exist yet
   for (int i = 0; i < nlocal; i++) {
@@ -279,7 +265,7 @@ double FixServoBC::interior_pass()
     // one division: 1/m = I/(m I), 1/I = m/(m I)
     const double m = rmass[i], I = inertia * m * radius[i] * radius[i], inv = dt / (m * I);
     const double vx = vx0 + fi[0] * I * inv, vy = vy0 + fi[1] * I * inv, w = w0 + ti[2] * m * inv;
-    theta_atom[i] += dt * w;
+    theta_atom[i] += turn * w;
     // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
     if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) ek += 0.5 * m * (vx * vx + vy * vy) + 0.5 * I * w * w;
   }
@@ -297,14 +283,15 @@ void FixServoBC::contact_pass(double out[3])
   const tagint *tag = atom->tag;
   double **x = atom->x;
   const double *radius = atom->radius;
-  NeighList *list = pair_gran->list;
-  FixNeighHistory *history = GranAccess::history_of(pair_gran);
+  NeighList *list = law.list();
+  double **history = law.history();
+  const double kn = law.kn, kt = law.kt;
   double ep = 0.0, ov = 0.0, nc = 0.0;
   for (int ii = 0; ii < list->inum; ii++) {
     int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
     int *jlist = list->firstneigh[i], jnum = list->numneigh[i];
-    const double *shear_i = history ? history->firstvalue[i] : nullptr;
+    const double *shear_i = history ? history[i] : nullptr;
     for (int jj = 0; jj < jnum; jj++) {
       int j = jlist[jj] & NEIGHMASK;
       if (!(mask[j] & groupbit)) continue;
@@ -315,7 +302,7 @@ void FixServoBC::contact_pass(double out[3])
       double dn = rs - std::sqrt(d2);
       ep += 0.5 * kn * dn * dn;
       if (shear_i) {
-        const double *sh = &shear_i[3 * jj];
+        const double *sh = &shear_i[law.stride * jj + law.offset];
         ep += 0.5 * kt * (sh[0] * sh[0] + sh[1] * sh[1] + sh[2] * sh[2]);
       }
       ov += dn / (0.5 * rs);
@@ -360,12 +347,12 @@ void FixServoBC::post_force(int)
 {
   if (finished) return;
   const int Q = frame.n;
-  double ek_local = interior_pass(), ek = 0.0;
-  MPI_Allreduce(&ek_local, &ek, 1, MPI_DOUBLE, MPI_SUM, world);
-
   // the setup of a later run (or of a restarted one) sees the configuration of
   // the last step again: the controller has already taken it
-  if (update->ntimestep == last_step) return;
+  const bool again = update->ntimestep == last_step;
+  double ek_local = interior_pass(again), ek = 0.0;
+  MPI_Allreduce(&ek_local, &ek, 1, MPI_DOUBLE, MPI_SUM, world);
+  if (again) return;
   last_step = update->ntimestep;
 
   double contacts[3] = {SBC_RELAX_EP_UNMEASURED, 0.0, 0.0}, local[3];
@@ -394,22 +381,19 @@ void FixServoBC::post_force(int)
 
   sbc_error err;
   sbc_event ev = sbc_controller_step(ctl, &snap, &err);
-  if (ev == SBC_EVENT_FAILED) error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+  if (ev == SBC_EVENT_FAILED) fail(err.message);
   if (ev == SBC_EVENT_CORRECTED || ev == SBC_EVENT_INCREMENT) frame_still = 0;
   if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
     last = *sbc_controller_result(ctl);
-    if (comm->me == 0) {
-      if (csv && sbc_csv_write(csv, &last, &err) != SBC_OK)
-        error->one(FLERR, std::string("Fix servo_bc: ") + err.message);
-      utils::logmesg(lmp, fmt::format("servo_bc {}: increment {}/{} F12 {:+.5f} sigma11 {:+.6e} sigma12 {:+.6e} "
-                                      "N/m steps {} iterations {}\n",
-                                      sbc_bc_name(settings.bc), last.increment, sbc_settings_total_increments(&settings), last.F[1],
-                                      last.sigma[0], last.sigma[1], last.relax_steps, last.iterations));
-    }
+    if (comm->me == 0 && csv && sbc_csv_write(csv, &last, &err) != SBC_OK)
+      error->one(FLERR, (std::string("Fix servo_bc: ") + err.message).c_str());
+    log("servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %ld iterations %d\n",
+        sbc_bc_name(settings.bc), last.increment, sbc_settings_total_increments(&settings), last.F[1],
+        last.sigma[0], last.sigma[1], (long) last.relax_steps, last.iterations);
   }
   if (ev == SBC_EVENT_FINISHED) {
     finished = 1;
-    timer->force_timeout();    // ends this run at the next step
+    servo_bc_host::end_run(lmp);
   }
 }
 
@@ -459,7 +443,7 @@ void FixServoBC::restart(char *raw)
   sbc_error err;
   sbc_frame_free(&frame);
   if (sbc_frame_load(&frame, &list[k], nf, &err) != SBC_OK)
-    error->all(FLERR, std::string("Fix servo_bc: ") + err.message);
+    fail(err.message);
   k += nf;
   frame_tag.resize(frame.n);
   frame_mass.resize(frame.n);
@@ -521,4 +505,23 @@ int FixServoBC::unpack_exchange(int nlocal, double *in)
 {
   theta_atom[nlocal] = in[0];
   return 1;
+}
+
+/* every error of this fix: "Fix servo_bc: " and the message, on all ranks */
+void FixServoBC::fail(const std::string &message)
+{
+  error->all(FLERR, (std::string("Fix servo_bc: ") + message).c_str());
+}
+
+/* a line on screen and in the log file, from rank 0 */
+void FixServoBC::log(const char *format, ...)
+{
+  if (comm->me != 0) return;
+  char line[512];
+  va_list args;
+  va_start(args, format);
+  vsnprintf(line, sizeof line, format, args);
+  va_end(args);
+  if (screen) fputs(line, screen);
+  if (logfile) fputs(line, logfile);
 }

@@ -3,6 +3,8 @@
    boundary particles, driven by the servo_bc core (pure C, src_core/).
    The fix only translates: owned frame atoms -> snapshot, MPI sums, core
    controller step, commands -> owned frame atoms.
+   One source for LAMMPS and LIGGGHTS (-DSERVO_BC_LIGGGHTS): where their Fix
+   APIs differ, the host header below says how.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -16,6 +18,13 @@ FixStyle(servo_bc,FixServoBC);
 
 #include "fix.h"
 
+#ifdef SERVO_BC_LIGGGHTS
+#include "fix_servo_bc_liggghts.h"
+#else
+#include "fix_servo_bc_lammps.h"
+#endif
+
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -60,9 +69,7 @@ class FixServoBC : public Fix {
   std::unordered_map<tagint, int> slot;  // atom ID -> frame position, built with the frame
   double *theta_atom;              // per-atom accumulated rotation, rad
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
-  double kn, kt;                   // from pair gran/hooke/history
-  double inertia;                  // I = inertia m r^2: 0.5 for discs in 2d
-  class PairGranHookeHistory *pair_gran;
+  servo_bc_host::ContactLaw law;   // kn, kt, shear history of the pair style
   FILE *csv;
   int finished;
   sbc_result last;
@@ -72,11 +79,13 @@ class FixServoBC : public Fix {
   int frame_still;                   // steps since the commands last changed (initial_integrate)
   int any_free;                      // some frame rotation is free ((T)): integrated every step
 
-  double interior_pass();
+  double interior_pass(bool again);
   void contact_pass(double out[3]);
   void frame_pass();
   void detect_frame();
   void make_buffers();
+  void fail(const std::string &message);
+  void log(const char *format, ...) __attribute__((format(printf, 2, 3)));
 };
 
 }    // namespace LAMMPS_NS

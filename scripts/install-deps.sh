@@ -3,6 +3,7 @@
 #   scripts/install-deps.sh core     compiler, make, valgrind (make check)
 #   scripts/install-deps.sh lammps   the Debian LAMMPS package (bench/, LAMMPS side)
 #   scripts/install-deps.sh lammps-dev   LAMMPS, its headers and an MPI C++ compiler (make lammps)
+#   scripts/install-deps.sh liggghts-dev   LIGGGHTS, its headers and an MPI C++ compiler (make liggghts)
 #   scripts/install-deps.sh yade     the Debian YADE package (make yade, make check)
 # Already-installed tools are left alone; without root or apt-get it only reports.
 set -euo pipefail
@@ -23,10 +24,16 @@ for what in "$@"; do
       command -v mpicxx >/dev/null || need+=(libopenmpi-dev openmpi-bin)
       command -v g++ >/dev/null || need+=(g++)
       ;;
+    liggghts-dev)
+      command -v liggghts >/dev/null || need+=(liggghts)
+      [ -f /usr/include/liggghts/pair_gran.h ] || need+=(libliggghts-dev)
+      command -v mpicxx >/dev/null || need+=(libopenmpi-dev openmpi-bin)
+      command -v g++ >/dev/null || need+=(g++)
+      ;;
     yade)
       command -v yade >/dev/null || need+=(yade python3-yade)
       ;;
-    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev or yade)" >&2; exit 2 ;;
+    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev, liggghts-dev or yade)" >&2; exit 2 ;;
   esac
 done
 [ ${#need[@]} -eq 0 ] && exit 0

@@ -36,7 +36,7 @@ static void test_generated_frame(const sbc_packing *a, double L)
     sbc_packing back;
     sbc_error err;
     char path[512], script[2048];
-    int k, crossing = 0, exact = 1, sides[5] = {0, 0, 0, 0, 0}, twos, n, *is_frame;
+    int k, host, crossing = 0, exact = 1, sides[5] = {0, 0, 0, 0, 0}, twos, n, *is_frame;
     double *angle;
     CHECK(a->has_box && a->box[0] == 0.0 && a->box[1] == L && a->box[3] == L);
     CHECK(sbc_frame_detect_packing(&f, a, &err) == SBC_OK);
@@ -65,25 +65,28 @@ static void test_generated_frame(const sbc_packing *a, double L)
           memcmp(back.x, a->x, sizeof(double) * 2 * (size_t)a->n) == 0 &&
           memcmp(back.r, a->r, sizeof(double) * (size_t)a->n) == 0);
     sbc_packing_free(&back);
-    /* LAMMPS data file: one atom line per disc, the frame as type 2 */
+    /* LAMMPS and LIGGGHTS data files: one atom line per disc, the frame as
+     * type 2, the density column giving each host M = rho_A pi R^2 (eq. 9) */
     is_frame = calloc((size_t)a->n, sizeof *is_frame);
     for (k = 0; k < f.n; ++k)
         is_frame[f.particle[k]] = 1;
-    snprintf(path, sizeof path, "%s/generated.data", test_tmpdir);
-    CHECK(sbc_packing_write_lammps(a, is_frame, 2e3, path, &err) == SBC_OK);
-    free(is_frame);
-    {
-        FILE *fp = fopen(path, "r");
+    for (host = 0; host < 2; ++host) {
+        FILE *fp;
         char buf[512];
         int atoms = 0, in_atoms = 0, id, type;
         double d, rho, x, y, z, mass_err = 0.0;
+        snprintf(path, sizeof path, "%s/generated_%d.data", test_tmpdir, host);
+        CHECK(host == 0 ? sbc_packing_write_lammps(a, is_frame, 2e3, path, &err) == SBC_OK
+                        : sbc_packing_write_liggghts(a, is_frame, 2e3, path, &err) == SBC_OK);
+        fp = fopen(path, "r");
         twos = 0;
         while (fp && fgets(buf, sizeof buf, fp)) {
             if (strncmp(buf, "Atoms", 5) == 0) { in_atoms = 1; continue; }
             if (in_atoms && sscanf(buf, "%d %d %lf %lf %lf %lf %lf", &id, &type, &d, &rho, &x, &y, &z) == 7) {
-                /* LAMMPS' sphere mass 4/3 pi R^3 rho equals rho_A pi R^2 (eq. 9) */
-                double R = 0.5 * d, m = 4.0 / 3.0 * 3.14159265358979323846 * R * R * R * rho;
-                double want = 2e3 * 3.14159265358979323846 * R * R;
+                /* LAMMPS' 2D mass is the sphere's 4/3 pi R^3 rho, LIGGGHTS' pi R^2 rho */
+                double R = 0.5 * d, pi = 3.14159265358979323846;
+                double m = host == 0 ? 4.0 / 3.0 * pi * R * R * R * rho : pi * R * R * rho;
+                double want = 2e3 * pi * R * R;
                 if (fabs(m - want) / want > mass_err) mass_err = fabs(m - want) / want;
                 ++atoms;
                 twos += type == 2;
@@ -94,6 +97,7 @@ static void test_generated_frame(const sbc_packing *a, double L)
         CHECK(atoms == a->n && twos == f.n && exact);
         CHECK(mass_err < 1e-15);
     }
+    free(is_frame);
     snprintf(path, sizeof path, "%s/generated.yade", test_tmpdir);
     {
         int *is_frame = calloc((size_t)a->n, sizeof *is_frame), q;

@@ -16,7 +16,7 @@ static void criterion_alone(void)
     sbc_relax r;
     int k, done = 0;
     /* Ek rising from rest with a tiny ratio: no relaxation accepted */
-    sbc_relax_start(&r, 1e-3, 20);
+    sbc_relax_start(&r, 1e-3, 20, 0);
     for (k = 1; k <= 200 && !done; ++k)
         done = sbc_relax_update(&r, 1e-12 * k * k, 1.0);
     CHECK(!done);
@@ -25,7 +25,7 @@ static void criterion_alone(void)
         CHECK(!sbc_relax_update(&r, 1e-9 / (k + 1.0), 1.0));
     CHECK(sbc_relax_update(&r, 1e-10, 1.0));
     /* a step above the tolerance resets the count */
-    sbc_relax_start(&r, 1e-3, 3);
+    sbc_relax_start(&r, 1e-3, 3, 0);
     sbc_relax_update(&r, 1e-4, 1.0);
     sbc_relax_update(&r, 2e-4, 1.0);
     CHECK(!sbc_relax_update(&r, 1e-4, 1.0)); /* past the peak: 1 */
@@ -34,14 +34,30 @@ static void criterion_alone(void)
     CHECK(!sbc_relax_update(&r, 1e-5, 1.0)); /* 2 */
     CHECK(sbc_relax_update(&r, 1e-6, 1.0));  /* 3 */
     /* no motion at all: accepted after `window` steps */
-    sbc_relax_start(&r, 1e-3, 5);
+    sbc_relax_start(&r, 1e-3, 5, 0);
     for (k = 0; k < 4; ++k)
         CHECK(!sbc_relax_update(&r, 0.0, 1.0));
     CHECK(sbc_relax_update(&r, 0.0, 1.0));
     /* Ep = 0 with motion (free flight) is never relaxed */
-    sbc_relax_start(&r, 1e-3, 2);
+    sbc_relax_start(&r, 1e-3, 2, 0);
     for (k = 0, done = 0; k < 100; ++k)
         done |= sbc_relax_update(&r, 1.0 + (k % 2), 0.0);
+    CHECK(!done);
+    /* at rest (frame not moved), Ek rising at round-off (Ek/Ep = 1e-30 k^2):
+     * the floor counts without a maximum, from the first step */
+    sbc_relax_start(&r, 1e-3, 20, 1);
+    for (k = 1, done = 0; k <= 200 && !done; ++k)
+        done = sbc_relax_update(&r, 1e-30 * k * k, 1.0);
+    CHECK(done && k - 1 == 20);
+    /* ... but not above the floor (1e-19 k^2 > 1e-20), and never above tolE
+     * when tolE is below the floor */
+    sbc_relax_start(&r, 1e-3, 20, 1);
+    for (k = 1, done = 0; k <= 200 && !done; ++k)
+        done = sbc_relax_update(&r, 1e-19 * k * k, 1.0);
+    CHECK(!done);
+    sbc_relax_start(&r, 1e-22, 20, 1);
+    for (k = 1, done = 0; k <= 200 && !done; ++k)
+        done = sbc_relax_update(&r, 1e-21, 1.0);
     CHECK(!done);
 }
 
@@ -86,8 +102,10 @@ static void perturbed_packing(double tol, double dt, double offset, long *stop_o
     cmd.theta = theta0;
     cmd.free_rotation = free_rot;
     ratio = malloc(sizeof(double) * (size_t)maxsteps);
-    sbc_relax_start(&r, tol, WINDOW);
-    sbc_relax_start(&lazy, tol, WINDOW);
+    /* the frame is not moved: the round-off floor applies, and must not end
+       the relaxation of this unbalanced packing early */
+    sbc_relax_start(&r, tol, WINDOW, 1);
+    sbc_relax_start(&lazy, tol, WINDOW, 1);
     for (k = 0; k < maxsteps; ++k) {
         int done, need;
         sbc_engine_step(e, &err);

@@ -109,6 +109,10 @@ void test_restart(void)
     b = sbc_controller_create(&g, &bad, mass, def.dt, &err);
     CHECK(sbc_controller_load(b, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "'increments': 4"));
     sbc_controller_free(b);
+    /* another time step: other gains (eq. 37), refused */
+    b = sbc_controller_create(&g, &s, mass, 0.5 * def.dt, &err);
+    CHECK(sbc_controller_load(b, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "time step"));
+    sbc_controller_free(b);
     free(state);
     free(fstate);
     sbc_controller_free(a);

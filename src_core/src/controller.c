@@ -7,6 +7,7 @@
 #include "sbc/relax.h"
 #include "servo.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -126,7 +127,7 @@ static void start_increment(sbc_controller *c)
     c->r_first = 0.0;
     c->steps = 0;
     memset(&c->norms, 0, sizeof c->norms);
-    sbc_relax_start(&c->relax, c->s.tol_E, c->s.window);
+    sbc_relax_start(&c->relax, c->s.tol_E, c->s.window, c->increment == 0);
 }
 
 /* Modes of each frame position from the edge modes of the settings. Corners
@@ -387,6 +388,22 @@ static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *
     return SBC_EVENT_INCREMENT;
 }
 
+/* Whether the correction du, dtheta moves some frame particle beyond the
+ * round-off of its position: |du| + R |dtheta| > 16 eps (|x| + R). A
+ * balanced packing yields corrections of round-off forces, some 1e-21 m on
+ * the 100-particle lattice, which leave the frame where it was (relax.h). */
+static int correction_moves_frame(const sbc_controller *c)
+{
+    int q;
+    for (q = 0; q < c->frame->n; ++q) {
+        const double R = c->frame->R[q];
+        const double move = fabs(c->du[2 * q]) + fabs(c->du[2 * q + 1]) + R * fabs(c->dtheta[q]);
+        if (move > 16.0 * DBL_EPSILON * (fabs(c->x_cmd[2 * q]) + fabs(c->x_cmd[2 * q + 1]) + R))
+            return 1;
+    }
+    return 0;
+}
+
 sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
 {
     const char *what = NULL;
@@ -477,27 +494,28 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
             return SBC_EVENT_FAILED;
         }
         {
+            const int moved = correction_moves_frame(c);
             int k;
             for (k = 0; k < 2 * c->frame->n; ++k)
                 c->x_cmd[k] += c->du[k];
             for (k = 0; k < c->frame->n; ++k)
                 c->theta_cmd[k] += c->dtheta[k];
+            c->servo = 1;
+            c->iteration++;
+            sbc_relax_start(&c->relax, c->s.tol_E, c->s.window, !moved);
         }
-        c->servo = 1;
-        c->iteration++;
-        sbc_relax_start(&c->relax, c->s.tol_E, c->s.window);
         return SBC_EVENT_CORRECTED;
     }
     return accept(c, snap, err);
 }
 
-/* Restart layout (doubles): version, Q, bc, increments, F (4) | increment, servo,
+/* Restart layout (doubles): version, Q, bc, increments, F (4), dt | increment, servo,
  * iteration, r_first, steps, norms (4), relax (steps, count, rising, past_peak,
- * ek_prev), F_prev (4), F_now (4) | result (21) | x_cmd (2Q), theta_cmd (Q),
+ * ek_prev, at_rest), F_prev (4), F_now (4) | result (21) | x_cmd (2Q), theta_cmd (Q),
  * free_rot (Q), x_prev (2Q), reference X (2Q). */
-#define STATE_VERSION 2.0
-#define STATE_HEAD 8
-#define STATE_SCALARS 22
+#define STATE_VERSION 4.0
+#define STATE_HEAD 9
+#define STATE_SCALARS 23
 #define STATE_RESULT 21
 
 size_t sbc_controller_state_size(const sbc_controller *c)
@@ -549,6 +567,7 @@ void sbc_controller_save(const sbc_controller *c, double *o)
     *o++ = c->s.bc;
     *o++ = c->s.increments;
     for (k = 0; k < 4; ++k) *o++ = c->s.F[k];
+    *o++ = c->dt;
     *o++ = c->increment;
     *o++ = c->servo;
     *o++ = c->iteration;
@@ -563,6 +582,7 @@ void sbc_controller_save(const sbc_controller *c, double *o)
     *o++ = c->relax.rising;
     *o++ = c->relax.past_peak;
     *o++ = c->relax.ek_prev;
+    *o++ = c->relax.at_rest;
     for (k = 0; k < 4; ++k) *o++ = c->F_prev[k];
     for (k = 0; k < 4; ++k) *o++ = c->F_now[k];
     o = put_result(&c->result, o);
@@ -591,6 +611,11 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
         if (in[4 + k] != c->s.F[k])
             return sbc_fail(err, SBC_ERR_INPUT, "restart: keyword 'F': %s = %.17g contradicts the saved %.17g", names[k],
                             c->s.F[k], in[4 + k]);
+    /* the gains scale with dt^2 (eq. 37): a host that forgets the time step
+       across a restart (LIGGGHTS 3.8 does) would servo with other gains */
+    if (in[8] != c->dt)
+        return sbc_fail(err, SBC_ERR_INPUT, "restart: time step %.17g s contradicts the saved %.17g s (set the time "
+                        "step before the fix)", c->dt, in[8]);
     in += STATE_HEAD;
     c->increment = (int)*in++;
     c->servo = (int)*in++;
@@ -608,6 +633,7 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     c->relax.rising = (int)*in++;
     c->relax.past_peak = (int)*in++;
     c->relax.ek_prev = *in++;
+    c->relax.at_rest = (int)*in++;
     for (k = 0; k < 4; ++k) c->F_prev[k] = *in++;
     for (k = 0; k < 4; ++k) c->F_now[k] = *in++;
     in = get_result(&c->result, in);

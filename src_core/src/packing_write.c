@@ -1,4 +1,4 @@
-/* Packing writers: one packing, read by every host (text, LAMMPS data, YADE). */
+/* Packing writers: one packing, read by every host (text, LAMMPS and LIGGGHTS data, YADE). */
 #include "sbc/packing.h"
 
 #include <math.h>
@@ -39,15 +39,19 @@ sbc_status sbc_packing_write_text(const sbc_packing *p, const char *path, sbc_er
     return finish(fp, path, err);
 }
 
-sbc_status sbc_packing_write_lammps(const sbc_packing *p, const int *is_frame, double density, const char *path,
-                                    sbc_error *err)
+/* The data file of atom_style sphere (id type diameter density x y z) for a
+ * host whose 2D sphere mass is 4/3 pi R^3 density (LAMMPS: sphere_mass 1) or
+ * pi R^2 density (LIGGGHTS: 0); the density column makes both M = rho_A pi R^2. */
+static sbc_status write_data(const sbc_packing *p, const int *is_frame, double density, int sphere_mass,
+                             const char *path, sbc_error *err)
 {
+    const char *host = sphere_mass ? "lammps" : "liggghts";
     double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, rmax = 0.0;
     FILE *fp;
     int k, c;
     sbc_status st;
     if (!(density > 0.0))
-        return sbc_fail(err, SBC_ERR_INPUT, "write_packing lammps: density %g is not positive", density);
+        return sbc_fail(err, SBC_ERR_INPUT, "write_packing %s: density %g is not positive", host, density);
     if ((st = open_for_writing(&fp, p, path, err)) != SBC_OK)
         return st;
     for (k = 0; k < p->n; ++k) {
@@ -57,19 +61,34 @@ sbc_status sbc_packing_write_lammps(const sbc_packing *p, const int *is_frame, d
         }
         if (p->r[k] > rmax) rmax = p->r[k];
     }
-    fprintf(fp, "LAMMPS data file: servo_bc packing of %d discs (SI; type 2 = frame, 1 = interior; density column "
-                "3 rho_A / (4 R) gives M = rho_A pi R^2 with rho_A = %.17g kg/m^2)\n\n", p->n, density);
+    fprintf(fp, "%s data file: servo_bc packing of %d discs (SI; type 2 = frame, 1 = interior; density column %s "
+                "gives M = rho_A pi R^2 with rho_A = %.17g kg/m^2)\n\n", sphere_mass ? "LAMMPS" : "LIGGGHTS", p->n,
+            sphere_mass ? "3 rho_A / (4 R)" : "rho_A", density);
     fprintf(fp, "%d atoms\n2 atom types\n\n", p->n);
     /* one diameter of margin around the discs: the box holds them as they move */
     fprintf(fp, "%.17g %.17g xlo xhi\n%.17g %.17g ylo yhi\n%.17g %.17g zlo zhi\n\n", lo[0] - 2 * rmax,
             hi[0] + 2 * rmax, lo[1] - 2 * rmax, hi[1] + 2 * rmax, -rmax, rmax);
     fprintf(fp, "Atoms # sphere\n\n");
     for (k = 0; k < p->n; ++k)
-        /* LAMMPS 29Sep2021 (Debian) gives spheres M = 4/3 pi R^3 density even
-           with dimension 2; this density makes M = rho_A pi R^2 (eq. 9) */
         fprintf(fp, "%d %d %.17g %.17g %.17g %.17g 0\n", k + 1, is_frame && is_frame[k] ? 2 : 1, 2.0 * p->r[k],
-                0.75 * density / p->r[k], p->x[2 * k], p->x[2 * k + 1]);
+                sphere_mass ? 0.75 * density / p->r[k] : density, p->x[2 * k], p->x[2 * k + 1]);
     return finish(fp, path, err);
+}
+
+/* LAMMPS 29Sep2021 (Debian) gives spheres M = 4/3 pi R^3 density even with
+ * dimension 2 */
+sbc_status sbc_packing_write_lammps(const sbc_packing *p, const int *is_frame, double density, const char *path,
+                                    sbc_error *err)
+{
+    return write_data(p, is_frame, density, 1, path, err);
+}
+
+/* LIGGGHTS 3.8 gives 2D spheres M = pi R^2 density (measured: 6.537e-3 kg for
+ * R = 1.02 mm, density 2e3) */
+sbc_status sbc_packing_write_liggghts(const sbc_packing *p, const int *is_frame, double density, const char *path,
+                                      sbc_error *err)
+{
+    return write_data(p, is_frame, density, 0, path, err);
 }
 
 sbc_status sbc_packing_write_yade(const sbc_packing *p, const int *is_frame, const char *path, sbc_error *err)

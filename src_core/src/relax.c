@@ -1,7 +1,10 @@
 #include "sbc/relax.h"
 
-void sbc_relax_start(sbc_relax *r, double tol_E, int window)
+#include <math.h>
+
+void sbc_relax_start(sbc_relax *r, double tol_E, int window, int at_rest)
 {
+    r->at_rest = at_rest;
     r->tol_E = tol_E;
     r->window = window;
     r->steps = 0;
@@ -14,20 +17,29 @@ void sbc_relax_start(sbc_relax *r, double tol_E, int window)
     r->ek_known = 0.0;
 }
 
+/* the ratio Ek/Ep below which this step may count: eq. 11 past the maximum,
+ * before it the round-off floor at rest, else none */
+static double counting_limit(const sbc_relax *r, int past_peak)
+{
+    if (past_peak)
+        return r->tol_E;
+    return r->at_rest ? fmin(r->tol_E, SBC_RELAX_ROUNDOFF) : 0.0;
+}
+
 int sbc_relax_needs_potential(const sbc_relax *r, double ek)
 {
     double bound;
     const int past_peak = r->past_peak || (r->steps > 0 && r->rising && ek <= r->ek_prev);
-    if (ek == 0.0 || !past_peak)
+    if (ek == 0.0 || counting_limit(r, past_peak) == 0.0)
         return 0;
     if (r->known_step == 0 || r->steps + 1 - r->known_step >= SBC_RELAX_EP_REFRESH)
         return 1;
     bound = r->ep_known + r->ek_known - ek;
-    return bound <= 0.0 || ek <= 2.0 * r->tol_E * bound;
+    return bound <= 0.0 || ek <= 2.0 * counting_limit(r, past_peak) * bound;
 }
 
 /* eq. 11: Ek/Ep <= tolE, held for r->window consecutive steps after a
- * kinetic-energy maximum (see relax.h). */
+ * kinetic-energy maximum or at the round-off floor (see relax.h). */
 int sbc_relax_update(sbc_relax *r, double ek, double ep)
 {
     int ok;
@@ -47,7 +59,7 @@ int sbc_relax_update(sbc_relax *r, double ek, double ep)
     if (ek == 0.0)
         ok = 1;
     else
-        ok = r->past_peak && ep > 0.0 && ek <= r->tol_E * ep;
+        ok = ep > 0.0 && ek <= counting_limit(r, r->past_peak) * ep;
     r->count = ok ? r->count + 1 : 0;
     return r->count >= r->window;
 }

@@ -49,22 +49,22 @@ sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
     return SBC_OK;
 }
 
-/* write_packing text|lammps|yade FILE */
+/* write_packing text|lammps|liggghts|yade FILE */
 sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
 {
-    sbc_status st = sbc_script_expect_count(nw, w, 3, "write_packing text|lammps|yade FILE", err);
+    sbc_status st = sbc_script_expect_count(nw, w, 3, "write_packing text|lammps|liggghts|yade FILE", err);
     if (st != SBC_OK) return st;
     if (!s->have_packing)
         return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no packing (use 'lattice', 'read_packing' or 'generate' first)");
     if (strcmp(w[1], "text") == 0)
         return sbc_packing_write_text(&s->packing, w[2], err);
-    if (strcmp(w[1], "lammps") == 0 || strcmp(w[1], "yade") == 0) {
-        /* both carry the frame: LAMMPS as atom type 2, YADE as a fifth column */
+    if (strcmp(w[1], "lammps") == 0 || strcmp(w[1], "liggghts") == 0 || strcmp(w[1], "yade") == 0) {
+        /* all carry the frame: LAMMPS and LIGGGHTS as atom type 2, YADE as a fifth column */
         sbc_frame frame;
         int *is_frame, k;
         if (w[1][0] == 'l' && !s->have_density)
-            return sbc_fail(err, SBC_ERR_INPUT, "write_packing lammps: no density (use 'density RHO' first: the data "
-                                                "file carries the masses)");
+            return sbc_fail(err, SBC_ERR_INPUT, "write_packing %s: no density (use 'density RHO' first: the data "
+                                                "file carries the masses)", w[1]);
         if ((st = sbc_frame_detect_packing(&frame, &s->packing, err)) != SBC_OK)
             return st;
         if (!(is_frame = calloc((size_t)s->packing.n, sizeof *is_frame))) {
@@ -73,13 +73,14 @@ sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
         }
         for (k = 0; k < frame.n; ++k)
             is_frame[frame.particle[k]] = 1;
-        st = w[1][0] == 'l' ? sbc_packing_write_lammps(&s->packing, is_frame, s->density, w[2], err)
-                            : sbc_packing_write_yade(&s->packing, is_frame, w[2], err);
+        st = w[1][1] == 'a' ? sbc_packing_write_lammps(&s->packing, is_frame, s->density, w[2], err)
+             : w[1][1] == 'i' ? sbc_packing_write_liggghts(&s->packing, is_frame, s->density, w[2], err)
+                              : sbc_packing_write_yade(&s->packing, is_frame, w[2], err);
         free(is_frame);
         sbc_frame_free(&frame);
         return st;
     }
-    return sbc_fail(err, SBC_ERR_INPUT, "write_packing: format '%s' is not known (expected text, lammps or yade)", w[1]);
+    return sbc_fail(err, SBC_ERR_INPUT, "write_packing: format '%s' is not known (expected text, lammps, liggghts or yade)", w[1]);
 }
 
 /* rose FILE.svg: contact orientations of the packing (pairs closer than 1e-6 R_min) */

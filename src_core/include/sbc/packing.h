@@ -31,12 +31,16 @@ sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err);
  *            the density 3 rho_A / (4 R) that gives LAMMPS' sphere mass
  *            4/3 pi R^3 rho the disc mass rho_A pi R^2 of eq. 9 (`density`
  *            is rho_A, mass per area, kg/m^2);
+ *  - liggghts: the same data file with the density column rho_A, since
+ *            LIGGGHTS 3.8 gives 2D spheres M = pi R^2 density;
  *  - yade:   "x y z r frame" per line (m; frame 1 for a frame particle, 0
  *            otherwise): yade.ymport.text reads the first four columns, the
  *            servo_bc YADE module all five. */
 sbc_status sbc_packing_write_text(const sbc_packing *p, const char *path, sbc_error *err);
 sbc_status sbc_packing_write_lammps(const sbc_packing *p, const int *is_frame, double density, const char *path,
                                     sbc_error *err);
+sbc_status sbc_packing_write_liggghts(const sbc_packing *p, const int *is_frame, double density, const char *path,
+                                      sbc_error *err);
 sbc_status sbc_packing_write_yade(const sbc_packing *p, const int *is_frame, const char *path, sbc_error *err);
 
 /* Orientations atan2(dy, dx) (rad) of the branch vectors of all pairs whose

@@ -1,0 +1,148 @@
+# Checks of fix servo_bc shared by the LAMMPS-family hosts (LAMMPS, LIGGGHTS),
+# sourced by tests/lammps/closed_form.sh and tests/liggghts/closed_form.sh.
+# The caller sets HOST (label), BIN (absolute path of the host binary), DECK
+# (its closed-form lattice deck: 5 x 5 discs, spacing 2 mm, R = 1.02 mm, kt = 0,
+# `fix servo all servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20 file
+# ${csv}`, interior integrated by `fix integrate servo_interior ...`) and TMP.
+pass=0 fail=0
+ok() { pass=$((pass + 1)); echo "$HOST $1"; }
+no() { fail=$((fail + 1)); echo "FAIL $HOST $1"; }
+
+# run_deck NP DECK CSV LOG: the deck on NP MPI ranks (1: no mpirun), in TMP
+run_deck() {
+  if [ "$1" = 1 ]; then
+    (cd "$TMP" && timeout 300 "$BIN" -in "$2" -var csv "$3" -log none > "$4" 2>&1)
+  else
+    (cd "$TMP" && timeout 300 mpirun --allow-run-as-root --oversubscribe -np "$1" "$BIN" -in "$2" -var csv "$3" \
+      -log none > "$4" 2>&1)
+  fi
+}
+
+# deck_with SED-EXPRESSION OUT: the lattice deck edited
+deck_with() { sed "$1" "$DECK" > "$2"; }
+
+# closed_form LABEL CSV: P11 = -N kn (2R - d F11)/((N-1) d), P22 likewise,
+# P12 = P21 = 0 at every increment of F = I + (i/2)(diag(1.002, 0.997) - I), 1e-9 relative
+closed_form() {
+  local out
+  out=$(awk -F, 'NR > 1 {
+      t = $1 / 2; f11 = 1 + t * 0.002; f22 = 1 - t * 0.003;
+      p11 = -5 * 1e4 * (2.04e-3 - 2e-3 * f11) / (4 * 2e-3);
+      p22 = -5 * 1e4 * (2.04e-3 - 2e-3 * f22) / (4 * 2e-3);
+      e = ($6 - p11) / p11; if (e < 0) e = -e; if (e > m) m = e;
+      e = ($9 - p22) / p22; if (e < 0) e = -e; if (e > m) m = e;
+      e = ($7 < 0 ? -$7 : $7) / -p11; if (e > m) m = e;
+      e = ($8 < 0 ? -$8 : $8) / -p11; if (e > m) m = e;
+      n++ }
+    END { printf "%d %.3g", n, m }' "$2" 2>/dev/null)
+  set -- "$1" $out
+  if [ "${2:-0}" = 3 ] && awk -v m="$3" 'BEGIN { exit !(m <= 1e-9) }'; then
+    ok "$1: 3 increments, max relative error $3"
+  else
+    no "$1: increments ${2:-0}, max relative error ${3:-?}"
+  fi
+}
+
+# same_csvs LABEL INCREMENTS A.csv B.csv C.csv: B and C equal A to 1e-8 of each
+# quantity's scale in the run (F, P and sigma by their largest component, the
+# overlap by itself: a near-zero shear component is not compared with itself)
+same_csvs() {
+  local label=$1 want=$2 res
+  shift 2
+  res=$(paste -d, "$@" | awk -F, '
+    NR > 1 { n++; for (c = 2; c <= 14; c++) for (k = 0; k <= 2; k++) v[n, c, k] = $(c + 20 * k)
+             for (c = 2; c <= 14; c++) { g = (c <= 5 ? 1 : c <= 9 ? 2 : c <= 13 ? 3 : 4); a = $c < 0 ? -$c : $c; if (a > S[g]) S[g] = a } }
+    END { for (r = 1; r <= n; r++) for (c = 2; c <= 14; c++) {
+            g = (c <= 5 ? 1 : c <= 9 ? 2 : c <= 13 ? 3 : 4)
+            for (k = 1; k <= 2; k++) { d = (v[r, c, k] - v[r, c, 0]) / S[g]; if (d < 0) d = -d; if (d > m) m = d } }
+          printf "%d %.3g", n, m }' 2>/dev/null)
+  set -- $res
+  if [ "${1:-0}" = "$want" ] && awk -v m="$2" 'BEGIN { exit !(m <= 1e-8) }'; then
+    ok "$label: $want increments, max difference $2 of each tensor's scale"
+  else
+    no "$label: increments ${1:-0}, max relative difference ${2:-?}"
+  fi
+}
+
+# refuses LABEL SED-EXPRESSION EXPECTED: the edited deck ends in
+# "ERROR: Fix servo_bc" with the expected text and a non-zero exit, never a crash
+refuses() {
+  deck_with "$2" "$TMP/bad.in"
+  run_deck 1 bad.in "$TMP/bad.csv" "$TMP/bad.log"
+  local rc=$?
+  if [ $rc -ne 0 ] && [ $rc -lt 124 ] && grep -q "ERROR: Fix servo_bc.*$3" "$TMP/bad.log"; then
+    ok "refuses $1"
+  else
+    no "$1 (exit $rc):"; grep -m1 ERROR "$TMP/bad.log" || tail -2 "$TMP/bad.log"
+  fi
+}
+
+# the checks every LAMMPS-family host passes on DECK
+lattice_checks() {
+  run_deck 1 "$DECK" "$TMP/serial.csv" "$TMP/serial.log" || { echo "$HOST failed:"; tail -5 "$TMP/serial.log"; }
+  closed_form "serial (D) closed form" "$TMP/serial.csv"
+  run_deck 2 "$DECK" "$TMP/np2.csv" "$TMP/np2.log" || { echo "$HOST -np 2 failed:"; tail -5 "$TMP/np2.log"; }
+  closed_form "2 ranks (D) closed form" "$TMP/np2.csv"
+  # 1, 2 and 4 ranks (frame atoms spread over the ranks): the same CSV to 1e-8.
+  # Frictionless with a tight relaxation, so that each equilibrium is unique:
+  # with friction, the rank-dependent force summation order seeds round-off
+  # that the path-dependent contacts amplify (LAMMPS: 1.9e-5 after 4 increments)
+  deck_with 's/servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20/servo_bc P F 0.999 -0.01 -0.01 0.999 increments 3 relax 1e-20 20 gain_force 1e3 gain_moment 1e3 tol_force 1e-12 tol_moment 1e-12/' \
+    "$TMP/ranks.in"
+  for np in 1 2 4; do
+    run_deck $np ranks.in "$TMP/ranks$np.csv" "$TMP/ranks$np.log" || { echo "$HOST -np $np failed:"; tail -3 "$TMP/ranks$np.log"; }
+  done
+  same_csvs "(P) on 1, 2, 4 ranks ($(grep -h "MPI processor grid" "$TMP/ranks4.log" | head -n 1 | sed 's/^ *//'))" 4 \
+    "$TMP/ranks1.csv" "$TMP/ranks2.csv" "$TMP/ranks4.csv"
+  # (P): the affine state is periodic with anti-periodic forces: the same closed form
+  deck_with 's/servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20/servo_bc P F 1.002 0 0 0.997 increments 2 relax 1e-22 20 tol_force 1e-14 tol_moment 1e-14 gain_force 1e3 gain_moment 1e3/' \
+    "$TMP/periodic.in"
+  run_deck 1 periodic.in "$TMP/periodic.csv" "$TMP/periodic.log" || { echo "$HOST (P) failed:"; tail -5 "$TMP/periodic.log"; }
+  closed_form "serial (P) closed form" "$TMP/periodic.csv"
+  # bad input: the core's message, named by the fix; stdout unbuffered, since an
+  # error followed by MPI_Abort can otherwise leave no message on a pipe
+  refuses "a non-positive det F" 's/servo_bc D F 1.002 0 0 0.997/servo_bc D F 1 2 2 1/' \
+    "keyword 'F': det F = -3 is not positive"
+  refuses "an unknown keyword" 's/increments 2 relax/increments 2 bogus 3 relax/' "unknown keyword 'bogus'"
+  refuses "a non-numeric value" 's/increments 2/increments two/' "keyword 'increments': N 'two'"
+  refuses "a frame group that does not exist" 's/increments 2 relax/frame nosuch increments 2 relax/' \
+    "group 'nosuch' does not exist"
+  refuses "frame atoms under another integrator" 's/^fix  *integrate servo_interior/fix integrate all/' \
+    "frame atoms are also integrated by fix integrate"
+  refuses "a group without a frame" 's/^fix  *servo all/group one id 1\nfix             servo one/' "cannot form a frame"
+}
+
+# restart_check: a run split by write_restart (TMP/part1.in) and read_restart
+# (TMP/part2.in) writes the same CSV as the uninterrupted run (TMP/full.in),
+# byte for byte; part2 with another F is refused (decks from restart_decks)
+restart_check() {
+  run_deck 1 full.in "$TMP/full.csv" "$TMP/full.log" || { echo "$HOST full run failed:"; tail -3 "$TMP/full.log"; }
+  run_deck 1 part1.in "$TMP/split.csv" "$TMP/part1.log" && run_deck 1 part2.in "$TMP/split.csv" "$TMP/part2.log"
+  if [ "$(wc -l < "$TMP/split.csv" 2>/dev/null)" = 5 ] && cmp -s "$TMP/full.csv" "$TMP/split.csv"; then
+    ok "restart: the split run writes the uninterrupted run's CSV byte for byte"
+  else
+    no "restart:"; tail -3 "$TMP/part2.log"; diff "$TMP/full.csv" "$TMP/split.csv" | head -5
+  fi
+  sed "s/servo_bc P F 0.999 -0.01/servo_bc P F 0.999 -0.02/" "$TMP/part2.in" > "$TMP/part2_bad.in"
+  run_deck 1 part2_bad.in "$TMP/bad3.csv" "$TMP/bad3.log"
+  if [ $? -ne 0 ] && grep -q "ERROR: Fix servo_bc: restart: keyword 'F': F12" "$TMP/bad3.log"; then
+    ok "restart refuses a contradicting F"
+  else
+    no "restart with another F:"; grep -m1 ERROR "$TMP/bad3.log"
+  fi
+}
+
+# the split decks of restart_check from DECK: the (P) servo words below, the
+# first part cut after 7000 steps; PART2_HEAD holds the host's lines before
+# `fix servo` after read_restart (contact law, neighbours)
+RESTART_SERVO="servo_bc P F 0.999 -0.01 -0.01 0.999 increments 3 relax 1e-20 20 gain_force 1e3 gain_moment 1e3 tol_force 1e-12 tol_moment 1e-12"
+restart_decks() {  # PART2_HEAD_FILE
+  deck_with "s/servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20/$RESTART_SERVO/" "$TMP/full.in"
+  sed "s|^run .*|run 7000\nwrite_restart $TMP/half.restart|; /jump SELF loop/d" "$TMP/full.in" > "$TMP/part1.in"
+  { echo "read_restart $TMP/half.restart"; cat "$1"; sed -n '/^fix  *servo /,$p' "$TMP/full.in"; } > "$TMP/part2.in"
+}
+
+finish() {
+  echo "$pass passed, $fail failed"
+  [ "$fail" -eq 0 ]
+}

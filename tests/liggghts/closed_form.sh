@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# fix servo_bc in LIGGGHTS (build/liggghts_servo, Debian package) on the
+# closed-form (D) lattice of tests/test_lattice.c (tests/liggghts/lattice.in):
+# (D) and (P) against the closed form, serial and on 2 ranks, (P) on 1, 2 and
+# 4 ranks, refused input, restart (tests/host_checks.sh). Prints "N passed, N failed".
+# Usage: closed_form.sh LIGGGHTS_SERVO SERVO_BC
+set -u
+BIN=$(cd "$(dirname "${1:?usage: closed_form.sh LIGGGHTS_SERVO SERVO_BC}")" && pwd)/$(basename "$1")
+emb=$(cd "$(dirname "${2:?usage: closed_form.sh LIGGGHTS_SERVO SERVO_BC}")" && pwd)/$(basename "$2")
+here=$(cd "$(dirname "$0")" && pwd)
+HOST=liggghts DECK=$here/lattice.in TMP=$(mktemp -d)
+. "$here/../host_checks.sh"
+printf 'dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\ndensity 2e3\nwrite_packing liggghts %s\n' \
+  "$TMP/lattice5.data" > "$TMP/packing.sbc"
+"$emb" "$TMP/packing.sbc" > /dev/null || echo "servo-bc could not write the packing"
+# stdout unbuffered: LIGGGHTS' error and MPI_Abort can leave no message on a pipe
+printf '#!/bin/sh\nexec stdbuf -o0 "%s" "$@"\n' "$BIN" > "$TMP/liggghts_unbuffered"
+chmod +x "$TMP/liggghts_unbuffered"
+BIN=$TMP/liggghts_unbuffered
+lattice_checks
+refuses "a 3d box" 's/^dimension       2/dimension 3/; /enforce2d/d' "the box is 3d"
+refuses "a pair style without tangential history" 's/tangential history/tangential no_history/' \
+  "keeps no tangential history"
+refuses "kn that differs between types" 's/kn peratomtypepair 2 1e4 1e4 1e4 1e4/kn peratomtypepair 2 1e4 2e4 2e4 1e4/' \
+  "fix property/global kn differs between atom type pairs"
+cat > "$TMP/restart_head.in" <<LIG
+newton          off
+communicate     single vel yes
+neighbor        0.000255 bin
+neigh_modify    delay 0
+LIG
+sed -n '/^fix  *kn /,/^timestep/p' "$DECK" >> "$TMP/restart_head.in"
+restart_decks "$TMP/restart_head.in"
+restart_check
+# LIGGGHTS 3.8 does not keep the time step in its restart files: without it the
+# fix would servo with other gains (eq. 37); the core refuses
+sed '/^timestep/d' "$TMP/part2.in" > "$TMP/part2_nodt.in"
+run_deck 1 part2_nodt.in "$TMP/nodt.csv" "$TMP/nodt.log"
+if [ $? -ne 0 ] && grep -q "ERROR: Fix servo_bc: restart: time step .* contradicts the saved 1.0000000000000001e-05 s" "$TMP/nodt.log"; then
+  ok "restart refuses a time step other than the saved one"
+else
+  no "restart without the time step:"; grep -m1 ERROR "$TMP/nodt.log" || tail -2 "$TMP/nodt.log"
+fi
+rm -rf "$TMP"
+finish
