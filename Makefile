@@ -1,7 +1,8 @@
 # servo_bc: pure-C core, embedded runner, tests.
 #   make          core libraries (static, shared) and the runner build/servo-bc
 #   make demo     the paper's 25-particle (D) case on the embedded engine
-#   make check    every test: core, ASan+UBSan build, valgrind, LAMMPS (installs what it needs)
+#   make check    every test: core, ASan+UBSan build, valgrind, LAMMPS, LIGGGHTS, the hosts side by
+#                 side, YADE (installs what it needs)
 #   make lammps   build/lmp_servo: LAMMPS with fix servo_bc (Debian package)
 #   make liggghts build/liggghts_servo: LIGGGHTS with fix servo_bc (Debian package)
 #   make yade     the YADE engine's library (build/libservo_bc.so) and the Debian YADE package
@@ -20,7 +21,8 @@ CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 TEST_HDR = $(wildcard tests/*.h)
 
-.PHONY: all demo check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-yade lammps liggghts \
+.PHONY: all demo check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
+  check-yade lammps liggghts \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
@@ -54,7 +56,8 @@ demo: all
 	$(B)/servo-bc inputs/demo_D_25.sbc
 
 check: deps
-	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind check-lammps check-liggghts check-yade
+	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
+	  check-yade
 
 deps:
 	@bash scripts/install-deps.sh core
@@ -94,8 +97,6 @@ $(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_HDR)/fix_neigh_history.
 
 check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_driver
 	bash tests/lammps/closed_form.sh $(B)/lmp_servo $(B)/plugin_driver $(B)/servo_bc_plugin.so
-	bash tests/lammps/cross_host.sh $(B)/lmp_servo $(B)/servo-bc
-	bash tests/lammps/mixed_layer.sh $(B)/lmp_servo $(B)/servo-bc
 
 # LIGGGHTS adapter: the LAMMPS fix source compiled against LIGGGHTS 3.8
 # (lammps_fix/fix_servo_bc.cpp with -DSERVO_BC_LIGGGHTS; the differences are in
@@ -113,8 +114,13 @@ $(B)/liggghts_servo: $(LIG_SRC) $(B)/libservo_bc.a /usr/include/liggghts/pair_gr
 	  -Iliggghts_fix -Ilammps_fix -Isrc_core/include -o $@ liggghts_fix/liggghts_servo.cpp lammps_fix/fix_servo_bc.cpp \
 	  $(B)/libservo_bc.a -lliggghts -lm
 
-check-liggghts: $(B)/liggghts_servo $(B)/lmp_servo $(B)/servo-bc
-	bash tests/liggghts/run.sh $(B)/liggghts_servo $(B)/servo-bc $(B)/lmp_servo
+check-liggghts: $(B)/liggghts_servo $(B)/servo-bc
+	bash tests/liggghts/closed_form.sh $(B)/liggghts_servo $(B)/servo-bc
+
+# the embedded engine, LAMMPS and LIGGGHTS on the same packing and settings
+check-cross-host: $(B)/servo-bc $(B)/lmp_servo $(B)/liggghts_servo
+	bash tests/cross_host.sh $(B)/servo-bc $(B)/lmp_servo $(B)/liggghts_servo
+	bash tests/mixed_layer.sh $(B)/servo-bc $(B)/lmp_servo $(B)/liggghts_servo
 
 # YADE engine: Python (yade_adapter/servo_bc.py) over the core's shared library
 yade: $(B)/libservo_bc.so $(B)/servo-bc

@@ -1,11 +1,14 @@
-# Cross-host difference of two servo_bc CSVs pasted side by side
+# Cross-host difference of servo_bc CSVs pasted side by side
 # (paste -d, A.csv B.csv | awk -F, -f tests/sigma_diff.awk): prints the number
 # of increments and max |sigma_B - sigma_A| over the four components, in % of
-# the stress scale (max |sigma_A| of the run).
+# the stress scale (max |sigma_A| of the run). With more files pasted, -v a=I
+# -v b=J compare the I-th and J-th (from 1) and -v scale_from=K takes the scale
+# from the K-th.
+BEGIN { if (!a) a = 1; if (!b) b = 2; if (!scale_from) scale_from = a }
 NR > 1 {
   for (c = 10; c <= 13; c++) {
-    a = $c < 0 ? -$c : $c; if (a > s) s = a
-    d = $c - $(c + 20); if (d < 0) d = -d; if (d > m) m = d
+    v = $(c + 20 * (scale_from - 1)); v = v < 0 ? -v : v; if (v > s) s = v
+    d = $(c + 20 * (b - 1)) - $(c + 20 * (a - 1)); if (d < 0) d = -d; if (d > m) m = d
   }
   n++
 }

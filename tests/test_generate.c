@@ -186,6 +186,24 @@ static void test_generated_frame(const sbc_packing *a, double L)
           strstr(err.message, "bad:1: generate: polydispersity '3'"));
     CHECK(sbc_script_run_string("write_packing vtk x\n", "bad", NULL, &err) == SBC_ERR_INPUT &&
           strstr(err.message, "no packing"));
+    /* the runner's writers by name: YADE needs no density, the data files do */
+    {
+        const char *format[3] = {"yade", "lammps", "liggghts"};
+        int k;
+        for (k = 0; k < 3; ++k) {
+            snprintf(path, sizeof path, "%s/runner_packing.%s", test_tmpdir, format[k]);
+            snprintf(script, sizeof script, "lattice square 3 3 spacing 2e-3 radius 1.02e-3\nwrite_packing %s %s\n",
+                     format[k], path);
+            CHECK(k == 0 ? sbc_script_run_string(script, "w", NULL, &err) == SBC_OK
+                         : sbc_script_run_string(script, "w", NULL, &err) == SBC_ERR_INPUT &&
+                               strstr(err.message, "no density"));
+            snprintf(script, sizeof script,
+                     "lattice square 3 3 spacing 2e-3 radius 1.02e-3\ndensity 2e3\nwrite_packing %s %s\n", format[k],
+                     path);
+            CHECK(sbc_script_run_string(script, "w", NULL, &err) == SBC_OK && count_lines(path, "") >= 9);
+        }
+        CHECK(count_lines(path, "LIGGGHTS data file") == 1);
+    }
 }
 
 

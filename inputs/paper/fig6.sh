@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fig. 6 / Sect. 4.2: the five irregular periodic packings (n0 = 25 ... 600,
 # polydispersity 2, R_min = 0.67 mm, seed 1): particle counts, volume fraction,
-# coordination, rose diagrams; writes each packing as text, LAMMPS data and YADE
+# coordination, rose diagrams; writes each packing as text, LAMMPS and LIGGGHTS data and YADE
 # files in out/paper/ for the other cases and hosts. About 1.5 min.
 set -euo pipefail
 . "$(dirname "$0")/common.sh"
@@ -18,6 +18,7 @@ generate periodic n0 $n0 rmin 0.67e-3 polydispersity 2 seed 1
 density 2e3
 write_packing text $out/packing_$n0.txt
 write_packing lammps $out/packing_$n0.data
+write_packing liggghts $out/packing_$n0.liggghts.data
 write_packing yade $out/packing_$n0.yade
 rose $fig/fig6c_rose_$n0.svg
 SBC

@@ -73,9 +73,12 @@ sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
         }
         for (k = 0; k < frame.n; ++k)
             is_frame[frame.particle[k]] = 1;
-        st = w[1][1] == 'a' ? sbc_packing_write_lammps(&s->packing, is_frame, s->density, w[2], err)
-             : w[1][1] == 'i' ? sbc_packing_write_liggghts(&s->packing, is_frame, s->density, w[2], err)
-                              : sbc_packing_write_yade(&s->packing, is_frame, w[2], err);
+        if (strcmp(w[1], "lammps") == 0)
+            st = sbc_packing_write_lammps(&s->packing, is_frame, s->density, w[2], err);
+        else if (strcmp(w[1], "liggghts") == 0)
+            st = sbc_packing_write_liggghts(&s->packing, is_frame, s->density, w[2], err);
+        else
+            st = sbc_packing_write_yade(&s->packing, is_frame, w[2], err);
         free(is_frame);
         sbc_frame_free(&frame);
         return st;
