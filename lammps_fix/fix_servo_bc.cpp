@@ -197,7 +197,7 @@ void FixServoBC::init()
       fail(err.message);
     if (comm->me == 0 && settings.file[0] &&
         (restored ? sbc_csv_append(&csv, settings.file, &err) : sbc_csv_open(&csv, settings.file, &err)) != SBC_OK)
-      error->one(FLERR, (std::string("Fix servo_bc: ") + err.message).c_str());
+      fail_here(err.message);
   }
 }
 
@@ -386,7 +386,7 @@ void FixServoBC::post_force(int)
   if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
     last = *sbc_controller_result(ctl);
     if (comm->me == 0 && csv && sbc_csv_write(csv, &last, &err) != SBC_OK)
-      error->one(FLERR, (std::string("Fix servo_bc: ") + err.message).c_str());
+      fail_here(err.message);
     log("servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %ld iterations %d\n",
         sbc_bc_name(settings.bc), last.increment, sbc_settings_total_increments(&settings), last.F[1],
         last.sigma[0], last.sigma[1], (long) last.relax_steps, last.iterations);
@@ -507,10 +507,19 @@ int FixServoBC::unpack_exchange(int nlocal, double *in)
   return 1;
 }
 
-/* every error of this fix: "Fix servo_bc: " and the message, on all ranks */
+/* every error of this fix: "Fix servo_bc: " and the message, on all ranks
+   (fail) or on this rank alone (fail_here, which aborts the others). The text
+   lives in a member: the host may read it while it tears the job down. */
 void FixServoBC::fail(const std::string &message)
 {
-  error->all(FLERR, (std::string("Fix servo_bc: ") + message).c_str());
+  last_error = "Fix servo_bc: " + message;
+  error->all(FLERR, last_error.c_str());
+}
+
+void FixServoBC::fail_here(const std::string &message)
+{
+  last_error = "Fix servo_bc: " + message;
+  error->one(FLERR, last_error.c_str());
 }
 
 /* a line on screen and in the log file, from rank 0 */

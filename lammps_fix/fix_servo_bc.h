@@ -85,6 +85,8 @@ class FixServoBC : public Fix {
   void detect_frame();
   void make_buffers();
   void fail(const std::string &message);
+  void fail_here(const std::string &message);
+  std::string last_error;
   void log(const char *format, ...) __attribute__((format(printf, 2, 3)));
 };
 

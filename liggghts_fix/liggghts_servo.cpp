@@ -10,6 +10,7 @@
 #include "lammps.h"
 #include "modify.h"
 
+#include <cstdio>
 #include <map>
 #include <mpi.h>
 #include <string>
@@ -37,6 +38,9 @@ Fix *create_servo_bc(LAMMPS *lmp, int narg, char **arg)
 int main(int argc, char **argv)
 {
   MPI_Init(&argc, &argv);
+  // LIGGGHTS prints an error to stdout and calls MPI_Abort: on a pipe, a
+  // block-buffered stdout would lose the message (HOSTS.md)
+  setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   LAMMPS *lmp = new LAMMPS(argc, argv, MPI_COMM_WORLD);
   (*(lmp->modify->*member(FixMap())))["servo_bc"] = &create_servo_bc;
   lmp->input->file();

@@ -94,7 +94,7 @@ LIG
   (cd "$tmp" && "$emb" "$bc.sbc" > "embedded_$bc.log" 2>&1) || { echo "servo-bc $bc failed:"; tail -3 "$tmp/embedded_$bc.log"; }
   (cd "$tmp" && "$lmp" -in "lammps_$bc.in" -log none > "lammps_$bc.log" 2>&1) \
     || { echo "lmp_servo $bc failed:"; tail -3 "$tmp/lammps_$bc.log"; }
-  (cd "$tmp" && stdbuf -o0 "$lig" -in "liggghts_$bc.in" -log none > "liggghts_$bc.log" 2>&1) \
+  (cd "$tmp" && "$lig" -in "liggghts_$bc.in" -log none > "liggghts_$bc.log" 2>&1) \
     || { echo "liggghts_servo $bc failed:"; tail -3 "$tmp/liggghts_$bc.log"; }
   for pair in lammps:embedded liggghts:embedded liggghts:lammps; do
     b=${pair%%:*} a=${pair##*:}

@@ -82,7 +82,7 @@ include         $here/../inputs/liggghts/run_to_end.in
 LIG
 "$emb" "$tmp/layer.sbc" > "$tmp/emb.log" 2>&1 || { echo "servo-bc failed:"; tail -3 "$tmp/emb.log"; }
 (cd "$tmp" && "$lmp" -in layer.in -log none > lmp.log 2>&1) || { echo "lmp_servo failed:"; tail -3 "$tmp/lmp.log"; }
-(cd "$tmp" && stdbuf -o0 "$lig" -in layer_liggghts.in -log none > liggghts.log 2>&1) \
+(cd "$tmp" && "$lig" -in layer_liggghts.in -log none > liggghts.log 2>&1) \
   || { echo "liggghts_servo failed:"; tail -3 "$tmp/liggghts.log"; }
 for host in lammps liggghts; do
   csv=$tmp/lmp.csv

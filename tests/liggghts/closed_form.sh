@@ -13,16 +13,23 @@ HOST=liggghts DECK=$here/lattice.in TMP=$(mktemp -d)
 printf 'dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\ndensity 2e3\nwrite_packing liggghts %s\n' \
   "$TMP/lattice5.data" > "$TMP/packing.sbc"
 "$emb" "$TMP/packing.sbc" > /dev/null || echo "servo-bc could not write the packing"
-# stdout unbuffered: LIGGGHTS' error and MPI_Abort can leave no message on a pipe
-printf '#!/bin/sh\nexec stdbuf -o0 "%s" "$@"\n' "$BIN" > "$TMP/liggghts_unbuffered"
-chmod +x "$TMP/liggghts_unbuffered"
-BIN=$TMP/liggghts_unbuffered
 lattice_checks
 refuses "a 3d box" 's/^dimension       2/dimension 3/; /enforce2d/d' "the box is 3d"
 refuses "a pair style without tangential history" 's/tangential history/tangential no_history/' \
   "keeps no tangential history"
 refuses "kn that differs between types" 's/kn peratomtypepair 2 1e4 1e4 1e4 1e4/kn peratomtypepair 2 1e4 2e4 2e4 1e4/' \
   "fix property/global kn differs between atom type pairs"
+# an error on one rank (the results file cannot be opened) aborts the job: the
+# message must still reach a pipe (liggghts_servo line-buffers stdout)
+deck_with 's|file ${csv}|file /nonexistent/dir/out.csv|' "$TMP/bad_file.in"
+run_deck 2 bad_file.in "$TMP/unused.csv" "$TMP/bad_file.log"
+rc=$?
+if [ $rc -ne 0 ] && grep -aq "ERROR on proc 0: Fix servo_bc: keyword 'file': cannot open '/nonexistent/dir/out.csv'" \
+     "$TMP/bad_file.log"; then
+  ok "refuses an unwritable results file on 2 ranks, message on the pipe"
+else
+  no "unwritable results file (exit $rc):"; tail -3 "$TMP/bad_file.log"
+fi
 cat > "$TMP/restart_head.in" <<LIG
 newton          off
 communicate     single vel yes
