@@ -6,6 +6,7 @@
 #   make lammps   build/lmp_servo: LAMMPS with fix servo_bc (Debian package)
 #   make liggghts build/liggghts_servo: LIGGGHTS with fix servo_bc (Debian package)
 #   make yade     the YADE engine's library (build/libservo_bc.so) and the Debian YADE package
+#   make compare CASE=FILE.sbc   one case on every engine, report in out/compare/ (docs/cross-host.md)
 #   make bench    benchmarks (prints figures; LAMMPS side when installed)
 
 CC      ?= cc
@@ -21,7 +22,7 @@ CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 TEST_HDR = $(wildcard tests/*.h)
 
-.PHONY: all demo check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
+.PHONY: all demo compare check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
   check-yade lammps liggghts \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
@@ -117,10 +118,20 @@ $(B)/liggghts_servo: $(LIG_SRC) $(B)/libservo_bc.a /usr/include/liggghts/pair_gr
 check-liggghts: $(B)/liggghts_servo $(B)/servo-bc
 	bash tests/liggghts/closed_form.sh $(B)/liggghts_servo $(B)/servo-bc
 
-# the embedded engine, LAMMPS and LIGGGHTS on the same packing and settings
-check-cross-host: $(B)/servo-bc $(B)/lmp_servo $(B)/liggghts_servo
-	bash tests/cross_host.sh $(B)/servo-bc $(B)/lmp_servo $(B)/liggghts_servo
+# every engine on the same case (through the compare command), and the mixed
+# layer in LAMMPS and LIGGGHTS against the embedded engine
+check-cross-host: $(B)/servo-bc $(B)/servo-bc-plot $(B)/lmp_servo $(B)/liggghts_servo yade
+	B=$(abspath $(B)) bash tests/cross_host.sh
 	bash tests/mixed_layer.sh $(B)/servo-bc $(B)/lmp_servo $(B)/liggghts_servo
+
+# make compare CASE=inputs/compare/regular_P_30.sbc: one case on every engine
+# there is (hosts that cannot be built or installed are skipped); report in
+# out/compare/NAME/ (docs/cross-host.md)
+compare: all
+	@test -n "$(CASE)" || { echo "usage: make compare CASE=FILE.sbc (cases in inputs/compare/)"; exit 2; }
+	@$(MAKE) -k --no-print-directory lammps liggghts yade > $(B)/compare-hosts.log 2>&1 || \
+	  echo "compare: not every host could be built or installed (see $(B)/compare-hosts.log)"
+	B=$(abspath $(B)) bash scripts/compare.sh $(CASE)
 
 # YADE engine: Python (yade_adapter/servo_bc.py) over the core's shared library
 yade: $(B)/libservo_bc.so $(B)/servo-bc

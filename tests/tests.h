@@ -16,4 +16,5 @@ void test_restart(void);
 void test_generate(void);
 void test_mixed(void);
 void test_host(void);
+void test_decks(void);
 #endif

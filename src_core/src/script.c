@@ -422,6 +422,26 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     return st;
 }
 
+/* The servo_bc words without 'file NAME', for the decks of every host. */
+static sbc_status keep_servo_words(script *s, int nw, char **w, sbc_error *err)
+{
+    size_t used = 0;
+    int k;
+    s->servo_words[0] = '\0';
+    for (k = 1; k < nw; ++k) {
+        if (strcmp(w[k], "file") == 0 && k + 1 < nw) {
+            ++k;
+            continue;
+        }
+        used += (size_t)snprintf(s->servo_words + used, used < sizeof s->servo_words ? sizeof s->servo_words - used : 0,
+                                 "%s%s", used ? " " : "", w[k]);
+        if (used >= sizeof s->servo_words)
+            return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: the line is longer than %d characters",
+                            (int)sizeof s->servo_words - 1);
+    }
+    return SBC_OK;
+}
+
 static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
 {
     const char *c = w[0];
@@ -465,7 +485,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
         }
         s->have_servo = 1;
         s->servo_line = s->line;
-        return SBC_OK;
+        return keep_servo_words(s, nw, w, err);
     }
     if (strcmp(c, "vtk") == 0) return cmd_snapshots(nw, w, &s->vtk_every, s->vtk_prefix, err);
     if (strcmp(c, "network") == 0) return cmd_snapshots(nw, w, &s->network_every, s->network_prefix, err);
@@ -477,7 +497,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
     }
     if (strcmp(c, "run") == 0) {
         if ((st = sbc_script_expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
-        return cmd_run(s, err);
+        return s->decks_dir ? sbc_script_write_decks(s, s->decks_dir, err) : cmd_run(s, err);
     }
     return sbc_fail(err, SBC_ERR_INPUT,
                     "unknown command '%s' (expected dimension, lattice, read_packing, generate, write_packing, rose, "
@@ -485,7 +505,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
                     c);
 }
 
-sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, sbc_error *err)
+static sbc_status run_text(const char *text, const char *name, FILE *log, const char *decks_dir, sbc_error *err)
 {
     script s;
     const char *p = text;
@@ -494,6 +514,7 @@ sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, 
     memset(&s, 0, sizeof s);
     s.name = name;
     s.log = log;
+    s.decks_dir = decks_dir;
     s.settings = sbc_settings_default();
     while (*p && st == SBC_OK) {
         const char *e = strchr(p, '\n');
@@ -519,7 +540,12 @@ sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, 
     return st;
 }
 
-sbc_status sbc_script_run_file(const char *path, FILE *log, sbc_error *err)
+sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, sbc_error *err)
+{
+    return run_text(text, name, log, NULL, err);
+}
+
+static sbc_status run_file(const char *path, FILE *log, const char *decks_dir, sbc_error *err)
 {
     FILE *fp = fopen(path, "rb");
     char *text;
@@ -543,7 +569,17 @@ sbc_status sbc_script_run_file(const char *path, FILE *log, sbc_error *err)
     }
     text[size] = '\0';
     fclose(fp);
-    st = sbc_script_run_string(text, path, log, err);
+    st = run_text(text, path, log, decks_dir, err);
     free(text);
     return st;
+}
+
+sbc_status sbc_script_run_file(const char *path, FILE *log, sbc_error *err)
+{
+    return run_file(path, log, NULL, err);
+}
+
+sbc_status sbc_script_decks_file(const char *path, const char *dir, FILE *log, sbc_error *err)
+{
+    return run_file(path, log, dir, err);
 }

@@ -28,6 +28,8 @@ typedef struct script {
     int network_every;
     char network_prefix[SBC_NAME_LEN];
     char plot[SBC_NAME_LEN];
+    char servo_words[2048]; /* the servo_bc words without 'file NAME' */
+    const char *decks_dir;  /* --decks: 'run' writes the hosts' inputs here instead */
 } script;
 
 /* "cmd: missing values / unexpected extra value" unless nw == want. */
@@ -42,5 +44,10 @@ sbc_status sbc_script_positive(const char *cmd, const char *what, const char *wo
 sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err);
 sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err);
 sbc_status sbc_script_rose(script *s, int nw, char **w, sbc_error *err);
+
+/* The case for every host (script_decks.c): in dir, the packing (packing.txt,
+ * packing.lammps.data, packing.liggghts.data, packing.yade) and embedded.sbc,
+ * lammps.in, liggghts.in, yade.py, each writing dir/HOST.csv. */
+sbc_status sbc_script_write_decks(script *s, const char *dir, sbc_error *err);
 
 #endif

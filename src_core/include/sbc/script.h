@@ -28,4 +28,11 @@ sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, 
 /* Reads and runs the script file at path. */
 sbc_status sbc_script_run_file(const char *path, FILE *log, sbc_error *err);
 
+/* Reads the script file at path and, at its 'run', writes into the existing
+ * folder dir the same case for every host instead of running it: the packing
+ * (packing.txt, packing.lammps.data, packing.liggghts.data, packing.yade) and
+ * embedded.sbc, lammps.in, liggghts.in, yade.py, each of which, run in dir,
+ * writes dir/HOST.csv (frictional contact law only). */
+sbc_status sbc_script_decks_file(const char *path, const char *dir, FILE *log, sbc_error *err);
+
 #endif

@@ -1,0 +1,38 @@
+# Rows of the difference table of scripts/compare.sh: the embedded CSV and an
+# engine's CSV pasted side by side (paste -d,), -v e=ENGINE. Per sigma
+# component: max and mean of |sigma_e - sigma_embedded| in % of the stress
+# scale (max |sigma| of the embedded run), up to the first peak of |sigma12| of
+# the embedded run (a maximum the next 10 increments stay below; the whole path
+# when there is none) and over the whole path; increments missing from either
+# run are left out and counted.
+NR > 1 && $1 != "" {
+  n++
+  for (c = 10; c <= 13; c++) {
+    a[n, c] = $c; v = $c < 0 ? -$c : $c; if (v > scale) scale = v
+    have[n] = $21 != ""; b[n, c] = $(c + 20)
+  }
+}
+END {
+  # the first peak: the running maximum of |sigma12| that the next 10
+  # increments stay below (relaxation noise makes single dips)
+  peak = n; top = -1; below = 0
+  for (k = 1; k <= n; k++) {
+    cur = a[k, 11] < 0 ? -a[k, 11] : a[k, 11]
+    if (cur > top) { top = cur; at = k; below = 0 }
+    else if (++below >= 10) { peak = at; break }
+  }
+  split("σ̄11 σ̄12 σ̄21 σ̄22", name, " ")
+  for (c = 10; c <= 13; c++) {
+    m1 = s1 = m2 = s2 = n1 = n2 = 0
+    for (k = 1; k <= n; k++) {
+      if (!have[k]) continue
+      d = b[k, c] - a[k, c]; d = 100 * (d < 0 ? -d : d) / (scale > 0 ? scale : 1)
+      if (k <= peak) { if (d > m1) m1 = d; s1 += d; n1++ }
+      if (d > m2) m2 = d; s2 += d; n2++
+    }
+    printf "| %s | %s | %.4g | %.4g | %.4g | %.4g |\n", e, name[c - 9], m1, (n1 ? s1 / n1 : 0), m2, (n2 ? s2 / n2 : 0)
+  }
+  missing = 0; for (k = 1; k <= n; k++) missing += !have[k]
+  if (missing) printf "| %s | (%d of %d increments missing) | | | | |\n", e, missing, n
+  printf "| %s | (first peak at increment %d) | | | | |\n", e, peak - 1
+}

@@ -1,0 +1,187 @@
+/* The runner's case as input for every host (`servo-bc --decks DIR CASE`):
+ * one packing written in each host's format, and the embedded script, the
+ * LAMMPS deck, the LIGGGHTS script and the YADE script that run the same
+ * contact law, time step and servo_bc words on it, each writing DIR/HOST.csv.
+ * Written from the parsed case, so the four cannot drift apart by hand. */
+#include "script_state.h"
+
+#include "sbc/frame.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The shortest of %.15g, %.17g that reads back as v (1e-06, not
+ * 9.9999999999999995e-07); the temporary lives to the end of the full
+ * expression that uses it (C11 6.2.4). */
+typedef struct number_text {
+    char s[32];
+} number_text;
+
+static number_text num(double v)
+{
+    number_text t;
+    snprintf(t.s, sizeof t.s, "%.15g", v);
+    if (strtod(t.s, NULL) != v)
+        snprintf(t.s, sizeof t.s, "%.17g", v);
+    return t;
+}
+
+/* DIR/name opened for writing */
+static sbc_status open_in(FILE **fp, const char *dir, const char *name, char *path, size_t size, sbc_error *err)
+{
+    if ((size_t)snprintf(path, size, "%s/%s", dir, name) >= size)
+        return sbc_fail(err, SBC_ERR_INPUT, "--decks: directory name '%s' is too long", dir);
+    if (!(*fp = fopen(path, "w")))
+        return sbc_fail(err, SBC_ERR_IO, "--decks: cannot open '%s' for writing", path);
+    return SBC_OK;
+}
+
+static sbc_status close_file(FILE *fp, const char *path, sbc_error *err)
+{
+    int bad = ferror(fp);
+    if (fclose(fp) != 0 || bad)
+        return sbc_fail(err, SBC_ERR_IO, "--decks: error writing '%s'", path);
+    return SBC_OK;
+}
+
+/* The frame words of a host: a periodic packing's frame is the flagged one
+ * (its corner copies are recognized only in a given list), a lattice ring's
+ * is detected from the positions by every host alike. */
+static const char *frame_words(const script *s, const char *host)
+{
+    if (!s->packing.has_box)
+        return "";
+    return strcmp(host, "yade") == 0 ? " frame 2" : " frame frame_atoms";
+}
+
+static sbc_status write_embedded(const script *s, const char *dir, sbc_error *err)
+{
+    char path[2 * SBC_NAME_LEN];
+    FILE *fp;
+    sbc_status st = open_in(&fp, dir, "embedded.sbc", path, sizeof path, err);
+    if (st != SBC_OK)
+        return st;
+    fprintf(fp, "# %s on the embedded engine (servo-bc --decks); run in this folder\n", s->name);
+    fprintf(fp, "dimension 2\nread_packing packing.txt\ncontact frictional kn %s ks %s mu %s\n"
+                "density %s\ntimestep %s\nservo_bc %s file embedded.csv\nrun\n",
+            num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s, num(s->density).s, num(s->dt).s, s->servo_words);
+    return close_file(fp, path, err);
+}
+
+static sbc_status write_lammps(const script *s, const char *dir, double skin, sbc_error *err)
+{
+    char path[2 * SBC_NAME_LEN];
+    FILE *fp;
+    sbc_status st = open_in(&fp, dir, "lammps.in", path, sizeof path, err);
+    if (st != SBC_OK)
+        return st;
+    fprintf(fp, "# %s in LAMMPS (servo-bc --decks): build/lmp_servo -in lammps.in, in this folder\n", s->name);
+    fprintf(fp, "units           si\ndimension       2\nboundary        m m p\natom_style      sphere\n"
+                "read_data       packing.lammps.data\ngroup           frame_atoms type 2\n"
+                "pair_style      gran/hooke/history %s %s 0 0 %s 0\npair_coeff      * *\n"
+                "comm_modify     vel yes\nneighbor        %s bin\nneigh_modify    delay 0 every 1 check yes\n"
+                "timestep        %s\n",
+            num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s, num(skin).s, num(s->dt).s);
+    fprintf(fp, "fix             servo all servo_bc %s%s file lammps.csv\n", s->servo_words, frame_words(s, "lammps"));
+    fprintf(fp, "fix             integrate servo_interior nve/sphere disc\nfix             plane all enforce2d\n"
+                "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]\n"
+                "thermo          100000\nrun             2000000000    # the fix ends the run\n");
+    return close_file(fp, path, err);
+}
+
+static sbc_status write_liggghts(const script *s, const char *dir, double skin, sbc_error *err)
+{
+    static const char *property[5] = {"kn", "kt", "gamman_abs", "gammat_abs", "coefficientFriction"};
+    const double value[5] = {s->law.kn, s->law.ks, 0.0, 0.0, s->law.mu};
+    char path[2 * SBC_NAME_LEN];
+    FILE *fp;
+    int k;
+    sbc_status st = open_in(&fp, dir, "liggghts.in", path, sizeof path, err);
+    if (st != SBC_OK)
+        return st;
+    fprintf(fp, "# %s in LIGGGHTS (servo-bc --decks): build/liggghts_servo -in liggghts.in, in this folder\n",
+            s->name);
+    fprintf(fp, "units           si\ndimension       2\nboundary        m m p\natom_style      sphere\n"
+                "newton          off\ncommunicate     single vel yes\nread_data       packing.liggghts.data\n"
+                "group           frame_atoms type 2\n");
+    for (k = 0; k < 5; ++k)
+        fprintf(fp, "fix             m%d all property/global %s peratomtypepair 2 %s %s %s %s\n", k + 1, property[k],
+                num(value[k]).s, num(value[k]).s, num(value[k]).s, num(value[k]).s);
+    fprintf(fp, "pair_style      gran model hooke/stiffness tangential history absolute_damping on\n"
+                "pair_coeff      * *\nneighbor        %s bin\nneigh_modify    delay 0\ntimestep        %s\n",
+            num(skin).s, num(s->dt).s);
+    fprintf(fp, "fix             servo all servo_bc %s%s file liggghts.csv\n", s->servo_words,
+            frame_words(s, "liggghts"));
+    fprintf(fp, "fix             integrate servo_interior nve/sphere\nfix             plane all enforce2d\n"
+                "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]\n"
+                "thermo          100000\n"
+                "variable        done equal f_servo[18]    # LIGGGHTS cannot end a run from a fix\n"
+                "label           loop\nrun             10000\n"
+                "if              \"${done} == 0\" then \"jump SELF loop\"\n");
+    return close_file(fp, path, err);
+}
+
+static sbc_status write_yade(const script *s, const char *dir, sbc_error *err)
+{
+    char path[2 * SBC_NAME_LEN];
+    FILE *fp;
+    sbc_status st = open_in(&fp, dir, "yade.py", path, sizeof path, err);
+    if (st != SBC_OK)
+        return st;
+    fprintf(fp, "# %s in YADE (servo-bc --decks): SERVO_BC_YADE=<servo_bc>/yade_adapter yade -n -x yade.py,\n"
+                "# in this folder\nimport os\nimport sys\nsys.path.insert(0, os.environ['SERVO_BC_YADE'])\n"
+                "import servo_bc  # noqa: E402\n\n",
+            s->name);
+    fprintf(fp, "words = '%s%s file yade.csv'\n", s->servo_words, frame_words(s, "yade"));
+    fprintf(fp, "servo_bc.run_case('packing.yade', words, density=%s, kn=%s, ks=%s, mu=%s, dt=%s)\n",
+            num(s->density).s, num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s, num(s->dt).s);
+    return close_file(fp, path, err);
+}
+
+sbc_status sbc_script_write_decks(script *s, const char *dir, sbc_error *err)
+{
+    char path[2 * SBC_NAME_LEN];
+    sbc_frame frame;
+    int *is_frame, k;
+    double rmin = HUGE_VAL;
+    sbc_status st;
+    if (!s->have_packing) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no packing (use 'lattice', 'read_packing' or 'generate')");
+    if (!s->have_contact) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no contact law (use 'contact frictional ...')");
+    if (!s->have_density) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no density (use 'density RHO')");
+    if (!s->have_dt) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no time step (use 'timestep DT')");
+    if (!s->have_servo) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no boundary condition (use 'servo_bc BC ...')");
+    if (s->cohesive)
+        return sbc_fail(err, SBC_ERR_INPUT, "--decks: 'contact cohesive' has no counterpart in the hosts' fixes; "
+                                            "compare frictional cases");
+    if (s->settings.frame_group[0])
+        return sbc_fail(err, SBC_ERR_INPUT, "--decks: servo_bc keyword 'frame' names a host group '%s'; the decks "
+                                            "take the frame of the packing", s->settings.frame_group);
+    if ((st = sbc_frame_detect_packing(&frame, &s->packing, err)) != SBC_OK)
+        return st;
+    if (!(is_frame = calloc((size_t)s->packing.n, sizeof *is_frame))) {
+        sbc_frame_free(&frame);
+        return sbc_fail(err, SBC_ERR_NOMEM, "--decks: out of memory");
+    }
+    for (k = 0; k < frame.n; ++k)
+        is_frame[frame.particle[k]] = 1;
+    for (k = 0; k < s->packing.n; ++k)
+        rmin = fmin(rmin, s->packing.r[k]);
+#define IN_DIR(name) (snprintf(path, sizeof path, "%s/%s", dir, name) < (int)sizeof path ? path : "")
+    st = sbc_packing_write_text(&s->packing, IN_DIR("packing.txt"), err);
+    if (st == SBC_OK)
+        st = sbc_packing_write_lammps(&s->packing, is_frame, s->density, IN_DIR("packing.lammps.data"), err);
+    if (st == SBC_OK)
+        st = sbc_packing_write_liggghts(&s->packing, is_frame, s->density, IN_DIR("packing.liggghts.data"), err);
+    if (st == SBC_OK)
+        st = sbc_packing_write_yade(&s->packing, is_frame, IN_DIR("packing.yade"), err);
+#undef IN_DIR
+    free(is_frame);
+    sbc_frame_free(&frame);
+    /* neighbour skin R_min / 4, as the hand-written decks */
+    if (st == SBC_OK) st = write_embedded(s, dir, err);
+    if (st == SBC_OK) st = write_lammps(s, dir, 0.25 * rmin, err);
+    if (st == SBC_OK) st = write_liggghts(s, dir, 0.25 * rmin, err);
+    if (st == SBC_OK) st = write_yade(s, dir, err);
+    return st;
+}
