@@ -10,6 +10,8 @@
 #                   and mean, before the first peak and over the whole path)
 #   sigma11.svg sigma12.svg overlap.svg rotation.svg relax_steps.svg iterations.svg
 #                   every engine against the increment i (F = I + (i/N)(F_N - I))
+#   sigma11_difference.svg sigma12_difference.svg, difference_ENGINE.csv
+#                   each engine minus the embedded engine, in % of the stress scale
 #   steps.csv       servo iterations and relaxation steps per increment and engine
 #   ENGINE.csv ENGINE.log, the decks and the packing files
 # A host that is not there is skipped with one line. RANKS="1" skips the 2-rank
@@ -24,7 +26,7 @@ out=${2:-$top/out/compare/$name}
 ranks=${RANKS:-1 2}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-rm -f "$out"/*.csv "$out"/*.log "$out"/*.svg "$out"/report.md "$out"/times.txt
+rm -f "$out"/*.csv "$out"/*.log "$out"/*.svg "$out"/report.md "$out"/times.txt "$out"/*_np*.in
 "$B/servo-bc" --decks "$out" "$case_file" > /dev/null || exit 1
 particles=$(grep -vc '^#\|^box' "$out/packing.txt")
 engines=() failed=0
@@ -80,6 +82,24 @@ for plot in "sigma11.svg|sigma11 (N/m)|sigma11" "sigma12.svg|sigma12 (N/m)|sigma
   for e in "${engines[@]}"; do series+=("$out/$e.csv" "$e"); done
   "$B/servo-bc-plot" "$out/$file" "$name: $label" "increment" "$label" increment 1 "$column" 1 "${series[@]}" \
     > /dev/null || echo "compare: could not draw $file"
+done
+
+# the differences themselves, in % of the stress scale, against the increment
+scale=$(awk -F, 'NR > 1 { for (c = 10; c <= 13; c++) { v = $c < 0 ? -$c : $c; if (v > s) s = v } } END { print s + 0 }' \
+  "$out/embedded.csv")
+series=()
+for e in "${engines[@]}"; do
+  [ "$e" = embedded ] && continue
+  paste -d, "$out/embedded.csv" "$out/$e.csv" | awk -F, -v s="$scale" '
+    NR == 1 { print "increment,dsigma11,dsigma12,dsigma21,dsigma22"; next }
+    $1 != "" && $21 != "" { printf "%s", $1; for (c = 10; c <= 13; c++) printf ",%.6g", 100 * ($(c + 20) - $c) / (s > 0 ? s : 1); print "" }' \
+    > "$out/difference_$e.csv"
+  series+=("$out/difference_$e.csv" "$e")
+done
+for k in 11 12; do
+  [ ${#series[@]} -gt 0 ] && "$B/servo-bc-plot" "$out/sigma${k}_difference.svg" \
+    "$name: sigma$k of each engine minus the embedded engine's" increment "% of the stress scale" increment 1 \
+    dsigma$k 1 "${series[@]}" > /dev/null
 done
 
 # steps.csv: iterations and relaxation steps per increment, engine by engine
