@@ -16,8 +16,6 @@
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
-#include "neigh_request.h"
-#include "neighbor.h"
 #include "update.h"
 
 #include <algorithm>
