@@ -16,6 +16,19 @@ top=$(cd "$here/.." && pwd)
 tmp=${KEEP:-$(mktemp -d)}
 mkdir -p "$tmp"
 pass=0 fail=0
+# hosts that are not there are skipped with one line each, never an error
+bin=${B:-$top/build}
+mkdir -p "$tmp/only_embedded"
+ln -sf "$bin/servo-bc" "$bin/servo-bc-plot" "$tmp/only_embedded/"
+printf 'dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\ncontact frictional kn 1e4 ks 0 mu 0.4\ndensity 2e3\ntimestep 1e-5\nservo_bc D F 1.002 0 0 0.997 increments 2\nrun\n' \
+  > "$tmp/tiny.sbc"
+B=$tmp/only_embedded bash "$top/scripts/compare.sh" "$tmp/tiny.sbc" "$tmp/tiny" > "$tmp/tiny.log" 2>&1
+rc=$?
+if [ $rc -eq 0 ] && [ "$(grep -c 'skipped' "$tmp/tiny.log")" = 3 ] && grep -q '^| embedded | 2 |' "$tmp/tiny/report.md"; then
+  pass=$((pass + 1)); echo "compare without hosts: embedded only, $(grep -c skipped "$tmp/tiny.log") one-line notices, exit 0"
+else
+  fail=$((fail + 1)); echo "FAIL compare without hosts (exit $rc):"; cat "$tmp/tiny.log"
+fi
 for bc in D P T; do
   ranks=1
   [ $bc = D ] && ranks="1 2"
