@@ -5,8 +5,6 @@
  * Written from the parsed case, so the four cannot drift apart by hand. */
 #include "script_state.h"
 
-#include "sbc/frame.h"
-
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -141,11 +139,12 @@ static sbc_status write_yade(const script *s, const char *dir, sbc_error *err)
 
 sbc_status sbc_script_write_decks(script *s, const char *dir, sbc_error *err)
 {
+    static const char *format[4] = {"text", "lammps", "liggghts", "yade"};
+    static const char *file[4] = {"packing.txt", "packing.lammps.data", "packing.liggghts.data", "packing.yade"};
     char path[2 * SBC_NAME_LEN];
-    sbc_frame frame;
-    int *is_frame, k;
+    int k;
     double rmin = HUGE_VAL;
-    sbc_status st;
+    sbc_status st = SBC_OK;
     if (!s->have_packing) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no packing (use 'lattice', 'read_packing' or 'generate')");
     if (!s->have_contact) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no contact law (use 'contact frictional ...')");
     if (!s->have_density) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no density (use 'density RHO')");
@@ -157,27 +156,13 @@ sbc_status sbc_script_write_decks(script *s, const char *dir, sbc_error *err)
     if (s->settings.frame_group[0])
         return sbc_fail(err, SBC_ERR_INPUT, "--decks: servo_bc keyword 'frame' names a host group '%s'; the decks "
                                             "take the frame of the packing", s->settings.frame_group);
-    if ((st = sbc_frame_detect_packing(&frame, &s->packing, err)) != SBC_OK)
-        return st;
-    if (!(is_frame = calloc((size_t)s->packing.n, sizeof *is_frame))) {
-        sbc_frame_free(&frame);
-        return sbc_fail(err, SBC_ERR_NOMEM, "--decks: out of memory");
-    }
-    for (k = 0; k < frame.n; ++k)
-        is_frame[frame.particle[k]] = 1;
     for (k = 0; k < s->packing.n; ++k)
         rmin = fmin(rmin, s->packing.r[k]);
-#define IN_DIR(name) (snprintf(path, sizeof path, "%s/%s", dir, name) < (int)sizeof path ? path : "")
-    st = sbc_packing_write_text(&s->packing, IN_DIR("packing.txt"), err);
-    if (st == SBC_OK)
-        st = sbc_packing_write_lammps(&s->packing, is_frame, s->density, IN_DIR("packing.lammps.data"), err);
-    if (st == SBC_OK)
-        st = sbc_packing_write_liggghts(&s->packing, is_frame, s->density, IN_DIR("packing.liggghts.data"), err);
-    if (st == SBC_OK)
-        st = sbc_packing_write_yade(&s->packing, is_frame, IN_DIR("packing.yade"), err);
-#undef IN_DIR
-    free(is_frame);
-    sbc_frame_free(&frame);
+    for (k = 0; k < 4 && st == SBC_OK; ++k) {
+        if (snprintf(path, sizeof path, "%s/%s", dir, file[k]) >= (int)sizeof path)
+            return sbc_fail(err, SBC_ERR_INPUT, "--decks: directory name '%s' is too long", dir);
+        st = sbc_script_write_packing_as(s, format[k], path, err);
+    }
     /* neighbour skin R_min / 4, as the hand-written decks */
     if (st == SBC_OK) st = write_embedded(s, dir, err);
     if (st == SBC_OK) st = write_lammps(s, dir, 0.25 * rmin, err);

@@ -49,6 +49,40 @@ sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
     return SBC_OK;
 }
 
+/* The packing in one of the formats, the frame flagged where the format
+ * carries it: LAMMPS and LIGGGHTS as atom type 2, YADE as a fifth column. */
+sbc_status sbc_script_write_packing_as(script *s, const char *format, const char *path, sbc_error *err)
+{
+    sbc_frame frame;
+    int *is_frame, k;
+    sbc_status st;
+    if (strcmp(format, "text") == 0)
+        return sbc_packing_write_text(&s->packing, path, err);
+    if (strcmp(format, "lammps") != 0 && strcmp(format, "liggghts") != 0 && strcmp(format, "yade") != 0)
+        return sbc_fail(err, SBC_ERR_INPUT,
+                        "write_packing: format '%s' is not known (expected text, lammps, liggghts or yade)", format);
+    if (format[0] == 'l' && !s->have_density)
+        return sbc_fail(err, SBC_ERR_INPUT, "write_packing %s: no density (use 'density RHO' first: the data "
+                                            "file carries the masses)", format);
+    if ((st = sbc_frame_detect_packing(&frame, &s->packing, err)) != SBC_OK)
+        return st;
+    if (!(is_frame = calloc((size_t)s->packing.n, sizeof *is_frame))) {
+        sbc_frame_free(&frame);
+        return sbc_fail(err, SBC_ERR_NOMEM, "write_packing: out of memory");
+    }
+    for (k = 0; k < frame.n; ++k)
+        is_frame[frame.particle[k]] = 1;
+    if (strcmp(format, "lammps") == 0)
+        st = sbc_packing_write_lammps(&s->packing, is_frame, s->density, path, err);
+    else if (strcmp(format, "liggghts") == 0)
+        st = sbc_packing_write_liggghts(&s->packing, is_frame, s->density, path, err);
+    else
+        st = sbc_packing_write_yade(&s->packing, is_frame, path, err);
+    free(is_frame);
+    sbc_frame_free(&frame);
+    return st;
+}
+
 /* write_packing text|lammps|liggghts|yade FILE */
 sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
 {
@@ -56,34 +90,7 @@ sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
     if (st != SBC_OK) return st;
     if (!s->have_packing)
         return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no packing (use 'lattice', 'read_packing' or 'generate' first)");
-    if (strcmp(w[1], "text") == 0)
-        return sbc_packing_write_text(&s->packing, w[2], err);
-    if (strcmp(w[1], "lammps") == 0 || strcmp(w[1], "liggghts") == 0 || strcmp(w[1], "yade") == 0) {
-        /* all carry the frame: LAMMPS and LIGGGHTS as atom type 2, YADE as a fifth column */
-        sbc_frame frame;
-        int *is_frame, k;
-        if (w[1][0] == 'l' && !s->have_density)
-            return sbc_fail(err, SBC_ERR_INPUT, "write_packing %s: no density (use 'density RHO' first: the data "
-                                                "file carries the masses)", w[1]);
-        if ((st = sbc_frame_detect_packing(&frame, &s->packing, err)) != SBC_OK)
-            return st;
-        if (!(is_frame = calloc((size_t)s->packing.n, sizeof *is_frame))) {
-            sbc_frame_free(&frame);
-            return sbc_fail(err, SBC_ERR_NOMEM, "write_packing: out of memory");
-        }
-        for (k = 0; k < frame.n; ++k)
-            is_frame[frame.particle[k]] = 1;
-        if (strcmp(w[1], "lammps") == 0)
-            st = sbc_packing_write_lammps(&s->packing, is_frame, s->density, w[2], err);
-        else if (strcmp(w[1], "liggghts") == 0)
-            st = sbc_packing_write_liggghts(&s->packing, is_frame, s->density, w[2], err);
-        else
-            st = sbc_packing_write_yade(&s->packing, is_frame, w[2], err);
-        free(is_frame);
-        sbc_frame_free(&frame);
-        return st;
-    }
-    return sbc_fail(err, SBC_ERR_INPUT, "write_packing: format '%s' is not known (expected text, lammps, liggghts or yade)", w[1]);
+    return sbc_script_write_packing_as(s, w[1], w[2], err);
 }
 
 /* rose FILE.svg: contact orientations of the packing (pairs closer than 1e-6 R_min) */

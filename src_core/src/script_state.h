@@ -43,6 +43,8 @@ sbc_status sbc_script_positive(const char *cmd, const char *what, const char *wo
 /* Packing commands (script_packing.c). */
 sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err);
 sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err);
+/* The packing in format text, lammps, liggghts or yade, the frame flagged. */
+sbc_status sbc_script_write_packing_as(script *s, const char *format, const char *path, sbc_error *err);
 sbc_status sbc_script_rose(script *s, int nw, char **w, sbc_error *err);
 
 /* The case for every host (script_decks.c): in dir, the packing (packing.txt,
