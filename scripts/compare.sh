@@ -134,7 +134,7 @@ done
   echo "| --- | --- | --- | --- | --- | --- |"
   for e in "${engines[@]}"; do
     [ "$e" = embedded ] && continue
-    paste -d, "$out/embedded.csv" "$out/$e.csv" | awk -F, -v e="$e" -f "$top/scripts/compare_diff.awk"
+    paste -d, "$out/embedded.csv" "$out/$e.csv" | awk -F, -v e="$e" -f "$top/scripts/first_peak.awk" -f "$top/scripts/compare_diff.awk"
   done
 } > "$out/report.md"
 echo "compare: report in $out/report.md (${engines[*]})"

@@ -2,8 +2,7 @@
 # engine's CSV pasted side by side (paste -d,), -v e=ENGINE. Per sigma
 # component: max and mean of |sigma_e - sigma_embedded| in % of the stress
 # scale (max |sigma| of the embedded run), up to the first peak of |sigma12| of
-# the embedded run (a maximum the next 10 increments stay below; the whole path
-# when there is none) and over the whole path; increments missing from either
+# the embedded run (scripts/first_peak.awk) and over the whole path; increments missing from either
 # run are left out and counted.
 NR > 1 && $1 != "" {
   n++
@@ -13,14 +12,8 @@ NR > 1 && $1 != "" {
   }
 }
 END {
-  # the first peak: the running maximum of |sigma12| that the next 10
-  # increments stay below (relaxation noise makes single dips)
-  peak = n; top = -1; below = 0
-  for (k = 1; k <= n; k++) {
-    cur = a[k, 11] < 0 ? -a[k, 11] : a[k, 11]
-    if (cur > top) { top = cur; at = k; below = 0 }
-    else if (++below >= 10) { peak = at; break }
-  }
+  for (k = 1; k <= n; k++) s12[k] = a[k, 11]
+  peak = first_peak(s12, n)
   split("σ̄11 σ̄12 σ̄21 σ̄22", name, " ")
   for (c = 10; c <= 13; c++) {
     m1 = s1 = m2 = s2 = n1 = n2 = 0

@@ -99,12 +99,18 @@ lattice_checks() {
     "$TMP/periodic.in"
   run_deck 1 periodic.in "$TMP/periodic.csv" "$TMP/periodic.log" || { echo "$HOST (P) failed:"; tail -5 "$TMP/periodic.log"; }
   closed_form "serial (P) closed form" "$TMP/periodic.csv"
+  # an accuracy preset of the shared grammar (secant update, relative tolerance), tightened
+  deck_with 's/servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20/servo_bc P F 1.002 0 0 0.997 increments 2 accuracy fast relax 1e-22 20 tol_relative 1e-13/' \
+    "$TMP/preset.in"
+  run_deck 1 preset.in "$TMP/preset.csv" "$TMP/preset.log" || { echo "$HOST (P) accuracy fast failed:"; tail -5 "$TMP/preset.log"; }
+  closed_form "serial (P) closed form, accuracy fast with update secant" "$TMP/preset.csv"
   # bad input: the core's message, named by the fix; stdout unbuffered, since an
   # error followed by MPI_Abort can otherwise leave no message on a pipe
   refuses "a non-positive det F" 's/servo_bc D F 1.002 0 0 0.997/servo_bc D F 1 2 2 1/' \
     "keyword 'F': det F = -3 is not positive"
   refuses "an unknown keyword" 's/increments 2 relax/increments 2 bogus 3 relax/' "unknown keyword 'bogus'"
   refuses "a non-numeric value" 's/increments 2/increments two/' "keyword 'increments': N 'two'"
+  refuses "an unknown accuracy preset" 's/increments 2/increments 2 accuracy quick/' "preset 'quick' is not valid"
   refuses "a frame group that does not exist" 's/increments 2 relax/frame nosuch increments 2 relax/' \
     "group 'nosuch' does not exist"
   refuses "frame atoms under another integrator" 's/^fix  *integrate servo_interior/fix integrate all/' \

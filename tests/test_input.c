@@ -6,6 +6,7 @@
 #include "tests.h"
 
 #include "sbc/script.h"
+#include "sbc/settings.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -63,6 +64,12 @@ static const bad_case cases[] = {
     {"servo_bc D stress P22 -1e6 6\n", {"bad:1:", "keyword 'stress'", "mixed"}},
     {"servo_bc D gain_force 0\n", {"bad:1:", "keyword 'gain_force'", "'0'"}},
     {"servo_bc D predict 2\n", {"bad:1:", "keyword 'predict'", "[0, 1]"}},
+    {"servo_bc P update newton\n", {"bad:1:", "keyword 'update': mode 'newton'", "fixed or secant"}},
+    {"servo_bc P update\n", {"bad:1:", "keyword 'update'", "missing mode"}},
+    {"servo_bc P tol_relative -1e-3\n", {"bad:1:", "keyword 'tol_relative'", "a real >= 0"}},
+    {"servo_bc P accuracy quick\n", {"bad:1:", "preset 'quick'", "fast, balanced, paper or tight"}},
+    {"servo_bc P accuracy fast tol_force 1e-7 accuracy tight\n", {"bad:1:", "'accuracy' given twice", "'tight'"}},
+    {"servo_bc P accuracy\n", {"bad:1:", "keyword 'accuracy'", "missing preset"}},
     {HEAD "run\n", {"bad:6:", "run", "no boundary condition"}},
     {"dimension 2\nservo_bc D\nrun\n", {"bad:3:", "run", "no packing"}},
     {HEAD "servo_bc D frame boundary\nrun\n", {"bad:7:", "keyword 'frame'", "'boundary'"}},
@@ -158,6 +165,39 @@ static void runner_exit(void)
     CHECK(system(cmd) != 0); /* usage error */
 }
 
+static sbc_settings parse_words(const char *line)
+{
+    char buf[512], *w[64];
+    int nw = 0;
+    sbc_settings s;
+    sbc_error err;
+    snprintf(buf, sizeof buf, "%s", line);
+    for (w[nw] = strtok(buf, " "); w[nw]; w[++nw] = strtok(NULL, " "))
+        ;
+    CHECK(sbc_settings_parse(&s, nw, (const char *const *)w, &err) == SBC_OK);
+    return s;
+}
+
+/* accuracy presets: what each sets; keywords given with one win wherever they
+ * stand; paper is Table 4, the defaults. */
+static void presets(void)
+{
+    sbc_settings d = sbc_settings_default(), s = parse_words("P accuracy paper");
+    CHECK(s.tol_E == d.tol_E && s.window == d.window && s.gain_force == d.gain_force && s.tol_force == d.tol_force &&
+          s.tol_moment == d.tol_moment && s.tol_deformation == d.tol_deformation && s.tol_relative == 0.0 &&
+          s.update == SBC_UPDATE_FIXED && strcmp(s.accuracy, "paper") == 0);
+    s = parse_words("P accuracy fast");
+    CHECK(s.update == SBC_UPDATE_SECANT && s.tol_relative > 0.0);
+    {
+        sbc_settings a = parse_words("T tol_relative 5e-3 relax 1e-2 7 accuracy tight update fixed");
+        sbc_settings b = parse_words("T accuracy tight tol_relative 5e-3 relax 1e-2 7 update fixed");
+        sbc_settings t = parse_words("T accuracy tight");
+        CHECK(a.tol_relative == 5e-3 && a.tol_E == 1e-2 && a.window == 7 && a.update == SBC_UPDATE_FIXED);
+        CHECK(b.tol_relative == 5e-3 && b.tol_E == 1e-2 && b.window == 7 && b.update == SBC_UPDATE_FIXED);
+        CHECK(a.tol_deformation == t.tol_deformation && t.tol_relative < s.tol_relative);
+    }
+}
+
 void test_input(void)
 {
     size_t k;
@@ -165,4 +205,5 @@ void test_input(void)
         check_case(&cases[k]);
     packing_files();
     runner_exit();
+    presets();
 }

@@ -39,6 +39,7 @@ void test_outputs(void)
     snprintf(path, sizeof path, "%s_particles_000001.vtk", prefix);
     CHECK(!file_contains(path, "POINTS")); /* not a chosen increment */
     CHECK(file_contains(svg, "<polyline"));
+    CHECK(file_contains(svg, "<circle")); /* 5 points: a dot on each (SBC_PLOT_MARKERS) */
     CHECK(!file_contains(svg, "nan"));
     /* servo-bc-plot overlays columns of result files (built beside the runner) */
     {

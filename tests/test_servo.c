@@ -143,17 +143,20 @@ static void periodic_closed_form(void)
 }
 
 /* (P) converged: a+ + a- = 0 and m+ + m- = 0 on every pair within the
- * tolerance of eq. 37's normalization; eq. 19 exactly; Hill-Mandel. */
-static void periodic_state(void)
+ * tolerance of eq. 37's normalization; eq. 19 exactly; Hill-Mandel. With
+ * `update` fixed or secant; returns the iterations of the last increment. */
+static int periodic_state(const char *update)
 {
     const double tol = 1e-12, dt = 1e-5;
     final_state f;
-    int q, ok_f = 1, ok_m = 1, ok_x = 1;
-    run_lattice("P F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_force 1e-12 tol_moment 1e-12 "
-                "gain_force 1e3 gain_moment 1e3",
-                2e3, &f);
+    char words[512];
+    int q, ok_f = 1, ok_m = 1, ok_x = 1, iterations;
+    snprintf(words, sizeof words, "P F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_force 1e-12 "
+             "tol_moment 1e-12 gain_force 1e3 gain_moment 1e3 update %s", update);
+    run_lattice(words, 2e3, &f);
     if (!converged_with_work(&f))
-        return;
+        return 0;
+    iterations = f.result.iterations;
     for (q = 0; q < f.frame.n; ++q) {
         int p = f.frame.partner[q];
         double at, mt, dx[2], DX[2];
@@ -176,22 +179,25 @@ static void periodic_state(void)
     CHECK(ok_x);
     CHECK(hill_mandel(&f) <= 1e-8);
     final_free(&f);
+    return iterations;
 }
 
 /* (T) converged: a_q = P A_q on every frame particle within the force
  * tolerance (eq. 21), F of eq. 15 equals the imposed F within eps_F, and the
  * Hill-Mandel residual vanishes. */
-static void traction_state(void)
+static int traction_state(const char *update)
 {
     const double tol = 1e-12, epsF = 1e-6, dt = 1e-5;
     final_state f;
     double P[4], F[4];
-    int q, ok = 1, k;
-    run_lattice("T F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_force 1e-12 tol_deformation 1e-6 "
-                "gain_force 1e3 gain_deformation 1e-2",
-                2e3, &f);
+    char words[512];
+    int q, ok = 1, k, iterations;
+    snprintf(words, sizeof words, "T F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_force 1e-12 "
+             "tol_deformation 1e-6 gain_force 1e3 gain_deformation 1e-2 update %s", update);
+    run_lattice(words, 2e3, &f);
     if (!converged_with_work(&f))
-        return;
+        return 0;
+    iterations = f.result.iterations;
     sbc_homogenize_P(&f.frame, f.a, P);
     sbc_homogenize_F(&f.frame, f.x, F);
     for (q = 0; q < f.frame.n; ++q) {
@@ -212,6 +218,62 @@ static void traction_state(void)
             off = fmax(off, fabs(f.x[2 * q] - (f.F[0] * X[0] + f.F[1] * X[1])));
         }
         CHECK(off > 1e-8);
+    }
+    final_free(&f);
+    return iterations;
+}
+
+/* update secant (issue 9) reaches the same converged states as the paper's
+ * fixed gains, in fewer iterations. */
+static void secant_update(void)
+{
+    int fixed = periodic_state("fixed"), secant = periodic_state("secant");
+    printf("  (P) iterations of increment 2: fixed %d, secant %d\n", fixed, secant);
+    CHECK(secant > 0 && 3 * secant <= fixed);
+    fixed = traction_state("fixed");
+    secant = traction_state("secant");
+    printf("  (T) iterations of increment 2: fixed %d, secant %d\n", fixed, secant);
+    CHECK(secant > 0 && 3 * secant <= fixed);
+}
+
+/* tol_relative: converged when |a+ + a-| summed over the pairs is below the
+ * tolerance times the frame's own forces (pair members and corners), here
+ * recomputed from the final snapshot. */
+static void relative_tolerance(void)
+{
+    final_state f;
+    double num = 0.0, den = 0.0;
+    int q;
+    run_lattice("P F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_relative 1e-6 gain_force 1e3 "
+                "gain_moment 1e3 update secant",
+                2e3, &f);
+    if (!converged_with_work(&f))
+        return;
+    for (q = 0; q < f.frame.n; ++q) {
+        int p = f.frame.partner[q];
+        den += f.a[2 * q] * f.a[2 * q] + f.a[2 * q + 1] * f.a[2 * q + 1];
+        if (f.frame.side[q] == SBC_SIDE_BOTTOM || f.frame.side[q] == SBC_SIDE_RIGHT)
+            num += pow(f.a[2 * q] + f.a[2 * p], 2) + pow(f.a[2 * q + 1] + f.a[2 * p + 1], 2);
+    }
+    CHECK(num > 0.0 && sqrt(num / den) <= 1e-6);
+    CHECK_ABS(f.result.r_force, sqrt(num / den), 1e-12); /* the CSV's r_force is the relative norm */
+    final_free(&f);
+}
+
+/* Tolerances below the floor of relaxation noise and round-off stop with
+ * the stagnation message long before max_iterations. */
+static void stagnation(void)
+{
+    final_state f;
+    run_lattice("P F 0.99 -0.02 -0.02 0.99 increments 2 tol_force 1e-24 tol_moment 1e-24 gain_force 1e3 "
+                "gain_moment 1e3 max_iterations 100000",
+                2e3, &f);
+    CHECK(f.status == SBC_ERR_DIVERGED);
+    CHECK(strstr(f.message, "servo_bc P: increment 1, iteration ") && strstr(f.message, "stagnated") &&
+          strstr(f.message, "in the last 200 iterations is not 1 % below that of the 200 before") && strstr(f.message, "loosen the tolerances"));
+    {
+        const char *it = strstr(f.message, "iteration ");
+        CHECK(it && atoi(it + 10) < 5000);
     }
     final_free(&f);
 }
@@ -299,8 +361,11 @@ static void divergence(void)
 void test_servo(void)
 {
     periodic_closed_form();
-    periodic_state();
-    traction_state();
+    periodic_state("fixed");
+    traction_state("fixed");
+    secant_update();
+    relative_tolerance();
+    stagnation();
     dirichlet_hill_mandel();
     prediction();
     divergence();

@@ -31,12 +31,17 @@ struct sbc_controller {
     double *m;           /* [Q] boundary moments m_q = -sum of contact moments (eq. 5), N m */
     double *x_prev;      /* [2Q] converged positions of the previous increment (prediction), m */
     double *du, *dtheta; /* [2Q], [Q] servo corrections, m, rad */
+    double lambda;       /* update secant: factor on the fixed-gain corrections */
+    int have_prev;       /* update secant: d_prev holds this increment's last correction */
+    double *d_prev;      /* [3Q] update secant: last fixed-gain correction (du, R dtheta), m */
     double F_prev[4];    /* F imposed at the previous increment */
     double F_now[4];     /* F imposed at this increment */
     int total;           /* increments of the whole path, sbc_settings_total_increments */
     int servo;           /* 0: initial relaxation of the increment, 1: servo iterations */
     int iteration;       /* servo iterations in this increment */
     double r_first;      /* first force residual of the increment (growth check) */
+    double win_min;      /* smallest residual/tolerance ratio in this window of iterations */
+    double prev_min;     /* ... in the window before (stagnation check) */
     long steps;          /* host steps spent on this increment */
     sbc_servo_norms norms; /* last residual norms of this increment (zero for D) */
     sbc_result result;
@@ -124,7 +129,9 @@ static void start_increment(sbc_controller *c)
     }
     c->servo = 0;
     c->iteration = 0;
+    c->have_prev = 0;
     c->r_first = 0.0;
+    c->win_min = c->prev_min = DBL_MAX;
     c->steps = 0;
     memset(&c->norms, 0, sizeof c->norms);
     sbc_relax_start(&c->relax, c->s.tol_E, c->s.window, c->increment == 0);
@@ -193,7 +200,9 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     c->x_prev = malloc(sizeof(double) * 2 * q);
     c->du = calloc(2 * q, sizeof(double));
     c->dtheta = calloc(q, sizeof(double));
-    if (!c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du ||
+    c->d_prev = calloc(3 * q, sizeof(double));
+    c->lambda = 1.0;
+    if (!c->d_prev || !c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du ||
         !c->dtheta || !c->mode) {
         sbc_controller_free(c);
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
@@ -237,6 +246,7 @@ void sbc_controller_free(sbc_controller *c)
     free(c->x_prev);
     free(c->du);
     free(c->dtheta);
+    free(c->d_prev);
     free(c);
 }
 
@@ -337,15 +347,40 @@ static sbc_status measure(sbc_controller *c, const sbc_snapshot *snap, sbc_error
     return SBC_OK;
 }
 
-/* Step 1.6 of Tables 2-3 with separate force, moment and deformation norms. */
-static int converged(const sbc_controller *c, const sbc_servo_norms *n)
+/* Step 1.6 of Tables 2-3 with separate force, moment and deformation norms:
+ * the largest ratio of a residual norm to its tolerance; converged at <= 1. */
+/* the force and moment tolerances in force: tol_relative when set */
+static double tol_force(const sbc_controller *c)
 {
-    if (n->r_force > c->s.tol_force)
-        return 0;
-    if (c->s.bc == SBC_BC_P || c->s.bc == SBC_BC_MIXED)
-        return n->r_moment <= c->s.tol_moment;
-    return n->r_deformation <= c->s.tol_deformation;
+    return c->s.tol_relative > 0.0 ? c->s.tol_relative : c->s.tol_force;
 }
+
+static double tol_moment(const sbc_controller *c)
+{
+    return c->s.tol_relative > 0.0 ? c->s.tol_relative : c->s.tol_moment;
+}
+
+static double residual_ratio(const sbc_controller *c, const sbc_servo_norms *n)
+{
+    double r = n->r_force / tol_force(c);
+    if (c->s.bc == SBC_BC_P || c->s.bc == SBC_BC_MIXED)
+        return fmax(r, n->r_moment / tol_moment(c));
+    return fmax(r, n->r_deformation / c->s.tol_deformation);
+}
+
+/* Stagnation: the servo iterations of an increment, after the first check,
+ * in windows of this many; when the smallest residual ratio of a window is
+ * not 1 % below that of the window before, and above STAGNATION_FLOOR, the
+ * residuals sit on a floor of relaxation noise or round-off above the
+ * tolerances. An iteration that converges at all, even one that first lets
+ * the residual grow ((T)), gains far more than 1 % in a window. A floor
+ * within twice the tolerances is left to run: relaxation noise takes it
+ * below them sooner or later: under (T) at tolerances 1e-8, 1e-3, the whole
+ * path of eq. 38 converges in every increment, 27 of 300 taking 1000 to 2822
+ * iterations, and the reference of bench/speed_accuracy/regular_T.sweep sat
+ * at 1.6 times the tolerances for 400 iterations at increment 99. */
+#define STAGNATION_WINDOW 200
+#define STAGNATION_FLOOR 2.0
 
 /* too_slow: the iteration converges but not within max_iterations. */
 static void diverged(const sbc_controller *c, const sbc_servo_norms *n, const char *why, int too_slow,
@@ -356,8 +391,19 @@ static void diverged(const sbc_controller *c, const sbc_servo_norms *n, const ch
              "servo_bc %s: increment %d, iteration %d: %s (r_force = %.3g, r_moment = %.3g, r_deformation = %.3g; "
              "tolerances %.3g, %.3g, %.3g); %s %s",
              sbc_bc_name(c->s.bc), c->increment, c->iteration, why, n->r_force, n->r_moment, n->r_deformation,
-             c->s.tol_force, c->s.tol_moment, c->s.tol_deformation,
+             tol_force(c), tol_moment(c), c->s.tol_deformation,
              too_slow ? "raise max_iterations, loosen the tolerances or raise" : "lower", gain);
+}
+
+static void stagnated(const sbc_controller *c, const sbc_servo_norms *n, sbc_error *err)
+{
+    sbc_fail(err, SBC_ERR_DIVERGED,
+             "servo_bc %s: increment %d, iteration %d: the residuals stagnated at %.3g times the tolerances (their "
+             "smallest ratio in the last %d iterations is not 1 %% below that of the %d before; r_force = %.3g, "
+             "r_moment = %.3g, r_deformation = %.3g; tolerances %.3g, %.3g, %.3g): a floor of relaxation noise or "
+             "round-off; loosen the tolerances or tighten relax",
+             sbc_bc_name(c->s.bc), c->increment, c->iteration, c->win_min, STAGNATION_WINDOW, STAGNATION_WINDOW,
+             n->r_force, n->r_moment, n->r_deformation, tol_force(c), tol_moment(c), c->s.tol_deformation);
 }
 
 /* End of the stress stage of a mixed BC: the converged state becomes the
@@ -402,6 +448,58 @@ static int correction_moves_frame(const sbc_controller *c)
             return 1;
     }
     return 0;
+}
+
+/* update secant: the largest correction of one frame particle, in radii.
+ * Larger corrections cost fewer iterations but move the frame back and forth
+ * through frictional contacts, which then slip along another path: on the
+ * regular packing under (P) at dt = 1e-4 s, 0.05 R gave a path error of 1.2 %,
+ * 0.01 R 0.65 %, 0.002 R 0.37 % and 0.0005 R 0.30 % against the reference
+ * (whose own spread is about 0.4 %), at 15, 16, 29 and 103 thousand steps
+ * (docs/speed-accuracy.md). */
+#define SECANT_MAX_STEP 0.002
+
+/* update secant: scales the fixed-gain correction d_k (du, R dtheta of every
+ * frame particle, m) by lambda_k. Within an increment, from the previous
+ * correction d_(k-1) and its factor, the Barzilai-Borwein step of the
+ * preconditioned iteration x <- x + lambda d(x):
+ *   s = lambda_(k-1) d_(k-1),  y = d_(k-1) - d_k  (~ P J s),
+ *   lambda_k = s.y / y.y = lambda_(k-1) d_(k-1).(d_(k-1) - d_k) / |d_(k-1) - d_k|^2,
+ * when s.y > 0; when s.y <= 0 (the residual did not fall along s) lambda
+ * halves. The first correction of an increment keeps the factor of the last
+ * one. No frame particle moves more than SECANT_MAX_STEP of its radius in one
+ * correction, which also bounds the first step whatever the gains. */
+static void secant_scale(sbc_controller *c, sbc_servo_norms *n)
+{
+    const sbc_frame *f = c->frame;
+    double dd = 0.0, dy = 0.0, yy = 0.0, lam = c->lambda, cap = DBL_MAX;
+    int q, k;
+    for (q = 0; q < f->n; ++q) {
+        double d[3] = {c->du[2 * q], c->du[2 * q + 1], f->R[q] * c->dtheta[q]};
+        double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (k = 0; k < 3; ++k) {
+            double y = c->d_prev[3 * q + k] - d[k];
+            dd += d[k] * d[k];
+            dy += c->d_prev[3 * q + k] * y;
+            yy += y * y;
+            c->d_prev[3 * q + k] = d[k];
+        }
+        if (len > 0.0 && SECANT_MAX_STEP * f->R[q] / len < cap)
+            cap = SECANT_MAX_STEP * f->R[q] / len;
+    }
+    if (c->have_prev)
+        lam = dy > 0.0 && yy > 0.0 ? c->lambda * dy / yy : 0.5 * c->lambda;
+    if (dd > 0.0) {
+        c->lambda = lam = fmin(lam, cap);
+    } else {
+        lam = c->lambda; /* no correction to scale; the factor stays */
+    }
+    c->have_prev = 1;
+    for (k = 0; k < 2 * f->n; ++k)
+        c->du[k] *= lam;
+    for (k = 0; k < f->n; ++k)
+        c->dtheta[k] *= lam;
+    n->max_step *= lam;
 }
 
 sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
@@ -461,6 +559,7 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
     c->steps += c->relax.steps;
     if (c->s.bc != SBC_BC_D) {
         sbc_servo_norms nrm;
+        double ratio;
         const int first = !c->servo;
         /* Tables 2-3: after the initial relaxation (1.2) correct at once (1.3);
          * after each later relaxation (1.4) check the residuals (1.5-1.6). */
@@ -476,11 +575,14 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
                      sbc_bc_name(c->s.bc), c->increment, c->iteration);
             return SBC_EVENT_FAILED;
         }
+        ratio = residual_ratio(c, &nrm);
+        if (!first && ratio < c->win_min)
+            c->win_min = ratio;
         if (first) {
             c->r_first = nrm.r_force;
-        } else if (converged(c, &nrm)) {
+        } else if (ratio <= 1.0) {
             return accept(c, snap, err);
-        } else if (nrm.r_force > 1e3 * fmax(c->r_first, 1e3 * c->s.tol_force)) {
+        } else if (nrm.r_force > 1e3 * fmax(c->r_first, 1e3 * tol_force(c))) {
             /* growth over the first residual of the increment; that one can be
              * round-off small (an already periodic state), hence the floor */
             diverged(c, &nrm, "the force residual grew more than 1000-fold", 0, err);
@@ -488,7 +590,16 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
         } else if (c->iteration >= c->s.max_iterations) {
             diverged(c, &nrm, "max_iterations reached", 1, err);
             return SBC_EVENT_FAILED;
+        } else if (c->iteration % STAGNATION_WINDOW == 0) {
+            if (c->win_min > 0.99 * c->prev_min && c->win_min > STAGNATION_FLOOR) {
+                stagnated(c, &nrm, err);
+                return SBC_EVENT_FAILED;
+            }
+            c->prev_min = c->win_min;
+            c->win_min = DBL_MAX;
         }
+        if (c->s.update == SBC_UPDATE_SECANT)
+            secant_scale(c, &nrm);
         if (nrm.max_step > 0.5) {
             diverged(c, &nrm, "a correction moved a frame particle by more than half its radius", 0, err);
             return SBC_EVENT_FAILED;
@@ -511,16 +622,16 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
 
 /* Restart layout (doubles): version, Q, bc, increments, F (4), dt | increment, servo,
  * iteration, r_first, steps, norms (4), relax (steps, count, rising, past_peak,
- * ek_prev, at_rest), F_prev (4), F_now (4) | result (21) | x_cmd (2Q), theta_cmd (Q),
- * free_rot (Q), x_prev (2Q), reference X (2Q). */
-#define STATE_VERSION 4.0
+ * ek_prev, at_rest), lambda, have_prev, win_min, prev_min, F_prev (4), F_now (4) | result (21) | x_cmd (2Q),
+ * theta_cmd (Q), free_rot (Q), x_prev (2Q), reference X (2Q), d_prev (3Q). */
+#define STATE_VERSION 5.0
 #define STATE_HEAD 9
-#define STATE_SCALARS 23
+#define STATE_SCALARS 27
 #define STATE_RESULT 21
 
 size_t sbc_controller_state_size(const sbc_controller *c)
 {
-    return STATE_HEAD + STATE_SCALARS + STATE_RESULT + 8 * (size_t)c->frame->n;
+    return STATE_HEAD + STATE_SCALARS + STATE_RESULT + 11 * (size_t)c->frame->n;
 }
 
 static double *put_result(const sbc_result *r, double *o)
@@ -583,6 +694,10 @@ void sbc_controller_save(const sbc_controller *c, double *o)
     *o++ = c->relax.past_peak;
     *o++ = c->relax.ek_prev;
     *o++ = c->relax.at_rest;
+    *o++ = c->lambda;
+    *o++ = c->have_prev;
+    *o++ = c->win_min;
+    *o++ = c->prev_min;
     for (k = 0; k < 4; ++k) *o++ = c->F_prev[k];
     for (k = 0; k < 4; ++k) *o++ = c->F_now[k];
     o = put_result(&c->result, o);
@@ -591,6 +706,7 @@ void sbc_controller_save(const sbc_controller *c, double *o)
     for (k = 0; k < q; ++k) *o++ = c->free_rot[k];
     for (k = 0; k < 2 * q; ++k) *o++ = c->x_prev[k];
     for (k = 0; k < 2 * q; ++k) *o++ = c->ref.X[k];
+    for (k = 0; k < 3 * q; ++k) *o++ = c->d_prev[k];
 }
 
 sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err)
@@ -634,6 +750,10 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     c->relax.past_peak = (int)*in++;
     c->relax.ek_prev = *in++;
     c->relax.at_rest = (int)*in++;
+    c->lambda = *in++;
+    c->have_prev = (int)*in++;
+    c->win_min = *in++;
+    c->prev_min = *in++;
     for (k = 0; k < 4; ++k) c->F_prev[k] = *in++;
     for (k = 0; k < 4; ++k) c->F_now[k] = *in++;
     in = get_result(&c->result, in);
@@ -642,6 +762,8 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     for (k = 0; k < q; ++k) c->free_rot[k] = (unsigned char)*in++;
     for (k = 0; k < 2 * q; ++k) c->x_prev[k] = *in++;
     new_reference(c, in);
+    in += 2 * q;
+    for (k = 0; k < 3 * q; ++k) c->d_prev[k] = *in++;
     if (c->s.bc == SBC_BC_MIXED)
         mixed_stress_targets(c);
     return SBC_OK;

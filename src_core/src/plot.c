@@ -91,6 +91,11 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
             first = 0;
         }
         fprintf(fp, "\"/>\n");
+        if (series[s].n <= SBC_PLOT_MARKERS) /* a few points: each one a dot, a single one visible at all */
+            for (k = 0; k < series[s].n; ++k)
+                if (isfinite(series[s].x[k]) && isfinite(series[s].y[k]))
+                    fprintf(fp, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"3.5\" fill=\"%s\"/>\n", PX(series[s].x[k]),
+                            PY(series[s].y[k]), c);
         fprintf(fp, "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"%s\" stroke-width=\"2\" "
                     "stroke-dasharray=\"%s\"/>\n",
                 LEFT + 14, TOP + 16 + 18.0 * s, LEFT + 40, TOP + 16 + 18.0 * s, c, dash);

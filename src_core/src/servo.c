@@ -15,11 +15,34 @@
  * "required minus measured" (0 - (a+ + a-)), as eq. 35 writes it for (T).
  * Gains from the dimensionless values of Table 4: g_a = G_a dt^2 / M,
  * g_m = G_m dt^2 / (M R^2), with M and R the mean of the two partners. */
+/* Squared residuals and scales of tol_relative: force residual (N^2), force
+ * scale sum |a_q|^2, moment residual ((N m)^2), moment scale sum (|a_q| R_q)^2. */
+typedef struct raw_sums {
+    double fr, fs, mr, ms;
+} raw_sums;
+
+static void add_scale(raw_sums *w, const double *a, double R)
+{
+    double a2 = a[0] * a[0] + a[1] * a[1];
+    w->fs += a2;
+    w->ms += a2 * R * R;
+}
+
+/* r_force and r_moment relative to the frame's own forces (tol_relative):
+ * 0 when there is neither residual nor force. */
+static void relative_norms(const sbc_settings *s, const raw_sums *w, sbc_servo_norms *o)
+{
+    if (!(s->tol_relative > 0.0))
+        return;
+    o->r_force = w->fr > 0.0 ? sqrt(w->fr / w->fs) : 0.0;
+    o->r_moment = w->mr > 0.0 ? sqrt(w->mr / w->ms) : 0.0;
+}
+
 /* One +/- pair (q, p) of (P): corrections on both partners alike; adds the
- * pair's normalized squared residuals to *sf and *sm. */
+ * pair's normalized squared residuals to *sf and *sm, the raw ones to *w. */
 static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, int q, int p,
                           const double *a, const double *m, double *du, double *dtheta, double *sf, double *sm,
-                          sbc_servo_norms *o)
+                          raw_sums *w, sbc_servo_norms *o)
 {
     double M = 0.5 * (mass[q] + mass[p]), R = 0.5 * (f->R[q] + f->R[p]);
     double at = M * R / (dt * dt);     /* a~ of eq. 37, N */
@@ -29,6 +52,10 @@ static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const doubl
     double u0 = -ga * da0, u1 = -ga * da1, step;
     *sf += (da0 * da0 + da1 * da1) / (at * at);
     *sm += dm * dm / (mt * mt);
+    w->fr += da0 * da0 + da1 * da1;
+    w->mr += dm * dm;
+    add_scale(w, &a[2 * q], f->R[q]);
+    add_scale(w, &a[2 * p], f->R[p]);
     du[2 * q] = du[2 * p] = u0;
     du[2 * q + 1] = du[2 * p + 1] = u1;
     dtheta[q] = dtheta[p] = -gm * dm;
@@ -42,16 +69,19 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
                            const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double sf = 0.0, sm = 0.0, dmc = 0.0, mc = 0.0, rc = 0.0;
+    raw_sums w = {0.0, 0.0, 0.0, 0.0};
     int q, c;
     for (q = 0; q < f->n; ++q)
         if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT) /* each pair once */
-            periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, o);
+            periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, &w, o);
     for (c = 0; c < 4; ++c) {
         int qc = f->corner[c];
         dmc += m[qc];
         mc += 0.25 * mass[qc];
         rc += 0.25 * f->R[qc];
+        add_scale(&w, &a[2 * qc], f->R[qc]);
     }
+    w.mr += dmc * dmc;
     {
         double mt = mc * rc * rc / (dt * dt);
         double gm = s->gain_moment * dt * dt / (mc * rc * rc);
@@ -66,6 +96,7 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
     o->r_force = sqrt(sf);
     o->r_moment = sqrt(sm);
     o->r_deformation = 0.0;
+    relative_norms(s, &w, o);
 }
 
 /* (T), eqs. 35-36, for every frame particle q:
@@ -83,6 +114,7 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
                            sbc_servo_norms *o)
 {
     double P[4], sf = 0.0, sd = 0.0;
+    raw_sums w = {0.0, 0.0, 0.0, 0.0};
     int q, r;
     /* eq. 23 */
     for (q = 0; q < 4; ++q)
@@ -109,6 +141,8 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
         }
         sf += (da0 * da0 + da1 * da1) / (at * at);
         sd += (dF0 * dF0 + dF1 * dF1) / (Ft * Ft);
+        w.fr += da0 * da0 + da1 * da1;
+        add_scale(&w, &a[2 * q], R);
         {
             double ga = s->gain_force * dt * dt / M, gF = s->gain_deformation / (R * R);
             double u0 = ga * da0 + gF * dF0, u1 = ga * da1 + gF * dF1, step;
@@ -122,6 +156,7 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
     o->r_force = sqrt(sf);
     o->r_moment = 0.0;
     o->r_deformation = sqrt(sd);
+    relative_norms(s, &w, o);
 }
 
 void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
@@ -148,6 +183,7 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
                      const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double P[4] = {0.0, 0.0, 0.0, 0.0}, sf = 0.0, sm = 0.0;
+    raw_sums w = {0.0, 0.0, 0.0, 0.0};
     int q, k;
     o->max_step = 0.0;
     for (q = 0; q < f->n; ++q) { /* eq. 23 */
@@ -168,7 +204,7 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
         int c;
         if (mode[2 * q] == SBC_MODE_P) {
             if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)
-                periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, o);
+                periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, &w, o);
             continue;
         }
         for (c = 0; c < 2; ++c) {
@@ -177,6 +213,8 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
                 continue;
             da = P[2 * c] * A[0] + P[2 * c + 1] * A[1] - a[2 * q + c];
             sf += da * da / (at * at);
+            w.fr += da * da;
+            w.fs += a[2 * q + c] * a[2 * q + c];
             du[2 * q + c] = ga * da;
             step = fabs(ga * da) / R;
             if (step > o->max_step) o->max_step = step;
@@ -185,4 +223,5 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
     o->r_force = sqrt(sf);
     o->r_moment = sqrt(sm);
     o->r_deformation = 0.0;
+    relative_norms(s, &w, o);
 }

@@ -7,6 +7,9 @@
 #include "sbc/settings.h"
 
 typedef struct sbc_servo_norms {
+    /* with tol_relative > 0, r_force and r_moment are relative instead:
+       sqrt(sum |da|^2 / sum |a_q|^2) and sqrt(sum dm^2 / sum (|a_q| R_q)^2)
+       over the frame particles that enter the residuals */
     double r_force;       /* sqrt(sum |da|^2 / a~^2), eq. 37 normalization */
     double r_moment;      /* sqrt(sum (dm / m~)^2), (P) only */
     double r_deformation; /* sqrt(sum |dF_q|^2 / F~^2), (T) only */

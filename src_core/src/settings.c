@@ -5,6 +5,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,6 +31,49 @@ sbc_settings sbc_settings_default(void)
     s.max_iterations = 10000;
     sbc_mixed_default(&s);
     return s;
+}
+
+/* The presets, measured on the four cases of bench/speed_accuracy/
+ * (docs/speed-accuracy.md). paper: Table 4 with the paper's fixed gains; the
+ * others converge on residuals relative to the frame's forces with the secant
+ * update, whose steps do not depend on the gains' scale. */
+typedef struct preset {
+    const char *name;
+    double tol_E;
+    int window;
+    double tol_relative, tol_deformation;
+    sbc_update update;
+} preset;
+
+static const preset presets[] = {
+    {"paper", 1.0e-3, 20, 0.0, 1.0e-2, SBC_UPDATE_FIXED},
+    {"fast", 1.0e-3, 20, 1.0e-2, 1.0e-2, SBC_UPDATE_SECANT},
+    {"balanced", 1.0e-3, 20, 1.0e-3, 1.0e-3, SBC_UPDATE_SECANT},
+    {"tight", 1.0e-4, 20, 1.0e-4, 1.0e-4, SBC_UPDATE_SECANT},
+};
+
+int sbc_settings_preset(sbc_settings *s, const char *name)
+{
+    const sbc_settings d = sbc_settings_default();
+    size_t k;
+    for (k = 0; k < sizeof presets / sizeof presets[0]; ++k) {
+        const preset *p = &presets[k];
+        if (strcmp(name, p->name) != 0)
+            continue;
+        s->tol_E = p->tol_E;
+        s->window = p->window;
+        s->gain_force = d.gain_force; /* Table 4 */
+        s->gain_moment = d.gain_moment;
+        s->gain_deformation = d.gain_deformation;
+        s->tol_force = d.tol_force;
+        s->tol_moment = d.tol_moment;
+        s->tol_deformation = p->tol_deformation;
+        s->tol_relative = p->tol_relative;
+        s->update = p->update;
+        snprintf(s->accuracy, sizeof s->accuracy, "%s", p->name);
+        return 1;
+    }
+    return 0;
 }
 
 const char *sbc_bc_name(sbc_bc bc)
@@ -174,6 +218,18 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
     c.i = 1;
     c.w = words;
     c.err = err;
+    /* a preset first, so that the keywords given with it win wherever they stand */
+    for (k = 1; k + 1 < nwords; ++k) {
+        if (strcmp(words[k], "accuracy") != 0)
+            continue;
+        if (s->accuracy[0])
+            return sbc_fail(err, SBC_ERR_INPUT, "keyword 'accuracy' given twice ('%s' and '%s')", s->accuracy,
+                            words[k + 1]);
+        if (!sbc_settings_preset(s, words[k + 1]))
+            return sbc_fail(err, SBC_ERR_INPUT,
+                            "keyword 'accuracy': preset '%s' is not valid (expected fast, balanced, paper or tight)",
+                            words[k + 1]);
+    }
     while (c.i < c.n && st == SBC_OK) {
         const char *key = c.w[c.i++];
         c.key = key;
@@ -219,6 +275,19 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
             }
         } else if (strcmp(key, "predict") == 0) {
             st = read_real(&c, "n_f", 0.0, 0, 1.0, "an inheritance factor in [0, 1]", &s->predict);
+        } else if (strcmp(key, "accuracy") == 0) {
+            (void)next_word(&c, "preset", &st); /* applied before the loop */
+        } else if (strcmp(key, "tol_relative") == 0) {
+            st = read_real(&c, "eps", 0.0, 0, HUGE_VAL, "a real >= 0 (0: the tolerances of eq. 37)", &s->tol_relative);
+        } else if (strcmp(key, "update") == 0) {
+            const char *w = next_word(&c, "mode", &st);
+            if (w && strcmp(w, "fixed") == 0)
+                s->update = SBC_UPDATE_FIXED;
+            else if (w && strcmp(w, "secant") == 0)
+                s->update = SBC_UPDATE_SECANT;
+            else if (w)
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'update': mode '%s' is not valid (expected fixed or secant)",
+                              w);
         } else if (strcmp(key, "max_iterations") == 0) {
             st = read_int(&c, "K", 1, 1000000000L, &iv);
             s->max_iterations = (int)iv;
@@ -253,7 +322,7 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
                 st = sbc_fail(err, SBC_ERR_INPUT,
                               "unknown keyword '%s' (expected F, increments, relax, max_relax_steps, damping, "
                               "gain_force, gain_moment, gain_deformation, tol_force, tol_moment, tol_deformation, "
-                              "predict, stress, bottom, right, top, left, max_iterations, frame or file)",
+                              "predict, update, accuracy, tol_relative, stress, bottom, right, top, left, max_iterations, frame or file)",
                               key);
         }
     }

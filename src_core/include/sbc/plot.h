@@ -11,6 +11,9 @@ typedef struct sbc_series {
     const double *y; /* [n] */
 } sbc_series;
 
+/* A series of at most this many points gets a dot at every point. */
+#define SBC_PLOT_MARKERS 25
+
 /* Writes an SVG chart of the series, with axis labels, ticks and a legend.
  * Non-finite points are skipped. */
 sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel, const char *ylabel, int nseries,

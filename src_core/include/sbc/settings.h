@@ -17,6 +17,11 @@ typedef enum sbc_bc { SBC_BC_D = 0, SBC_BC_P, SBC_BC_T, SBC_BC_MIXED } sbc_bc;
  * edge is controlled. D: follows the prescribed F path (eq. 17 componentwise);
  * P: periodic with the opposite edge, both components and the rotation
  * (eq. 19); T: uniform traction a_q,c = P_cj A_q,j under servo control (eq. 48). */
+/* How a servo iteration turns residuals into frame corrections: the paper's
+ * fixed gains (eqs. 33, 34, 36, 48), or those corrections scaled by a
+ * secant (Barzilai-Borwein) factor learned from the last two iterations. */
+typedef enum sbc_update { SBC_UPDATE_FIXED = 0, SBC_UPDATE_SECANT } sbc_update;
+
 typedef enum sbc_mode { SBC_MODE_D = 0, SBC_MODE_P, SBC_MODE_T } sbc_mode;
 
 enum { SBC_EDGE_BOTTOM = 0, SBC_EDGE_RIGHT, SBC_EDGE_TOP, SBC_EDGE_LEFT };
@@ -41,8 +46,12 @@ typedef struct sbc_settings {
     double tol_force;        /* eps_a (Table 4); 1e-6 */
     double tol_moment;       /* eps for the moment part of r_a; 1e-6 */
     double tol_deformation;  /* eps_F (Table 4); 1e-2 */
+    double tol_relative;     /* > 0: force and moment residuals relative to the frame's own forces
+                                (servo.h) must fall below this instead of tol_force, tol_moment; 0 */
     double predict;          /* inheritance factor n_f in [0, 1]; 0 = no prediction */
     int max_iterations;      /* servo iterations per increment; 10000 */
+    sbc_update update;       /* fixed (the paper's) or secant; fixed */
+    char accuracy[16];       /* preset named by keyword accuracy, "" = none */
     /* mixed only: edge_mode[edge][component] (SBC_EDGE_*, 0 = x, 1 = y); the
        default is the paper's layer: bottom D D, right P P, top D T, left P P */
     unsigned char edge_mode[4][2];
@@ -55,6 +64,11 @@ typedef struct sbc_settings {
 
 /* The defaults listed above (paper Table 4 where it gives a value). */
 sbc_settings sbc_settings_default(void);
+
+/* Presets of keyword `accuracy` (docs/speed-accuracy.md): each sets relax,
+ * the tolerances, tol_relative and update; keywords given with it win,
+ * wherever they stand. Returns 0 for an unknown name. */
+int sbc_settings_preset(sbc_settings *s, const char *name);
 
 /* Parses words[0] = BC and the keyword/value pairs after it into *s, which
  * is first reset to the defaults. On error the message names the keyword,
