@@ -15,7 +15,9 @@
 #   steps.csv       servo iterations and relaxation steps per increment and engine
 #   ENGINE.csv ENGINE.log, the decks and the packing files
 # A host that is not there is skipped with one line. RANKS="1" skips the 2-rank
-# runs. Exit status 0 when every engine that ran finished its path.
+# runs. ENGINES="liggghts yade" (a subset of embedded lammps liggghts yade)
+# runs only those again and reports them with the results already in OUT.
+# Exit status 0 when every engine that ran finished its path.
 # Usage: scripts/compare.sh CASE.sbc [OUT]
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -24,9 +26,17 @@ case_file=${1:?usage: compare.sh CASE.sbc [OUT]}
 name=$(basename "$case_file" .sbc)
 out=${2:-$top/out/compare/$name}
 ranks=${RANKS:-1 2}
+only=${ENGINES:-}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-rm -f "$out"/*.csv "$out"/*.log "$out"/*.svg "$out"/report.md "$out"/times.txt "$out"/*_np*.in
+# wanted HOST: whether this call runs HOST (every host without ENGINES)
+wanted() { [ -z "$only" ] || [[ " $only " == *" $1 "* ]]; }
+rm -f "$out"/*.svg "$out"/report.md "$out"/difference_*.csv "$out"/steps.csv
+for h in embedded lammps liggghts yade; do
+  wanted $h || continue
+  rm -f "$out/$h".csv "$out/$h".log "$out/${h}"_np*.*
+  [ -f "$out/times.txt" ] && sed -i "/^${h}\(_np[0-9]*\)\? /d" "$out/times.txt"
+done
 "$B/servo-bc" --decks "$out" "$case_file" > /dev/null || exit 1
 particles=$(grep -vc '^#\|^box' "$out/packing.txt")
 engines=() failed=0
@@ -49,11 +59,22 @@ run() {
   fi
 }
 mpi() { mpirun --allow-run-as-root --oversubscribe -np "$@"; }
+# keep ENGINE...: report the results already in OUT of engines this call does not run
+keep() { local e; for e in "$@"; do [ -s "$out/$e.csv" ] && engines+=("$e"); done; }
 
-run embedded "$B/servo-bc" embedded.sbc
+if wanted embedded; then
+  run embedded "$B/servo-bc" embedded.sbc
+else
+  keep embedded
+  [ -s "$out/embedded.csv" ] || { echo "compare: ENGINES leaves out embedded, and $out has no embedded.csv"; exit 1; }
+fi
 for host in lammps liggghts; do
   bin=$B/lmp_servo
   [ $host = liggghts ] && bin=$B/liggghts_servo
+  if ! wanted $host; then
+    keep $host $(for np in $ranks; do [ "$np" != 1 ] && echo ${host}_np$np; done)
+    continue
+  fi
   if [ ! -x "$bin" ]; then
     echo "compare: $host skipped ($bin not built: make $host)"
     continue
@@ -67,7 +88,9 @@ for host in lammps liggghts; do
     fi
   done
 done
-if command -v yade > /dev/null && [ -f "$B/libservo_bc.so" ]; then
+if ! wanted yade; then
+  keep yade
+elif command -v yade > /dev/null && [ -f "$B/libservo_bc.so" ]; then
   run yade env SERVO_BC_YADE="$top/yade_adapter" SERVO_BC_LIB="$B/libservo_bc.so" yade -n -x yade.py
 else
   echo "compare: yade skipped (not installed or $B/libservo_bc.so not built: make yade)"

@@ -29,6 +29,18 @@ if [ $rc -eq 0 ] && [ "$(grep -c 'skipped' "$tmp/tiny.log")" = 3 ] && grep -q '^
 else
   fail=$((fail + 1)); echo "FAIL compare without hosts (exit $rc):"; cat "$tmp/tiny.log"
 fi
+# ENGINES: run only some engines again, report them with the results already
+# there (here a planted lammps.csv, a copy of the embedded one, is kept)
+cp "$tmp/tiny/embedded.csv" "$tmp/tiny/lammps.csv"
+echo "lammps 1.00" >> "$tmp/tiny/times.txt"
+ENGINES=embedded B=$tmp/only_embedded bash "$top/scripts/compare.sh" "$tmp/tiny.sbc" "$tmp/tiny" > "$tmp/tiny2.log" 2>&1
+rc=$?
+if [ $rc -eq 0 ] && grep -q '^| embedded | 2 |' "$tmp/tiny/report.md" && grep -q '^| lammps | 2 | 1.00 |' "$tmp/tiny/report.md" &&
+  grep -q '^| lammps | σ̄11 | 0 | 0 | 0 | 0 |' "$tmp/tiny/report.md" && ! grep -q skipped "$tmp/tiny2.log"; then
+  pass=$((pass + 1)); echo "compare ENGINES=embedded: embedded run again, the lammps results kept and reported"
+else
+  fail=$((fail + 1)); echo "FAIL compare ENGINES=embedded (exit $rc):"; cat "$tmp/tiny2.log" "$tmp/tiny/report.md"
+fi
 for bc in D P T; do
   ranks=1
   [ $bc = D ] && ranks="1 2"
