@@ -14,7 +14,8 @@
 # sigma before the reference's first peak (% of the stress scale), by
 # scripts/path_error.awk; a run that stops records the runner's message.
 # OUT/pareto.svg: log10 path error against log10 DEM steps, one line per knob,
-# and the non-dominated runs (OUT/front.csv).
+# and the non-dominated runs (OUT/front.csv); OUT/results.md: the table in
+# markdown, errors in %, the front marked.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
 B=${B:-$top/build}
@@ -52,7 +53,6 @@ awk '{ print $2 }' "$out/runs.txt" | xargs -P "$jobs" -I{} sh -c \
 ref=$(awk '$1 == "reference" { print $2; exit }' "$out/runs.txt")
 [ -s "$out/runs/$ref.csv" ] && ! grep -q '^ERROR' "$out/runs/$ref.log" ||
   { echo "speed_accuracy: the reference run failed: $(grep -m1 ERROR "$out/runs/$ref.log")"; exit 1; }
-total=$(awk -F, 'NR > 1 { n++ } END { print n - 1 }' "$out/runs/$ref.csv")
 {
   echo "knob,label,words,increments,steps,iterations,wall_s,path_error,max_before_peak_pct,status"
   while read -r knob label words; do
@@ -75,7 +75,7 @@ total=$(awk -F, 'NR > 1 { n++ } END { print n - 1 }' "$out/runs/$ref.csv")
 } > "$out/results.csv"
 
 # the front: complete runs that no other complete run beats in both steps and error
-awk -F, -v total="$total" 'NR > 1 && $10 == "\"ok\"" && $4 == total && $8 > 0 { n++; k[n] = $1; l[n] = $2; s[n] = $5; e[n] = $8 }
+awk -F, 'NR > 1 && $10 == "\"ok\"" && $8 > 0 { n++; k[n] = $1; l[n] = $2; s[n] = $5; e[n] = $8 }
   END { print "label,log10_steps,log10_path_error"
     for (i = 1; i <= n; i++) { dom = 0
       for (j = 1; j <= n; j++) if (j != i && s[j] <= s[i] && e[j] <= e[i] && (s[j] < s[i] || e[j] < e[i])) dom = 1
@@ -83,12 +83,26 @@ awk -F, -v total="$total" 'NR > 1 && $10 == "\"ok\"" && $4 == total && $8 > 0 { 
   { read -r head; echo "$head"; sort -t, -k2 -g; } > "$out/front.csv"
 plot_args=()
 for knob in $(awk '$1 != "reference" { print $1 }' "$out/runs.txt" | awk '!seen[$0]++'); do
-  awk -F, -v k="$knob" -v total="$total" 'NR == 1 { print "log10_steps,log10_path_error" }
-    NR > 1 && $1 == k && $10 == "\"ok\"" && $4 == total && $8 > 0 { printf "%.6g,%.6g\n", log($5) / log(10), log($8) / log(10) }' \
+  awk -F, -v k="$knob" 'NR == 1 { print "log10_steps,log10_path_error" }
+    NR > 1 && $1 == k && $10 == "\"ok\"" && $8 > 0 { printf "%.6g,%.6g\n", log($5) / log(10), log($8) / log(10) }' \
     "$out/results.csv" > "$out/knob_$knob.csv"
   plot_args+=("$out/knob_$knob.csv" "$knob")
 done
 "$B/servo-bc-plot" "$out/pareto.svg" "$name: cost against path error (eq. 42)" "log10 DEM steps" \
   "log10 relative path error" log10_steps 1 log10_path_error 1 "${plot_args[@]}" "$out/front.csv" front > /dev/null
+# results.md: one row per run, errors in %, * on the front
+{
+  echo "| knob | run | words | increments | DEM steps | servo iterations | wall (s) | path error (%) | max before the peak (%) | front |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+  awk -F'"' 'NR > 1 { split($1, a, ","); split($3, b, ",")
+    st = $4; sub(/^[^:]*:[0-9]*: servo_bc [A-Za-z]*: /, "", st); sub(/ \(.*/, "", st); st = $4 == "ok" ? "" : "stopped at " st
+    printf "%s|%s|%s|%s|%s|%s|%s|%s|%s|%s\n", a[1], a[2], $2, b[2], b[3], b[4], b[5], b[6], b[7], st }' "$out/results.csv" |
+  while IFS='|' read -r knob label words incs steps its wall pe mx st; do
+    on=""; grep -q "^$label," "$out/front.csv" && on="*"
+    pe=$(awk -v v="$pe" 'BEGIN { if (v == "") print "-"; else printf "%.3g", 100 * v }')
+    mx=$(awk -v v="$mx" 'BEGIN { if (v == "") print "-"; else printf "%.3g", v }')
+    echo "| $knob | $label | \`${words:-(as written)}\` | $incs${st:+, $st} | $steps | $its | ${wall:--} | $pe | $mx | $on |"
+  done
+} > "$out/results.md"
 column -s, -t < "$out/results.csv"
 echo "speed_accuracy: $out/results.csv, $out/pareto.svg"

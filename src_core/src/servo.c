@@ -28,13 +28,15 @@ static void add_scale(raw_sums *w, const double *a, double R)
     w->ms += a2 * R * R;
 }
 
-/* r_force and r_moment relative to the frame's own forces (tol_relative):
- * 0 when there is neither residual nor force. */
+/* The force residual relative to the frame's own forces, and with
+ * tol_relative r_force and r_moment so: 0 when there is neither residual nor
+ * force. */
 static void relative_norms(const sbc_settings *s, const raw_sums *w, sbc_servo_norms *o)
 {
+    o->relative_force = w->fr > 0.0 ? sqrt(w->fr / w->fs) : 0.0;
     if (!(s->tol_relative > 0.0))
         return;
-    o->r_force = w->fr > 0.0 ? sqrt(w->fr / w->fs) : 0.0;
+    o->r_force = o->relative_force;
     o->r_moment = w->mr > 0.0 ? sqrt(w->mr / w->ms) : 0.0;
 }
 

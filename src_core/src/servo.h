@@ -13,6 +13,7 @@ typedef struct sbc_servo_norms {
     double r_force;       /* sqrt(sum |da|^2 / a~^2), eq. 37 normalization */
     double r_moment;      /* sqrt(sum (dm / m~)^2), (P) only */
     double r_deformation; /* sqrt(sum |dF_q|^2 / F~^2), (T) only */
+    double relative_force; /* sqrt(sum |da|^2 / sum |a_q|^2) whatever the tolerances (round-off check) */
     double max_step;      /* largest correction, relative to the particle's radius */
 } sbc_servo_norms;
 

@@ -48,8 +48,8 @@ typedef struct preset {
 static const preset presets[] = {
     {"paper", 1.0e-3, 20, 0.0, 1.0e-2, SBC_UPDATE_FIXED},
     {"fast", 1.0e-3, 20, 1.0e-2, 1.0e-2, SBC_UPDATE_SECANT},
-    {"balanced", 1.0e-3, 20, 1.0e-3, 1.0e-3, SBC_UPDATE_SECANT},
-    {"tight", 1.0e-4, 20, 1.0e-4, 1.0e-4, SBC_UPDATE_SECANT},
+    {"balanced", 1.0e-4, 20, 1.0e-2, 1.0e-2, SBC_UPDATE_SECANT},
+    {"tight", 1.0e-5, 20, 3.0e-3, 1.0e-2, SBC_UPDATE_SECANT},
 };
 
 int sbc_settings_preset(sbc_settings *s, const char *name)
