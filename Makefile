@@ -66,6 +66,7 @@ deps:
 check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	$(B)/run_tests $(B)/servo-bc
 	bash tests/path_error.sh
+	bash tests/stability.sh $(B)
 
 check-sanitize: $(B)/run_tests_san $(B)/servo-bc $(B)/servo-bc-plot
 	ASAN_OPTIONS=detect_leaks=1 $(B)/run_tests_san $(B)/servo-bc

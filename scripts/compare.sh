@@ -16,7 +16,8 @@
 #   ENGINE.csv ENGINE.log, the decks and the packing files
 # A host that is not there is skipped with one line. RANKS="1" skips the 2-rank
 # runs. ENGINES="liggghts yade" (a subset of embedded lammps liggghts yade)
-# runs only those again and reports them with the results already in OUT.
+# runs only those again and reports them with the results already in OUT
+# (ENGINES=none: the report alone, from the CSVs there).
 # Exit status 0 when every engine that ran finished its path.
 # Usage: scripts/compare.sh CASE.sbc [OUT]
 set -u
@@ -31,7 +32,7 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 # wanted HOST: whether this call runs HOST (every host without ENGINES)
 wanted() { [ -z "$only" ] || [[ " $only " == *" $1 "* ]]; }
-rm -f "$out"/*.svg "$out"/report.md "$out"/difference_*.csv "$out"/steps.csv
+rm -f "$out"/*.svg "$out"/report.md "$out"/difference_*.csv "$out"/diff_*.md "$out"/steps.csv
 for h in embedded lammps liggghts yade; do
   wanted $h || continue
   rm -f "$out/$h".csv "$out/$h".log "$out/${h}"_np*.*
@@ -135,6 +136,11 @@ done
 } > "$out/steps.csv"
 
 # report.md
+for e in "${engines[@]}"; do
+  [ "$e" = embedded ] && continue
+  paste -d, "$out/embedded.csv" "$out/$e.csv" |
+    awk -F, -v e="$e" -f "$top/scripts/first_peak.awk" -f "$top/scripts/compare_diff.awk" > "$out/diff_$e.md"
+done
 {
   echo "# $name: every engine on one case"
   echo
@@ -143,21 +149,23 @@ done
   echo "embedded run over the path); *before the peak* = up to the first peak of |σ̄12| of the"
   echo "embedded run, a maximum that the next 10 increments stay below (the whole path when there is none)."
   echo
-  echo "| engine | increments | wall time (s) | DEM steps | ns per particle-step | servo iterations |"
-  echo "| --- | --- | --- | --- | --- | --- |"
+  echo "| engine | increments | wall time (s) | DEM steps | ns per particle-step | servo iterations | max Δσ̄ before the peak | max Δσ̄, whole path |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
   for e in "${engines[@]}"; do
     wall=$(awk -v e="$e" '$1 == e { print $2 }' "$out/times.txt")
-    awk -F, -v e="$e" -v wall="${wall:-nan}" -v n="$particles" 'NR > 1 { inc++; steps += $17; it += $16 }
+    diffs=$(awk -F'|' '$3 ~ /σ̄/ { if ($4 + 0 > b) b = $4 + 0; if ($6 + 0 > w) w = $6 + 0; n++ }
+      END { if (n) printf "%.3g|%.3g", b, w; else printf "|" }' "$out/diff_$e.md" 2>/dev/null || echo "|")
+    awk -F, -v e="$e" -v wall="${wall:-nan}" -v n="$particles" -v d="${diffs:-|}" 'NR > 1 { inc++; steps += $17; it += $16 }
       END { ns = (wall == "nan" || steps == 0) ? "-" : sprintf("%.0f", wall / steps / n * 1e9)
-            printf "| %s | %d | %s | %d | %s | %d |\n", e, inc - 1, (wall == "nan" ? "failed" : wall), steps, ns, it }' \
+            split(d, x, "|")
+            printf "| %s | %d | %s | %d | %s | %d | %s | %s |\n", e, inc - 1, (wall == "nan" ? "failed" : wall), steps, ns, it, x[1], x[2] }' \
       "$out/$e.csv"
   done
   echo
   echo "| engine | component | max, before the peak | mean, before the peak | max, whole path | mean, whole path |"
   echo "| --- | --- | --- | --- | --- | --- |"
   for e in "${engines[@]}"; do
-    [ "$e" = embedded ] && continue
-    paste -d, "$out/embedded.csv" "$out/$e.csv" | awk -F, -v e="$e" -f "$top/scripts/first_peak.awk" -f "$top/scripts/compare_diff.awk"
+    [ "$e" = embedded ] || cat "$out/diff_$e.md"
   done
 } > "$out/report.md"
 echo "compare: report in $out/report.md (${engines[*]})"

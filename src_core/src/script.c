@@ -167,12 +167,36 @@ static sbc_status check_confined(const sbc_frame *frame, const sbc_engine *engin
     sbc_engine_view w = sbc_engine_get_view(engine);
     int k;
     for (k = 0; k < w.n; ++k)
-        if (!w.kinematic[k] && !inside_frame(frame, w.x, &w.x[2 * k]))
-            return sbc_fail(err, SBC_ERR_GEOMETRY,
+        if (!isfinite(w.x[2 * k]) || !isfinite(w.x[2 * k + 1]))
+            return sbc_fail(err, SBC_ERR_NUMERIC,
+                            "run: increment %d: particle %d has a non-finite position (the packing blew up; lower the "
+                            "time step or take smaller increments); the results before increment %d stand",
+                            increment, k, increment);
+    for (k = 0; k < w.n; ++k) {
+        double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, size, far = 0.0;
+        int q, c;
+        if (w.kinematic[k] || inside_frame(frame, w.x, &w.x[2 * k]))
+            continue;
+        for (q = 0; q < frame->n; ++q)
+            for (c = 0; c < 2; ++c) {
+                lo[c] = fmin(lo[c], w.x[2 * frame->particle[q] + c]);
+                hi[c] = fmax(hi[c], w.x[2 * frame->particle[q] + c]);
+            }
+        size = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+        for (c = 0; c < 2; ++c)
+            far = fmax(far, fmax(lo[c] - w.x[2 * k + c], w.x[2 * k + c] - hi[c]));
+        if (far > size && hypot(w.v[2 * k], w.v[2 * k + 1]) > 0.0) /* a frame's width away and moving: thrown */
+            return sbc_fail(err, SBC_ERR_NUMERIC,
+                            "run: increment %d: interior particle %d was thrown %g m beyond the frame of width %g m (the "
+                            "packing blew up; lower the time step: with several contacts per particle the stable step "
+                            "is below the critical step of a contact pair); the results before increment %d stand",
+                            increment, k, far, size, increment);
+        return sbc_fail(err, SBC_ERR_GEOMETRY,
                             "run: increment %d: interior particle %d escaped through a gap between frame particles "
                             "(its centre (%g, %g) m is outside the polygon of the frame's centres); the results "
                             "before increment %d stand",
                             increment, k, w.x[2 * k], w.x[2 * k + 1], increment);
+    }
     return SBC_OK;
 }
 
