@@ -11,12 +11,17 @@
 #   points, last     points of the run compared, and its last |F12|
 # The reference is interpolated linearly in F12 at the run's points, so the
 # two may use different increments. Rows with the F12 of the row after them
-# (a mixed BC's stress stage) count once, as their last row.
+# (a mixed BC's stress stage) count once, as their last row, in both.
 function param(x) { return x < 0 ? -x : x }
 FNR == 1 { file++; next }
-file == 1 { nr++; rp[nr] = param($3); for (c = 10; c <= 13; c++) rs[nr, c] = $c; next }
+# (a reference row with the F12 of the row before replaces it: the last row
+# of a stress stage stands for it, as in the run; F12 is the measured one of
+# eq. 15, equal to within round-off, 1e-12, in a stress stage)
+function same(a, b) { return (a - b < 0 ? b - a : a - b) <= 1e-12 }
+file == 1 { p1 = param($3); if (!(nr > 0 && same(rp[nr], p1))) nr++
+  rp[nr] = p1; for (c = 10; c <= 13; c++) rs[nr, c] = $c; next }
 file == 2 { n++; p[n] = param($3); for (c = 10; c <= 13; c++) s[n, c] = $c }
-function keep(q, m, k) { return k == m || q[k + 1] != q[k] }
+function keep(q, m, k) { return k == m || !same(q[k + 1], q[k]) }
 END {
   if (nr < 2 || n < 1) { print "path_error: a CSV has no increments" > "/dev/stderr"; exit 1 }
   for (k = 1; k <= nr; k++) {

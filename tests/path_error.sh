@@ -56,10 +56,15 @@ csv "$tmp/peakmid.csv" 'f = -0.01 * (k + 0.5); x = k + 0.5; s11 = -100; s12 = (x
 read -r e m n last < <(err "$tmp/peak.csv" "$tmp/peakmid.csv")
 check "midpoints of a peaked path: path error" "$e" 0 1e-13
 # 5. a mixed stress stage (F12 = 0 for increments 0..3) counts as its last row
-{ head -1 "$tmp/ref.csv"; for k in 0 1 2; do echo "$k,1,0,0,1,0,0,0,0,-7,0,0,-7,0,0,0,0,0,0,0"; done
+#    (F12 measured by eq. 15: zero to round-off there)
+{ head -1 "$tmp/ref.csv"; for k in 0 1 2; do echo "$k,1,$k.5e-17,0,1,0,0,0,0,-7,0,0,-7,0,0,0,0,0,0,0"; done
   tail -n +2 "$tmp/ref.csv" | awk -F, 'BEGIN { OFS = "," } { $1 += 3; print }'; } > "$tmp/stage.csv"
 read -r e m n last < <(err "$tmp/ref.csv" "$tmp/stage.csv")
 check "stress stage: path error" "$e" 0 1e-15
 check "stress stage: points" "$n" 30 0
+# ... and in the reference: its last row, not its first, meets the run's
+read -r e m n last < <(err "$tmp/stage.csv" "$tmp/ref.csv")
+check "stress stage in the reference: path error" "$e" 0 1e-15
+check "stress stage in the reference: max" "$m" 0 1e-12
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

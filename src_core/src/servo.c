@@ -16,7 +16,9 @@
  * Gains from the dimensionless values of Table 4: g_a = G_a dt^2 / M,
  * g_m = G_m dt^2 / (M R^2), with M and R the mean of the two partners. */
 /* Squared residuals and scales of tol_relative: force residual (N^2), force
- * scale sum |a_q|^2, moment residual ((N m)^2), moment scale sum (|a_q| R_q)^2. */
+ * scale sum |a_q|^2 (plus the squared target forces P A_q of (T)
+ * components, so that a frame not yet in contact has a scale), moment
+ * residual ((N m)^2), moment scale sum (|a_q| R_q)^2. */
 typedef struct raw_sums {
     double fr, fs, mr, ms;
 } raw_sums;
@@ -33,11 +35,11 @@ static void add_scale(raw_sums *w, const double *a, double R)
  * force. */
 static void relative_norms(const sbc_settings *s, const raw_sums *w, sbc_servo_norms *o)
 {
-    o->relative_force = w->fr > 0.0 ? sqrt(w->fr / w->fs) : 0.0;
+    o->relative_force = w->fr > 0.0 ? (w->fs > 0.0 ? sqrt(w->fr / w->fs) : 1.0) : 0.0;
     if (!(s->tol_relative > 0.0))
         return;
     o->r_force = o->relative_force;
-    o->r_moment = w->mr > 0.0 ? sqrt(w->mr / w->ms) : 0.0;
+    o->r_moment = w->mr > 0.0 ? (w->ms > 0.0 ? sqrt(w->mr / w->ms) : 1.0) : 0.0;
 }
 
 /* One +/- pair (q, p) of (P): corrections on both partners alike; adds the
@@ -146,6 +148,10 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
         w.fr += da0 * da0 + da1 * da1;
         add_scale(&w, &a[2 * q], R);
         {
+            const double t[2] = {P[0] * A[0] + P[1] * A[1], P[2] * A[0] + P[3] * A[1]};
+            add_scale(&w, t, R);
+        }
+        {
             double ga = s->gain_force * dt * dt / M, gF = s->gain_deformation / (R * R);
             double u0 = ga * da0 + gF * dF0, u1 = ga * da1 + gF * dF1, step;
             du[2 * q] = u0;
@@ -216,7 +222,7 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
             da = P[2 * c] * A[0] + P[2 * c + 1] * A[1] - a[2 * q + c];
             sf += da * da / (at * at);
             w.fr += da * da;
-            w.fs += a[2 * q + c] * a[2 * q + c];
+            w.fs += a[2 * q + c] * a[2 * q + c] + (da + a[2 * q + c]) * (da + a[2 * q + c]); /* measured and target */
             du[2 * q + c] = ga * da;
             step = fabs(ga * da) / R;
             if (step > o->max_step) o->max_step = step;
