@@ -17,4 +17,5 @@ void test_generate(void);
 void test_mixed(void);
 void test_host(void);
 void test_decks(void);
+void test_bpm(void);
 #endif

@@ -1,0 +1,115 @@
+/* servo_bc: the embedded 3D bonded particle engine (thesis Chapter 3).
+ *
+ * Spheres with six degrees of freedom, bonds (parallel bond or Timoshenko
+ * beam, bpm_bond.h) created between the spheres that touch at the start,
+ * viscous bond dashpots (eqs. 35-37), position Verlet for translation and
+ * rotation (eqs. 38-45), and the energy bookkeeping of eqs. 49-53.
+ *
+ * Time integration. Velocities live at half steps: v and w hold v(t - dt/2)
+ * and omega(t - dt/2) when a step starts at time t. A step computes the bond
+ * loads at t from the displacement increment dt v(t - dt/2) (incremental
+ * laws), the dashpot forces from v(t - dt/2), then v(t + dt/2) (eqs. 40, 44)
+ * and x(t + dt) (eqs. 41, 45).
+ *
+ * Prescribed degrees of freedom. Bit k of fix[i] (k = 0..2 translation x, y,
+ * z; 3..5 rotation) prescribes that velocity component to vfix[6 i + k]; the
+ * force the constraint exerts is kept in reaction[6 i + k] (N or N m).
+ *
+ * Energies (J). kinetic uses 1/2 m v(t - dt/2) . v(t + dt/2), the form the
+ * position Verlet scheme conserves exactly; with it, strain energy by the
+ * trapezoidal rule and the work of external, reaction and dashpot forces
+ * paired with the same increments, eq. 53 holds to round-off for a linear
+ * elastic bond network. */
+#ifndef SBC_BPM_H
+#define SBC_BPM_H
+
+#include "sbc/bpm_bond.h"
+#include "sbc/status.h"
+
+#include <stddef.h>
+
+typedef enum sbc_bond_model { SBC_BOND_PARALLEL = 0, SBC_BOND_BEAM = 1 } sbc_bond_model;
+
+typedef struct sbc_bpm_settings {
+    sbc_bond_model model;
+    sbc_parallel_bond_law parallel; /* k^n, k^s (Pa/m) when model is SBC_BOND_PARALLEL */
+    sbc_beam_law beam;              /* E_b (Pa), nu_b when model is SBC_BOND_BEAM */
+    double alpha;                   /* bond radius multiplier, eq. 9: r_b = alpha r_min (thesis: 1) */
+    double xi;                      /* dashpot damping ratio of eq. 37, - */
+    double touch;                   /* spheres bond when |xb - xa| <= (ra + rb)(1 + touch) */
+} sbc_bpm_settings;
+
+typedef struct sbc_bpm_bond {
+    size_t a, b;
+    double c; /* dashpot coefficient, N s/m (eq. 37) */
+    union {
+        sbc_parallel_bond parallel;
+        sbc_beam_bond beam;
+    } s;
+} sbc_bpm_bond;
+
+typedef struct sbc_bpm_energy {
+    double kinetic;   /* eq. 49 */
+    double strain;    /* eq. 50 (parallel bond) or the beams' 1/2 u K u */
+    double dissipated; /* eq. 51 */
+    double external;  /* eq. 52: external loads and prescribed motion */
+    double balance;   /* eq. 53: |W_kin + W_int + W_dis - W_ext| / max(components) (0 when all vanish) */
+} sbc_bpm_energy;
+
+typedef struct sbc_bpm {
+    size_t n, cap;
+    double *x, *v, *w;     /* position (m), velocity (m/s), angular velocity (rad/s); 3 per sphere */
+    double *theta;         /* angular position, eq. 45 (rad); 3 per sphere */
+    double *r, *m, *inertia; /* radius (m), mass (kg), 2/5 m r^2 (kg m^2) */
+    double *fext;          /* external force and moment, 6 per sphere (N, N m) */
+    unsigned char *fix;    /* prescribed degrees of freedom, bits 0..5 */
+    double *vfix;          /* prescribed velocities, 6 per sphere */
+    double *reaction;      /* constraint forces, 6 per sphere */
+    double *load;          /* resultant force and moment at the last step, 6 per sphere */
+    double *fwork_prev;    /* external + reaction loads of the last step, 6 per sphere */
+    double *fdamp, *fdamp_prev; /* dashpot forces of this and the last step, 3 per sphere */
+    unsigned *coordination; /* bonds per sphere */
+    size_t nb, bcap;
+    sbc_bpm_bond *bonds;
+    sbc_bpm_settings set;
+    double dt;
+    long step;
+    double w_strain_beam, w_dis, w_ext, w_kin;
+} sbc_bpm;
+
+/* Thesis defaults (Table 3): Timoshenko beams, E_b = 4 GPa, nu_b = 0.3,
+ * alpha = 1, k^n/k^s = 4.2 (k^n itself depends on r_p: sbc_bpm_parallel_law),
+ * no damping, touch = 1e-9. */
+sbc_bpm_settings sbc_bpm_settings_default(void);
+
+/* Table 3: k^n = E_b / 2 r_p, k^s = k^n / ratio. */
+sbc_parallel_bond_law sbc_bpm_parallel_law(double E, double rp, double kn_over_ks);
+
+sbc_status sbc_bpm_create(const sbc_bpm_settings *set, sbc_bpm **out, sbc_error *err);
+void sbc_bpm_destroy(sbc_bpm *e);
+
+/* Adds a sphere at x with radius r (m) and density rho (kg/m^3); returns its
+ * index in *index (may be NULL). */
+sbc_status sbc_bpm_add(sbc_bpm *e, const double x[3], double r, double rho, size_t *index, sbc_error *err);
+
+/* Bonds every pair of touching spheres (settings.touch), then sets the
+ * dashpot coefficients from the coordination numbers (eq. 37). Call once,
+ * after the last sbc_bpm_add. */
+sbc_status sbc_bpm_bond_touching(sbc_bpm *e, sbc_error *err);
+
+/* Eq. 48: 0.22 sqrt(m / k) with the smallest mass and the largest bond axial
+ * stiffness (k^n A for the parallel bond, E A / L for the beam), s; 0 when
+ * there is no bond. */
+double sbc_bpm_critical_dt(const sbc_bpm *e);
+
+/* One time step of length e->dt. SBC_ERR_NUMERIC when a value stops being
+ * finite (the step and the sphere are named). */
+sbc_status sbc_bpm_step(sbc_bpm *e, sbc_error *err);
+
+/* Energies after the last step. */
+sbc_bpm_energy sbc_bpm_energies(const sbc_bpm *e);
+
+/* Mean coordination number (bonds per sphere). */
+double sbc_bpm_mean_coordination(const sbc_bpm *e);
+
+#endif

@@ -1,0 +1,192 @@
+/* servo_bc: 3D bond kernels (thesis Sect. 3.2): bond frame, parallel bond,
+ * Timoshenko beam, viscous bond damping. */
+#include "sbc/bpm_bond.h"
+
+#include <math.h>
+#include <string.h>
+
+static void cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static double normalize(double a[3])
+{
+    double l = sqrt(dot(a, a));
+    if (l > 0.0) {
+        a[0] /= l;
+        a[1] /= l;
+        a[2] /= l;
+    }
+    return l;
+}
+
+/* eqs. 4-8 */
+double sbc_bond_frame(const double xa[3], const double xb[3], double T[3][3])
+{
+    static const double ez[3] = {0.0, 0.0, 1.0};
+    double L;
+    int k;
+    for (k = 0; k < 3; ++k)
+        T[0][k] = xb[k] - xa[k];
+    L = normalize(T[0]);                               /* eq. 5 */
+    cross(T[0], ez, T[1]);                             /* eq. 6 */
+    if (normalize(T[1]) < 1e-12) {                     /* eq. 7: x^ along e_z */
+        T[1][0] = 0.0;
+        T[1][1] = 1.0;
+        T[1][2] = 0.0;
+    }
+    cross(T[0], T[1], T[2]);                           /* eq. 8 */
+    normalize(T[2]);
+    return L;
+}
+
+/* ---- parallel bond ------------------------------------------------------- */
+
+void sbc_parallel_bond_contact(const double xa[3], double ra, const double xb[3], double rb, double xc[3])
+{
+    double d[3], L, s;
+    int k;
+    for (k = 0; k < 3; ++k)
+        d[k] = xb[k] - xa[k];
+    L = sqrt(dot(d, d));
+    s = L > 0.0 ? (ra + 0.5 * (L - ra - rb)) / L : 0.0;
+    for (k = 0; k < 3; ++k)
+        xc[k] = xa[k] + s * d[k];
+}
+
+void sbc_parallel_bond_increment(const sbc_parallel_bond_law *law, sbc_parallel_bond *bond, const double n[3],
+                                 const double du[3], const double dth[3])
+{
+    double area = sbc_bond_area(bond->rb), I = sbc_bond_inertia(bond->rb), J = sbc_bond_polar(bond->rb);
+    double un = dot(du, n), tn = dot(dth, n);
+    int k;
+    for (k = 0; k < 3; ++k) {
+        double dun = un * n[k], dus = du[k] - dun;
+        double dtn = tn * n[k], dts = dth[k] - dtn;
+        bond->fn[k] -= law->kn * area * dun; /* eq. 10 */
+        bond->fs[k] -= law->ks * area * dus; /* eq. 11 */
+        bond->mn[k] -= law->ks * J * dtn;    /* eq. 16 */
+        bond->ms[k] -= law->kn * I * dts;    /* eq. 17 */
+    }
+}
+
+void sbc_parallel_bond_apply(const sbc_parallel_bond *bond, const double xa[3], const double xb[3],
+                             const double xc[3], double fa[3], double ma[3], double fb[3], double mb[3])
+{
+    double arm_a[3], arm_b[3], tfs_a[3], tfs_b[3], fs_b[3];
+    int k;
+    for (k = 0; k < 3; ++k) {
+        arm_a[k] = xc[k] - xa[k];
+        arm_b[k] = xc[k] - xb[k];
+        fs_b[k] = -bond->fs[k];
+    }
+    cross(arm_a, bond->fs, tfs_a); /* eq. 20 */
+    cross(arm_b, fs_b, tfs_b);
+    for (k = 0; k < 3; ++k) {
+        double f = bond->fn[k] + bond->fs[k], m = bond->mn[k] + bond->ms[k];
+        fa[k] += f;
+        fb[k] -= f;
+        ma[k] += m + tfs_a[k]; /* eq. 22 */
+        mb[k] += -m + tfs_b[k];
+    }
+}
+
+/* eq. 50 */
+double sbc_parallel_bond_energy(const sbc_parallel_bond_law *law, const sbc_parallel_bond *bond)
+{
+    double area = sbc_bond_area(bond->rb), I = sbc_bond_inertia(bond->rb), J = sbc_bond_polar(bond->rb);
+    double w = 0.0;
+    if (law->kn > 0.0)
+        w += dot(bond->fn, bond->fn) / (2.0 * law->kn * area) + dot(bond->ms, bond->ms) / (2.0 * law->kn * I);
+    if (law->ks > 0.0)
+        w += dot(bond->fs, bond->fs) / (2.0 * law->ks * area) + dot(bond->mn, bond->mn) / (2.0 * law->ks * J);
+    return w;
+}
+
+/* ---- Timoshenko beam ------------------------------------------------------ */
+
+/* eq. 31 with f_s = 10/9 */
+double sbc_beam_phi(double nu, double rb, double L) { return 20.0 * rb * rb * (1.0 + nu) / (3.0 * L * L); }
+
+/* eqs. 26-30 */
+void sbc_beam_stiffness(const sbc_beam_law *law, double rb, double L, double K[12][12])
+{
+    double E = law->E, A = sbc_bond_area(rb), I = sbc_bond_inertia(rb), phi = sbc_beam_phi(law->nu, rb, L);
+    double K1[3][3] = {{0}}, K2[3][3] = {{0}}, K3[3][3] = {{0}}, K4[3][3] = {{0}};
+    /* block (row, column) of eq. 26 and its sign */
+    static const int which[4][4] = {{1, 2, 1, 2}, {2, 3, 2, 4}, {1, 2, 1, 2}, {2, 4, 2, 3}};
+    static const int sign[4][4] = {{1, -1, -1, -1}, {1, 1, -1, 1}, {-1, 1, 1, 1}, {1, 1, -1, 1}};
+    int bi, bj, i, j;
+    K1[0][0] = E * A / L;                                          /* eq. 27 */
+    K1[1][1] = K1[2][2] = 12.0 * E * I / (L * L * L * (1.0 + phi));
+    K2[1][2] = -6.0 * E * I / (L * L * (1.0 + phi));               /* eq. 28 */
+    K2[2][1] = -K2[1][2];
+    K3[0][0] = E * I / (L * (1.0 + law->nu));                      /* eq. 29: G J / L */
+    K3[1][1] = K3[2][2] = E * I * (4.0 + phi) / (L * (1.0 + phi));
+    K4[0][0] = -K3[0][0];                                          /* eq. 30 */
+    K4[1][1] = K4[2][2] = E * I * (2.0 - phi) / (L * (1.0 + phi));
+    for (bi = 0; bi < 4; ++bi)
+        for (bj = 0; bj < 4; ++bj) {
+            double (*S)[3] = which[bi][bj] == 1 ? K1 : which[bi][bj] == 2 ? K2 : which[bi][bj] == 3 ? K3 : K4;
+            for (i = 0; i < 3; ++i)
+                for (j = 0; j < 3; ++j)
+                    K[3 * bi + i][3 * bj + j] = sign[bi][bj] * S[i][j];
+        }
+}
+
+void sbc_beam_bond_init(const sbc_beam_law *law, double rb, const double xa[3], const double xb[3],
+                        sbc_beam_bond *bond)
+{
+    double L = sbc_bond_frame(xa, xb, bond->T);
+    sbc_beam_stiffness(law, rb, L, bond->K);
+    memset(bond->f, 0, sizeof bond->f);
+}
+
+double sbc_beam_bond_increment(sbc_beam_bond *bond, const double dxa[3], const double dtha[3], const double dxb[3],
+                               const double dthb[3])
+{
+    const double *g[4] = {dxa, dtha, dxb, dthb};
+    double ul[12], df[12], w = 0.0;
+    int b, i, j;
+    for (b = 0; b < 4; ++b) /* eq. 32 */
+        for (i = 0; i < 3; ++i)
+            ul[3 * b + i] = dot(bond->T[i], g[b]);
+    for (i = 0; i < 12; ++i) { /* eq. 23 */
+        double s = 0.0;
+        for (j = 0; j < 12; ++j)
+            s += bond->K[i][j] * ul[j];
+        df[i] = s;
+    }
+    for (i = 0; i < 12; ++i) {
+        w += (bond->f[i] + 0.5 * df[i]) * ul[i];
+        bond->f[i] += df[i];
+    }
+    return w;
+}
+
+void sbc_beam_bond_apply(const sbc_beam_bond *bond, double fa[3], double ma[3], double fb[3], double mb[3])
+{
+    double *out[4] = {fa, ma, fb, mb};
+    int b, i, k;
+    for (b = 0; b < 4; ++b) /* eqs. 33-34: T^-1 = T^T */
+        for (k = 0; k < 3; ++k) {
+            double s = 0.0;
+            for (i = 0; i < 3; ++i)
+                s += bond->T[i][k] * bond->f[3 * b + i];
+            out[b][k] -= s;
+        }
+}
+
+/* ---- damping ---------------------------------------------------------------- */
+
+/* eqs. 36-37 */
+double sbc_bond_damping(double xi, double k, double ma, double mb, double cn)
+{
+    double mred = ma * mb / (ma + mb);
+    return xi * 2.0 * sqrt(k * mred) / sqrt((cn > 0.0 ? cn : 1.0) / 3.0);
+}

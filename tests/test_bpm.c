@@ -1,0 +1,296 @@
+/* 3D bonded particle model (thesis Chapter 3, Appendix B): the bond kernels
+ * against closed forms, and the engine on the thesis' verification beams:
+ * simply supported Timoshenko chains of 3-31 spheres against eq. B1 and the
+ * free vibration of the three-sphere beam against eqs. B2-B3 (723.29 Hz),
+ * with the energy balance of eq. 53 on the way. */
+#include "check.h"
+#include "tests.h"
+
+#include "sbc/bpm.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Appendix B: r_p = 0.1 m, E_b = 4 GPa, nu_b = 0.3, f_s = 10/9 */
+#define RP 0.1
+#define EB 4e9
+#define NUB 0.3
+#define FS (10.0 / 9.0)
+
+static double mat_norm(double K[12][12])
+{
+    double s = 0.0;
+    int i, j;
+    for (i = 0; i < 12; ++i)
+        for (j = 0; j < 12; ++j)
+            s = fmax(s, fabs(K[i][j]));
+    return s;
+}
+
+static void test_frame3d(void)
+{
+    double T[3][3], xa[3] = {1, 2, 3}, xb[3] = {1.3, 1.6, 3.5}, L;
+    double up[3] = {1, 2, 7};
+    int i, j;
+    L = sbc_bond_frame(xa, xb, T);
+    CHECK_REL(L, sqrt(0.09 + 0.16 + 0.25), 1e-15);
+    for (i = 0; i < 3; ++i) /* orthonormal */
+        for (j = 0; j < 3; ++j)
+            CHECK_ABS(T[i][0] * T[j][0] + T[i][1] * T[j][1] + T[i][2] * T[j][2], i == j ? 1.0 : 0.0, 1e-15);
+    CHECK_REL(T[0][0], 0.3 / L, 1e-15); /* eq. 5 */
+    CHECK_ABS(T[1][2], 0.0, 1e-15);     /* eq. 6: y^ normal to e_z */
+    /* right-handed: det T = +1 */
+    CHECK_REL(T[0][0] * (T[1][1] * T[2][2] - T[1][2] * T[2][1]) - T[0][1] * (T[1][0] * T[2][2] - T[1][2] * T[2][0]) +
+                  T[0][2] * (T[1][0] * T[2][1] - T[1][1] * T[2][0]),
+              1.0, 1e-15);
+    /* eq. 7: a bond along e_z takes y^ = e_y */
+    L = sbc_bond_frame(xa, up, T);
+    CHECK_REL(L, 4.0, 1e-15);
+    CHECK_ABS(T[1][0], 0.0, 0.0);
+    CHECK_ABS(T[1][1], 1.0, 0.0);
+    CHECK_ABS(T[1][2], 0.0, 0.0);
+    CHECK_ABS(T[2][0], -1.0, 1e-15); /* z^ = e_z x e_y = -e_x */
+}
+
+/* K of eqs. 26-31: symmetric, free of force under the six rigid motions, and
+ * a cantilever (A clamped) under a tip load P in local y deflects by the
+ * Timoshenko closed form v = P L^3 (4 + Phi) / 12 E I, theta = P L^2 / 2 E I. */
+static void test_beam_stiffness(void)
+{
+    sbc_beam_law law = {EB, NUB};
+    double K[12][12], L = 2 * RP, phi = sbc_beam_phi(NUB, RP, L), scale, u[12], f[12];
+    double I = sbc_bond_inertia(RP), A = sbc_bond_area(RP), G = EB / (2 * (1 + NUB)), P = 1e3;
+    int i, j, mode;
+    sbc_beam_stiffness(&law, RP, L, K);
+    scale = mat_norm(K);
+    CHECK_REL(phi, FS * 12 * EB * I / (G * A * L * L), 1e-14); /* eq. 31, both forms */
+    for (i = 0; i < 12; ++i)
+        for (j = 0; j < i; ++j)
+            CHECK_ABS(K[i][j], K[j][i], 1e-15 * scale);
+    for (mode = 0; mode < 6; ++mode) {
+        double big = 0.0;
+        memset(u, 0, sizeof u);
+        if (mode < 3) { /* translations */
+            u[mode] = u[6 + mode] = 1e-3;
+        } else { /* rotation about local axis mode-3 through A: B moves by th x (L, 0, 0) */
+            int a = mode - 3;
+            u[3 + a] = u[9 + a] = 1e-3;
+            if (a == 1) u[6 + 2] = -1e-3 * L; /* about y: B goes to -z */
+            if (a == 2) u[6 + 1] = 1e-3 * L;  /* about z: B goes to +y */
+        }
+        for (i = 0; i < 12; ++i) {
+            double s = 0.0;
+            for (j = 0; j < 12; ++j)
+                s += K[i][j] * u[j];
+            big = fmax(big, fabs(s));
+        }
+        CHECK(big < 1e-12 * scale * 1e-3);
+    }
+    memset(u, 0, sizeof u);
+    u[7] = P * L * L * L * (4 + phi) / (12 * EB * I); /* v_B */
+    u[11] = P * L * L / (2 * EB * I);                 /* theta_zB */
+    for (i = 0; i < 12; ++i) {
+        f[i] = 0.0;
+        for (j = 0; j < 12; ++j)
+            f[i] += K[i][j] * u[j];
+    }
+    CHECK_REL(f[7], P, 1e-13);
+    CHECK_ABS(f[11], 0.0, 1e-12 * P * L);
+    CHECK_REL(f[1], -P, 1e-13);    /* the clamp holds the load ... */
+    CHECK_REL(f[5], -P * L, 1e-13); /* ... and the moment */
+    /* axial and torsion: E A / L and G J / L */
+    CHECK_REL(K[0][0], EB * A / L, 1e-15);
+    CHECK_REL(K[3][3], G * sbc_bond_polar(RP) / L, 1e-14);
+}
+
+/* Parallel bond, eqs. 10-20: a normal, a shear, a twist and a bend
+ * increment, the arm of eq. 20 and the energy of eq. 50. */
+static void test_parallel_bond(void)
+{
+    sbc_parallel_bond_law law = sbc_bpm_parallel_law(EB, 5e-3, 4.2);
+    sbc_parallel_bond b;
+    double n[3] = {1, 0, 0}, du[3] = {2e-7, 1e-7, 0}, dth[3] = {3e-6, 0, 4e-6};
+    double xa[3] = {0, 0, 0}, xb[3] = {1e-2, 0, 0}, xc[3], fa[3] = {0}, ma[3] = {0}, fb[3] = {0}, mb[3] = {0};
+    double area = sbc_bond_area(5e-3), I = sbc_bond_inertia(5e-3), J = sbc_bond_polar(5e-3), w;
+    memset(&b, 0, sizeof b);
+    b.rb = 5e-3;
+    CHECK_REL(law.kn, 4e11, 1e-15); /* Table 3: E_b / 2 r_p */
+    CHECK_REL(law.kn / law.ks, 4.2, 1e-15);
+    sbc_parallel_bond_increment(&law, &b, n, du, dth);
+    CHECK_REL(b.fn[0], -law.kn * area * 2e-7, 1e-15);
+    CHECK_REL(b.fs[1], -law.ks * area * 1e-7, 1e-15);
+    CHECK_REL(b.mn[0], -law.ks * J * 3e-6, 1e-15);
+    CHECK_REL(b.ms[2], -law.kn * I * 4e-6, 1e-15);
+    sbc_parallel_bond_contact(xa, 5e-3, xb, 5e-3, xc);
+    CHECK_REL(xc[0], 5e-3, 1e-15);
+    sbc_parallel_bond_apply(&b, xa, xb, xc, fa, ma, fb, mb);
+    CHECK_REL(fa[1], b.fs[1], 1e-15);
+    CHECK_REL(fb[1], -b.fs[1], 1e-15);
+    CHECK_REL(ma[2], b.ms[2] + 5e-3 * b.fs[1], 1e-15); /* eq. 20: (xc - xa) x fs */
+    CHECK_REL(mb[2], -b.ms[2] + 5e-3 * b.fs[1], 1e-15); /* both ends turn the same way */
+    w = sbc_parallel_bond_energy(&law, &b);
+    CHECK_REL(w, 0.5 * area * (law.kn * 4e-14 + law.ks * 1e-14) + 0.5 * (law.ks * J * 9e-12 + law.kn * I * 16e-12),
+              1e-14);
+    CHECK_REL(sbc_bond_damping(1.0, 4.0, 2.0, 2.0, 3.0), 4.0, 1e-15); /* eq. 36: 2 sqrt(k m/2) */
+    CHECK_REL(sbc_bond_damping(0.5, 4.0, 2.0, 2.0, 12.0), 1.0, 1e-15); /* eq. 37: / sqrt(12/3) */
+}
+
+/* Appendix B chain: N spheres along x, 2 r_p apart, left end pinned (rotation
+ * about y free), right end on a roller (x and rotation about y free). */
+static sbc_bpm *chain(int n, double rho, double xi)
+{
+    sbc_bpm_settings s = sbc_bpm_settings_default();
+    sbc_bpm *e = NULL;
+    sbc_error err;
+    int i;
+    s.xi = xi;
+    if (sbc_bpm_create(&s, &e, &err) != SBC_OK)
+        return NULL;
+    for (i = 0; i < n; ++i) {
+        double x[3] = {2 * RP * i, 0, 0};
+        sbc_bpm_add(e, x, RP, rho, NULL, &err);
+    }
+    sbc_bpm_bond_touching(e, &err);
+    e->fix[0] = 1 | 2 | 4 | 8 | 32;
+    e->fix[n - 1] = 2 | 4 | 8 | 32;
+    return e;
+}
+
+/* eq. B1 */
+static double deflection_b1(double F, double Le)
+{
+    double G = EB / (2 * (1 + NUB));
+    return F * Le * Le * Le / (48 * EB * sbc_bond_inertia(RP)) + F * Le * FS / (4 * G * sbc_bond_area(RP));
+}
+
+static void test_beam_chains(void)
+{
+    static const int sizes[] = {3, 5, 7, 11, 15, 31};
+    /* Table B1's delta_DEM (mm), the thesis' own figures */
+    static const double thesis[] = {0.0065436, 0.038551, 0.12148, 0.54201, 1.4719, 14.359};
+    size_t k;
+    for (k = 0; k < sizeof sizes / sizeof sizes[0]; ++k) {
+        int n = sizes[k], mid = n / 2;
+        sbc_bpm *e = chain(n, 925.0, 0.5);
+        sbc_error err;
+        double F = 1e3, Le = 2 * RP * (n - 1), da = deflection_b1(F, Le), prev = 0.0, d = 0.0;
+        long t, chunks = 0, worst = 0;
+        sbc_bpm_energy en;
+        if (!e) {
+            CHECK(e != NULL);
+            return;
+        }
+        CHECK(e->nb == (size_t)(n - 1));
+        e->fext[6 * mid + 2] = -F;
+        e->dt = 0.5 * sbc_bpm_critical_dt(e);
+        do { /* until the midspan settles to 1e-9 of its deflection */
+            for (t = 0; t < 2000; ++t)
+                if (sbc_bpm_step(e, &err) != SBC_OK) {
+                    CHECK(!"chain step");
+                    break;
+                }
+            prev = d;
+            d = -e->x[3 * mid + 2];
+            en = sbc_bpm_energies(e);
+            if (en.balance > 1e-2) /* eq. 53 along the way */
+                ++worst;
+        } while (++chunks < 400 && fabs(d - prev) > 1e-9 * da);
+        CHECK(chunks < 400);
+        CHECK(worst == 0);
+        CHECK_REL(d, da, 1e-4);                     /* the 0.01 % */
+        CHECK_REL(d * 1e3, thesis[k], 1.5e-4);      /* Table B1, 5 digits */
+        CHECK_REL(en.external, F * d, 1e-6);        /* eq. 52: the load's work */
+        CHECK(en.balance < 1e-9);                   /* eq. 53, far inside 1e-2 */
+        CHECK_REL(en.strain, 0.5 * F * d, 1e-6);    /* Clapeyron: half the work is stored */
+        sbc_bpm_destroy(e);
+    }
+}
+
+/* Eqs. B2-B3: the three-sphere beam, central mass 7.4 kg, L_e = 0.4 m. Held
+ * by a static load at 1 mm (settled with dashpots), then the end spheres are
+ * made 1000 times lighter (the thesis' "light end particles"), the load and
+ * dashpots removed, and the frequency counted over 5 periods. */
+static void test_beam_vibration(void)
+{
+    double m = 7.4, rho = m / (4.0 / 3.0 * SBC_PI * RP * RP * RP), G = EB / (2 * (1 + NUB)), Le = 0.4;
+    double I = sbc_bond_inertia(RP), A = sbc_bond_area(RP);
+    double kbeam = 192 * EB * I * G * A / (4 * Le * Le * Le * G * A + 48 * FS * EB * I * Le); /* eq. B3 */
+    double fn = sqrt(kbeam / m) / (2 * SBC_PI);                                              /* eq. B2 */
+    double zprev, tprev = 0.0, t0 = -1.0, tl = 0.0, f;
+    sbc_bpm *e = chain(3, rho, 0.5);
+    sbc_error err;
+    sbc_bpm_energy en;
+    long t, steps;
+    int i, periods = 0;
+    if (!e) {
+        CHECK(e != NULL);
+        return;
+    }
+    CHECK_REL(fn, 723.29, 1e-5);
+    e->fext[6 + 2] = -kbeam * 1e-3;
+    e->dt = 0.5 * sbc_bpm_critical_dt(e);
+    for (t = 0; t < 20000; ++t)
+        sbc_bpm_step(e, &err);
+    CHECK_REL(e->x[5], -1e-3, 1e-9);
+    e->fext[6 + 2] = 0.0;
+    e->bonds[0].c = e->bonds[1].c = 0.0;
+    for (i = 0; i < 3; i += 2) {
+        e->m[i] *= 1e-3;
+        e->inertia[i] *= 1e-3;
+    }
+    for (i = 0; i < 9; ++i)
+        e->v[i] = e->w[i] = 0.0;
+    e->dt = 0.5 * sbc_bpm_critical_dt(e);
+    zprev = e->x[5];
+    steps = (long)(5.5 / fn / e->dt);
+    for (t = 1; t <= steps; ++t) {
+        double z, tt = t * e->dt;
+        sbc_bpm_step(e, &err);
+        z = e->x[5];
+        if (zprev < 0.0 && z >= 0.0) { /* upward zero crossing, linearly interpolated */
+            double tc = tprev + (tt - tprev) * (-zprev) / (z - zprev);
+            if (t0 < 0.0) t0 = tc;
+            else { ++periods; tl = tc; }
+        }
+        zprev = z;
+        tprev = tt;
+    }
+    CHECK(periods == 5);
+    f = periods / (tl - t0);
+    CHECK_REL(f, fn, 5e-4); /* the 0.05 % (measured 0.0095 %) */
+    CHECK(f < fn);          /* the ends' remaining inertia can only slow it */
+    en = sbc_bpm_energies(e);
+    CHECK(en.balance < 1e-9);
+    sbc_bpm_destroy(e);
+}
+
+/* Bad input is refused with a message. */
+static void test_bpm_input(void)
+{
+    sbc_bpm_settings s = sbc_bpm_settings_default();
+    sbc_bpm *e = NULL;
+    sbc_error err;
+    double x[3] = {0, 0, 0};
+    s.alpha = 1.5;
+    CHECK(sbc_bpm_create(&s, &e, &err) == SBC_ERR_INPUT && e == NULL);
+    CHECK(strstr(err.message, "multiplier 1.5") != NULL);
+    s = sbc_bpm_settings_default();
+    s.beam.nu = 0.5;
+    CHECK(sbc_bpm_create(&s, &e, &err) == SBC_ERR_INPUT);
+    s = sbc_bpm_settings_default();
+    CHECK(sbc_bpm_create(&s, &e, &err) == SBC_OK);
+    CHECK(sbc_bpm_add(e, x, -1.0, 925.0, NULL, &err) == SBC_ERR_INPUT);
+    CHECK(strstr(err.message, "radius -1") != NULL);
+    CHECK(sbc_bpm_step(e, &err) == SBC_ERR_INPUT); /* dt unset */
+    sbc_bpm_destroy(e);
+}
+
+void test_bpm(void)
+{
+    test_frame3d();
+    test_beam_stiffness();
+    test_parallel_bond();
+    test_beam_chains();
+    test_beam_vibration();
+    test_bpm_input();
+}
