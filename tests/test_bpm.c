@@ -7,6 +7,8 @@
 #include "tests.h"
 
 #include "sbc/bpm.h"
+#include "sbc/bpm_loading.h"
+#include "sbc/bpm_packing.h"
 
 #include <math.h>
 #include <string.h>
@@ -98,6 +100,21 @@ static void test_beam_stiffness(void)
     CHECK_ABS(f[11], 0.0, 1e-12 * P * L);
     CHECK_REL(f[1], -P, 1e-13);    /* the clamp holds the load ... */
     CHECK_REL(f[5], -P * L, 1e-13); /* ... and the moment */
+    { /* the bond's six-coefficient product is the full matrix's */
+        sbc_beam_bond bond;
+        double xa[3] = {0, 0, 0}, xb[3] = {L, 0, 0}, df[12], big = 0.0;
+        sbc_beam_bond_init(&law, RP, xa, xb, &bond);
+        for (i = 0; i < 12; ++i)
+            u[i] = sin(1.0 + 3.7 * i) * 1e-4;
+        sbc_beam_bond_product(&bond, u, df);
+        for (i = 0; i < 12; ++i) {
+            f[i] = 0.0;
+            for (j = 0; j < 12; ++j)
+                f[i] += K[i][j] * u[j];
+            big = fmax(big, fabs(f[i] - df[i]));
+        }
+        CHECK(big < 1e-13 * scale * 1e-4);
+    }
     /* axial and torsion: E A / L and G J / L */
     CHECK_REL(K[0][0], EB * A / L, 1e-15);
     CHECK_REL(K[3][3], G * sbc_bond_polar(RP) / L, 1e-14);
@@ -110,7 +127,7 @@ static void test_parallel_bond(void)
     sbc_parallel_bond_law law = sbc_bpm_parallel_law(EB, 5e-3, 4.2);
     sbc_parallel_bond b;
     double n[3] = {1, 0, 0}, du[3] = {2e-7, 1e-7, 0}, dth[3] = {3e-6, 0, 4e-6};
-    double xa[3] = {0, 0, 0}, xb[3] = {1e-2, 0, 0}, xc[3], fa[3] = {0}, ma[3] = {0}, fb[3] = {0}, mb[3] = {0};
+    double xa[3] = {0, 0, 0}, xb[3] = {1e-2, 0, 0}, xc[3], nn[3], fa[3] = {0}, ma[3] = {0}, fb[3] = {0}, mb[3] = {0};
     double area = sbc_bond_area(5e-3), I = sbc_bond_inertia(5e-3), J = sbc_bond_polar(5e-3), w;
     memset(&b, 0, sizeof b);
     b.rb = 5e-3;
@@ -121,8 +138,9 @@ static void test_parallel_bond(void)
     CHECK_REL(b.fs[1], -law.ks * area * 1e-7, 1e-15);
     CHECK_REL(b.mn[0], -law.ks * J * 3e-6, 1e-15);
     CHECK_REL(b.ms[2], -law.kn * I * 4e-6, 1e-15);
-    sbc_parallel_bond_contact(xa, 5e-3, xb, 5e-3, xc);
+    CHECK_REL(sbc_parallel_bond_geometry(xa, 5e-3, xb, 5e-3, nn, xc), 1e-2, 1e-15);
     CHECK_REL(xc[0], 5e-3, 1e-15);
+    CHECK_REL(nn[0], 1.0, 1e-15);
     sbc_parallel_bond_apply(&b, xa, xb, xc, fa, ma, fb, mb);
     CHECK_REL(fa[1], b.fs[1], 1e-15);
     CHECK_REL(fb[1], -b.fs[1], 1e-15);
@@ -264,6 +282,83 @@ static void test_beam_vibration(void)
     sbc_bpm_destroy(e);
 }
 
+/* Table 2 at r_p = 5 mm in 0.25 x 0.1 x 0.1 m: uniform 2500 spheres, C_n
+ * 5.52, porosity 0.48 (1 - pi/6); HCP 3300 spheres, C_n 10.74, porosity 0.32,
+ * in 0.255 x 0.0995 x 0.0998 m. */
+static void test_lattices(void)
+{
+    static const double box[3] = {0.25, 0.1, 0.1};
+    sbc_bpm_settings s = sbc_bpm_settings_default();
+    sbc_bpm *e = NULL;
+    sbc_error err;
+    double ext[6];
+    sbc_bpm_create(&s, &e, &err);
+    CHECK(sbc_bpm_pack_lattice(e, SBC_PACK_CUBIC, box, 5e-3, 925.0, ext, &err) == SBC_OK);
+    CHECK(sbc_bpm_bond_touching(e, &err) == SBC_OK);
+    CHECK(e->n == 2500);
+    CHECK(e->nb == 24 * 10 * 10 + 2 * 25 * 9 * 10);
+    CHECK_REL(sbc_bpm_mean_coordination(e), 5.52, 1e-12);
+    CHECK_REL(sbc_bpm_porosity(e, ext), 1.0 - SBC_PI / 6.0, 1e-12);
+    sbc_bpm_destroy(e);
+    sbc_bpm_create(&s, &e, &err);
+    CHECK(sbc_bpm_pack_lattice(e, SBC_PACK_HCP, box, 5e-3, 925.0, ext, &err) == SBC_OK);
+    CHECK(sbc_bpm_bond_touching(e, &err) == SBC_OK);
+    CHECK(e->n == 3300);
+    CHECK_REL(sbc_bpm_mean_coordination(e), 10.74, 1e-3);
+    CHECK_REL(sbc_bpm_porosity(e, ext), 0.32, 0.01);
+    CHECK_REL(ext[3] - ext[0], 0.255, 1e-12);
+    CHECK_REL(ext[4] - ext[1], 0.0995, 1e-3);
+    CHECK_REL(ext[5] - ext[2], 0.0998, 1e-3);
+    CHECK(sbc_bpm_pack_lattice(e, SBC_PACK_HCP, box, 0.2, 925.0, ext, &err) == SBC_ERR_INPUT);
+    CHECK(strstr(err.message, "no sphere of radius 0.2") != NULL);
+    sbc_bpm_destroy(e);
+}
+
+/* The uniform packing's axial modulus in closed form: n_y n_z chains of
+ * bonds of axial stiffness k = k^n pi r_p^2 (eq. 10) and length 2 r_p, over a
+ * cross-section of n_y n_z (2 r_p)^2: E = k 2 r_p / 4 r_p^2 = pi k^n r_p / 2 =
+ * pi E_b / 4 = 3.1416 GPa at every r_p (the thesis' 3.14 GPa), nu = 0. The
+ * Timoshenko beam has the same axial stiffness E A / L. Tension and
+ * compression (the thesis: identical) at 0.5 %. */
+static void uniaxial_cubic(sbc_bond_model model, double rp, double velocity, sbc_bpm_uniaxial_result *res)
+{
+    static const double box[3] = {0.25, 0.1, 0.1};
+    sbc_bpm_settings s = sbc_bpm_settings_default();
+    sbc_bpm *e = NULL;
+    sbc_error err;
+    sbc_bpm_uniaxial test = {rp, 1.5, velocity, 4000, NULL, 0};
+    s.model = model;
+    s.parallel = sbc_bpm_parallel_law(EB, rp, 4.2);
+    sbc_bpm_create(&s, &e, &err);
+    sbc_bpm_pack_lattice(e, SBC_PACK_CUBIC, box, rp, 925.0 / (1.0 - (1.0 - SBC_PI / 6.0)), NULL, &err); /* eq. 63 */
+    sbc_bpm_bond_touching(e, &err);
+    e->dt = 0.6 * sbc_bpm_critical_dt(e);
+    CHECK(sbc_bpm_uniaxial_run(e, &test, res, &err) == SBC_OK);
+    sbc_bpm_destroy(e);
+}
+
+static void test_uniaxial_cubic(void)
+{
+    static const double radii[] = {12.5e-3, 10e-3};
+    sbc_bpm_uniaxial_result t, c, b;
+    size_t k;
+    for (k = 0; k < 2; ++k) {
+        double rp = radii[k];
+        uniaxial_cubic(SBC_BOND_PARALLEL, rp, 1e-5, &t);
+        uniaxial_cubic(SBC_BOND_PARALLEL, rp, -1e-5, &c);
+        CHECK_REL(t.E, SBC_PI * EB / 4.0, 5e-3);
+        CHECK_REL(c.E, t.E, 5e-3);
+        CHECK_ABS(t.nu_xy, 0.0, 1e-6);
+        CHECK_ABS(t.nu_xz, 0.0, 1e-6);
+        CHECK(t.force > 0.0 && c.force < 0.0);
+        CHECK_REL(t.L0, 2.0 * rp * (floor(0.25 / (2.0 * rp)) - 1.0), 1e-12);
+        CHECK(t.balance < 1e-2); /* eq. 53 */
+    }
+    uniaxial_cubic(SBC_BOND_BEAM, 12.5e-3, 1e-5, &b);
+    CHECK_REL(b.E, SBC_PI * EB / 4.0, 5e-3);
+    CHECK(b.balance < 1e-2);
+}
+
 /* Bad input is refused with a message. */
 static void test_bpm_input(void)
 {
@@ -292,5 +387,7 @@ void test_bpm(void)
     test_parallel_bond();
     test_beam_chains();
     test_beam_vibration();
+    test_lattices();
+    test_uniaxial_cubic();
     test_bpm_input();
 }

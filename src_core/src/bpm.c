@@ -140,7 +140,7 @@ static double bond_axial_stiffness(const sbc_bpm *e, const sbc_bpm_bond *bd)
     double rb = bond_radius(e, bd->a, bd->b), area = sbc_bond_area(rb);
     if (e->set.model == SBC_BOND_PARALLEL)
         return e->set.parallel.kn * area;
-    return bd->s.beam.K[0][0];
+    return bd->s.beam.k[0];
 }
 
 static sbc_status add_bond(sbc_bpm *e, size_t a, size_t b, sbc_error *err)
@@ -302,17 +302,12 @@ static void bond_loads(sbc_bpm *e, double *load)
             e->w_strain_beam += sbc_beam_bond_increment(&bd->s.beam, dxa, dta, dxb, dtb);
             sbc_beam_bond_apply(&bd->s.beam, &load[6 * a], &load[6 * a + 3], &load[6 * b], &load[6 * b + 3]);
         } else {
-            double xc[3], n[3], L = 0.0, ra_[3], rb_[3], wa[3], wb[3], du[3], dth[3];
-            sbc_parallel_bond_contact(xa, e->r[a], xb, e->r[b], xc);
+            double xc[3], n[3], ra_[3], rb_[3], wa[3], wb[3], du[3], dth[3];
+            sbc_parallel_bond_geometry(xa, e->r[a], xb, e->r[b], n, xc);
             for (q = 0; q < 3; ++q) {
-                n[q] = xb[q] - xa[q];
-                L += n[q] * n[q];
                 ra_[q] = xc[q] - xa[q];
                 rb_[q] = xc[q] - xb[q];
             }
-            L = sqrt(L);
-            for (q = 0; q < 3; ++q)
-                n[q] /= L;
             cross(dta, ra_, wa); /* eq. 14 times dt */
             cross(dtb, rb_, wb);
             for (q = 0; q < 3; ++q) {

@@ -47,16 +47,18 @@ double sbc_bond_frame(const double xa[3], const double xb[3], double T[3][3])
 
 /* ---- parallel bond ------------------------------------------------------- */
 
-void sbc_parallel_bond_contact(const double xa[3], double ra, const double xb[3], double rb, double xc[3])
+double sbc_parallel_bond_geometry(const double xa[3], double ra, const double xb[3], double rb, double n[3],
+                                  double xc[3])
 {
-    double d[3], L, s;
+    double L, s;
     int k;
     for (k = 0; k < 3; ++k)
-        d[k] = xb[k] - xa[k];
-    L = sqrt(dot(d, d));
-    s = L > 0.0 ? (ra + 0.5 * (L - ra - rb)) / L : 0.0;
+        n[k] = xb[k] - xa[k];
+    L = normalize(n);
+    s = ra + 0.5 * (L - ra - rb);
     for (k = 0; k < 3; ++k)
-        xc[k] = xa[k] + s * d[k];
+        xc[k] = xa[k] + s * n[k];
+    return L;
 }
 
 void sbc_parallel_bond_increment(const sbc_parallel_bond_law *law, sbc_parallel_bond *bond, const double n[3],
@@ -142,9 +144,35 @@ void sbc_beam_stiffness(const sbc_beam_law *law, double rb, double L, double K[1
 void sbc_beam_bond_init(const sbc_beam_law *law, double rb, const double xa[3], const double xb[3],
                         sbc_beam_bond *bond)
 {
-    double L = sbc_bond_frame(xa, xb, bond->T);
-    sbc_beam_stiffness(law, rb, L, bond->K);
+    double L = sbc_bond_frame(xa, xb, bond->T), K[12][12];
+    sbc_beam_stiffness(law, rb, L, K);
+    bond->k[0] = K[0][0];  /* E A / L */
+    bond->k[1] = K[1][1];  /* 12 E I / L^3 (1 + Phi) */
+    bond->k[2] = K[1][5];  /* 6 E I / L^2 (1 + Phi) */
+    bond->k[3] = K[3][3];  /* G J / L */
+    bond->k[4] = K[4][4];  /* E I (4 + Phi) / L (1 + Phi) */
+    bond->k[5] = K[4][10]; /* E I (2 - Phi) / L (1 + Phi) */
     memset(bond->f, 0, sizeof bond->f);
+}
+
+/* eq. 26 written out: A's forces and moments, then B's */
+void sbc_beam_bond_product(const sbc_beam_bond *bond, const double u[12], double df[12])
+{
+    const double *k = bond->k;
+    double du = u[0] - u[6], dv = u[1] - u[7], dw = u[2] - u[8];
+    double sy = u[4] + u[10], sz = u[5] + u[11], tx = k[3] * (u[3] - u[9]);
+    df[0] = k[0] * du;
+    df[1] = k[1] * dv + k[2] * sz;
+    df[2] = k[1] * dw - k[2] * sy;
+    df[3] = tx;
+    df[4] = -k[2] * dw + k[4] * u[4] + k[5] * u[10];
+    df[5] = k[2] * dv + k[4] * u[5] + k[5] * u[11];
+    df[6] = -df[0];
+    df[7] = -df[1];
+    df[8] = -df[2];
+    df[9] = -tx;
+    df[10] = -k[2] * dw + k[5] * u[4] + k[4] * u[10];
+    df[11] = k[2] * dv + k[5] * u[5] + k[4] * u[11];
 }
 
 double sbc_beam_bond_increment(sbc_beam_bond *bond, const double dxa[3], const double dtha[3], const double dxb[3],
@@ -152,16 +180,11 @@ double sbc_beam_bond_increment(sbc_beam_bond *bond, const double dxa[3], const d
 {
     const double *g[4] = {dxa, dtha, dxb, dthb};
     double ul[12], df[12], w = 0.0;
-    int b, i, j;
+    int b, i;
     for (b = 0; b < 4; ++b) /* eq. 32 */
         for (i = 0; i < 3; ++i)
             ul[3 * b + i] = dot(bond->T[i], g[b]);
-    for (i = 0; i < 12; ++i) { /* eq. 23 */
-        double s = 0.0;
-        for (j = 0; j < 12; ++j)
-            s += bond->K[i][j] * ul[j];
-        df[i] = s;
-    }
+    sbc_beam_bond_product(bond, ul, df); /* eq. 23 */
     for (i = 0; i < 12; ++i) {
         w += (bond->f[i] + 0.5 * df[i]) * ul[i];
         bond->f[i] += df[i];

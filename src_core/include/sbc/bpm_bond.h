@@ -42,9 +42,11 @@ typedef struct sbc_parallel_bond {
     double ms[3]; /* bending moment on A, N m (eq. 17) */
 } sbc_parallel_bond;
 
-/* Contact point of the bond: on the centre line, halfway across the gap
- * (x_c = xa + (ra + (L - ra - rb)/2) n), m. */
-void sbc_parallel_bond_contact(const double xa[3], double ra, const double xb[3], double rb, double xc[3]);
+/* Geometry of the bond: unit normal n (A -> B) and the contact point on the
+ * centre line, halfway across the gap (x_c = xa + (ra + (L - ra - rb)/2) n,
+ * m). Returns the length L = |xb - xa| (m). */
+double sbc_parallel_bond_geometry(const double xa[3], double ra, const double xb[3], double rb, double n[3],
+                                  double xc[3]);
 
 /* One increment, eqs. 10-11 and 15-17: the relative displacement of A
  * against B at the contact point (eq. 14 times dt),
@@ -82,18 +84,25 @@ double sbc_beam_phi(double nu, double rb, double L);
  * (du_A, dth_A, du_B, dth_B). Row-major K[12][12]. */
 void sbc_beam_stiffness(const sbc_beam_law *law, double rb, double L, double K[12][12]);
 
-/* Per-bond state: the frame T and stiffness K fixed at creation (small
+/* Per-bond state: the frame T and the stiffness fixed at creation (small
  * deformations, Sect. 3.2.3), and the accumulated local end loads f_l = K u_l
- * (eq. 24; the loads the particles apply to the beam ends). */
+ * (eq. 24; the loads the particles apply to the beam ends). K of eq. 26 has
+ * six distinct entries, kept as k[]: E A / L, 12 E I / L^3 (1 + Phi),
+ * 6 E I / L^2 (1 + Phi), G J / L, E I (4 + Phi) / L (1 + Phi),
+ * E I (2 - Phi) / L (1 + Phi); the increment multiplies by them directly
+ * (the same product as the full matrix, 24 terms instead of 144). */
 typedef struct sbc_beam_bond {
     double T[3][3];
-    double K[12][12];
+    double k[6];
     double f[12];
 } sbc_beam_bond;
 
 /* Creates the bond state between centres xa and xb with radius rb. */
 void sbc_beam_bond_init(const sbc_beam_law *law, double rb, const double xa[3], const double xb[3],
                         sbc_beam_bond *bond);
+
+/* K du_l for the local vector of eq. 25 (dl[12]), into df[12]. */
+void sbc_beam_bond_product(const sbc_beam_bond *bond, const double ul[12], double df[12]);
 
 /* One increment, eqs. 32 and 23: du_l = diag(T, T, T, T) (dxa, dtha, dxb,
  * dthb), f_l += K du_l. Returns the strain-energy increment (J), exact for

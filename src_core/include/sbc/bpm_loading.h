@@ -1,0 +1,47 @@
+/* servo_bc: the thesis' test set-ups on a bonded specimen (Sects. 4.3-4.4),
+ * run on the embedded 3D engine (bpm.h). The engine must hold the bonded
+ * specimen, its time step set.
+ *
+ * Uniaxial test (Fig. 24). End spheres: centres within zone r_p of the
+ * specimen's x faces. The left end moves along x at the loading velocity,
+ * the right end is held in x; both are free in y and z, every other sphere
+ * is free. Every sphere starts on the linear velocity ramp between the two
+ * ends, so that no load peak enters at the start (the thesis' "initial
+ * linearly ramped loading velocity").
+ *   E   = (F_x / dL) (L0 / A)                      eq. 64, the slope fitted over
+ *                                                  the second half of the run
+ *   nu  = -(dw / w0) / (dL / L0)  (and h for z)    eq. 65 as -eps_y / eps_x
+ * with L0 the distance between the centres of the two end zones (the length
+ * the bonds between them span; for the cubic lattice this gives the thesis'
+ * 3.14 GPa at every r_p), A = w0 h0 the specimen's cross-section, and w, h
+ * the distances between the mean centres of the spheres within zone r_p of
+ * the y and z faces (Fig. 26). */
+#ifndef SBC_BPM_LOADING_H
+#define SBC_BPM_LOADING_H
+
+#include "sbc/bpm.h"
+
+#include <stdio.h>
+
+typedef struct sbc_bpm_uniaxial {
+    double rp;       /* particle radius r_p, m (sets the zones) */
+    double zone;     /* end and bounding zones, in r_p (thesis: 1.5) */
+    double velocity; /* loading velocity v_l, m/s: > 0 tension, < 0 compression (thesis: 1e-5) */
+    long steps;      /* steps to run */
+    FILE *series;    /* when not NULL: step, dL, F_x, eps_y, eps_z, W_kin, W_int, W_dis, W_ext per sample */
+    long every;      /* sample interval, steps (0: 100 samples) */
+} sbc_bpm_uniaxial;
+
+typedef struct sbc_bpm_uniaxial_result {
+    double E;            /* eq. 64, Pa */
+    double nu_xy, nu_xz; /* eq. 65 */
+    double L0, A, w0, h0; /* m, m^2, m, m */
+    double force, dL;    /* F_x (N, > 0 in tension) and dL (m) at the end */
+    size_t loaded, held; /* spheres in the two end zones */
+    double balance;      /* the largest eq. 53 ratio over the samples of the second half */
+} sbc_bpm_uniaxial_result;
+
+sbc_status sbc_bpm_uniaxial_run(sbc_bpm *e, const sbc_bpm_uniaxial *test, sbc_bpm_uniaxial_result *res,
+                                sbc_error *err);
+
+#endif

@@ -1,0 +1,125 @@
+/* servo_bc: uniaxial test on a bonded specimen (thesis Sect. 4.3). */
+#include "sbc/bpm_loading.h"
+#include "sbc/bpm_packing.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* least-squares slope of y against x */
+typedef struct fit {
+    double n, sx, sy, sxx, sxy;
+} fit;
+
+static void fit_add(fit *f, double x, double y)
+{
+    f->n += 1.0;
+    f->sx += x;
+    f->sy += y;
+    f->sxx += x * x;
+    f->sxy += x * y;
+}
+
+static double fit_slope(const fit *f)
+{
+    double d = f->n * f->sxx - f->sx * f->sx;
+    return d != 0.0 ? (f->n * f->sxy - f->sx * f->sy) / d : 0.0;
+}
+
+/* mean of coordinate axis over the spheres flagged in mask */
+static double mean_coord(const sbc_bpm *e, const unsigned char *mask, unsigned char bit, int axis)
+{
+    double s = 0.0;
+    size_t i, n = 0;
+    for (i = 0; i < e->n; ++i)
+        if (mask[i] & bit) {
+            s += e->x[3 * i + (size_t)axis];
+            ++n;
+        }
+    return n ? s / (double)n : 0.0;
+}
+
+enum { LOADED = 1, HELD = 2, YLO = 4, YHI = 8, ZLO = 16, ZHI = 32 };
+
+sbc_status sbc_bpm_uniaxial_run(sbc_bpm *e, const sbc_bpm_uniaxial *test, sbc_bpm_uniaxial_result *res,
+                                sbc_error *err)
+{
+    double ext[6], reach = test->zone * test->rp, xl, xh, w0, h0;
+    unsigned char *zone;
+    fit force = {0, 0, 0, 0, 0}, wide = {0, 0, 0, 0, 0}, high = {0, 0, 0, 0, 0};
+    long t, every = test->every > 0 ? test->every : (test->steps >= 100 ? test->steps / 100 : 1);
+    size_t i;
+    sbc_status st = SBC_OK;
+    memset(res, 0, sizeof *res);
+    if (e->nb == 0)
+        return sbc_fail(err, SBC_ERR_INPUT, "uniaxial: the specimen has no bonds (bond the packing first)");
+    if (!(test->rp > 0.0) || !(test->zone > 0.0) || test->velocity == 0.0 || test->steps < 2)
+        return sbc_fail(err, SBC_ERR_INPUT,
+                        "uniaxial: r_p %g, zone %g, velocity %g, steps %ld (expected r_p > 0, zone > 0, a non-zero "
+                        "velocity, at least 2 steps)", test->rp, test->zone, test->velocity, test->steps);
+    zone = calloc(e->n, 1);
+    if (!zone)
+        return sbc_fail(err, SBC_ERR_NOMEM, "uniaxial: out of memory");
+    sbc_bpm_extent(e, ext);
+    for (i = 0; i < e->n; ++i) {
+        const double *x = &e->x[3 * i];
+        if (x[0] - ext[0] <= reach) zone[i] |= LOADED;
+        else if (ext[3] - x[0] <= reach) zone[i] |= HELD;
+        if (x[1] - ext[1] <= reach) zone[i] |= YLO;
+        if (ext[4] - x[1] <= reach) zone[i] |= YHI;
+        if (x[2] - ext[2] <= reach) zone[i] |= ZLO;
+        if (ext[5] - x[2] <= reach) zone[i] |= ZHI;
+        res->loaded += (zone[i] & LOADED) != 0;
+        res->held += (zone[i] & HELD) != 0;
+    }
+    if (!res->loaded || !res->held) {
+        free(zone);
+        return sbc_fail(err, SBC_ERR_INPUT, "uniaxial: an end zone of %g r_p holds no sphere", test->zone);
+    }
+    xl = mean_coord(e, zone, LOADED, 0);
+    xh = mean_coord(e, zone, HELD, 0);
+    res->L0 = xh - xl;
+    res->w0 = w0 = mean_coord(e, zone, YHI, 1) - mean_coord(e, zone, YLO, 1);
+    res->h0 = h0 = mean_coord(e, zone, ZHI, 2) - mean_coord(e, zone, ZLO, 2);
+    res->A = (ext[4] - ext[1]) * (ext[5] - ext[2]);
+    for (i = 0; i < e->n; ++i) { /* the velocity ramp; the loaded end moves to -x in tension */
+        double ramp = (xh - e->x[3 * i]) / res->L0;
+        e->v[3 * i] = -test->velocity * (ramp < 0.0 ? 0.0 : ramp > 1.0 ? 1.0 : ramp);
+        if (zone[i] & (LOADED | HELD)) {
+            e->fix[i] |= 1u;
+            e->vfix[6 * i] = zone[i] & LOADED ? -test->velocity : 0.0;
+        }
+    }
+    for (t = 1; t <= test->steps; ++t) {
+        if ((st = sbc_bpm_step(e, err)) != SBC_OK)
+            break;
+        if (t % every == 0 || t == test->steps) {
+            double fx = 0.0, dl = xh - mean_coord(e, zone, LOADED, 0) - res->L0;
+            double ey = (mean_coord(e, zone, YHI, 1) - mean_coord(e, zone, YLO, 1) - w0) / w0;
+            double ez = (mean_coord(e, zone, ZHI, 2) - mean_coord(e, zone, ZLO, 2) - h0) / h0;
+            sbc_bpm_energy en = sbc_bpm_energies(e);
+            for (i = 0; i < e->n; ++i)
+                if (zone[i] & LOADED)
+                    fx -= e->reaction[6 * i];
+            if (2 * t > test->steps) {
+                fit_add(&force, dl, fx);
+                fit_add(&wide, dl / res->L0, ey);
+                fit_add(&high, dl / res->L0, ez);
+                if (en.balance > res->balance)
+                    res->balance = en.balance;
+            }
+            res->force = fx;
+            res->dL = dl;
+            if (test->series)
+                fprintf(test->series, "%ld,%.10e,%.10e,%.10e,%.10e,%.6e,%.6e,%.6e,%.6e\n", t, dl, fx, ey, ez,
+                        en.kinetic, en.strain, en.dissipated, en.external);
+        }
+    }
+    free(zone);
+    if (st != SBC_OK)
+        return st;
+    res->E = fit_slope(&force) * res->L0 / res->A; /* eq. 64 */
+    res->nu_xy = -fit_slope(&wide);                /* eq. 65 */
+    res->nu_xz = -fit_slope(&high);
+    return SBC_OK;
+}
