@@ -1,6 +1,7 @@
 /* servo_bc: uniaxial test on a bonded specimen (thesis Sect. 4.3). */
 #include "sbc/bpm_loading.h"
 #include "sbc/bpm_packing.h"
+#include "sbc/bpm_stress.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -118,8 +119,124 @@ sbc_status sbc_bpm_uniaxial_run(sbc_bpm *e, const sbc_bpm_uniaxial *test, sbc_bp
     free(zone);
     if (st != SBC_OK)
         return st;
+    if ((st = sbc_bpm_rve_stress(e, NULL, (ext[3] - ext[0]) * res->A, res->sigma_rve, err)) != SBC_OK)
+        return st;
+    res->sigma_load = res->force / res->A;
     res->E = fit_slope(&force) * res->L0 / res->A; /* eq. 64 */
     res->nu_xy = -fit_slope(&wide);                /* eq. 65 */
     res->nu_xz = -fit_slope(&high);
+    return SBC_OK;
+}
+
+/* ---- three-point flexural test (thesis Sect. 4.4) ------------------------- */
+
+enum { PIN = 1, ROLLER = 2, TOP = 4, BOTTOM = 8 };
+
+/* mean downward displacement of the spheres flagged TOP or BOTTOM */
+static double mean_drop(const sbc_bpm *e, const unsigned char *zone, const double *z0)
+{
+    double s = 0.0;
+    size_t i, n = 0;
+    for (i = 0; i < e->n; ++i)
+        if (zone[i] & (TOP | BOTTOM)) {
+            s += z0[i] - e->x[3 * i + 2];
+            ++n;
+        }
+    return n ? s / (double)n : 0.0;
+}
+
+sbc_status sbc_bpm_bending_run(sbc_bpm *e, const sbc_bpm_bending *test, sbc_bpm_bending_result *res,
+                               sbc_error *err)
+{
+    double ext[6], reach = test->zone * test->rp, mid, w, h, xlo = 0.0, xhi = 0.0, xpin = 0.0, xrol = 0.0;
+    double *z0, lo_swing = 0.0, hi_swing = 0.0, fs = 10.0 / 9.0, F = test->force, Le, b, term;
+    unsigned char *zone;
+    long t, every = test->every > 0 ? test->every : (test->steps >= 100 ? test->steps / 100 : 1);
+    size_t i, npin = 0, nrol = 0, first = 1;
+    sbc_status st = SBC_OK;
+    memset(res, 0, sizeof *res);
+    if (e->nb == 0)
+        return sbc_fail(err, SBC_ERR_INPUT, "bending: the specimen has no bonds (bond the packing first)");
+    if (!(test->rp > 0.0) || !(test->zone > 0.0) || test->ramp < 1 || test->steps < test->ramp ||
+        !(test->nu > -1.0 && test->nu < 0.5))
+        return sbc_fail(err, SBC_ERR_INPUT,
+                        "bending: r_p %g, zone %g, ramp %ld, steps %ld, nu %g (expected r_p > 0, zone > 0, "
+                        "1 <= ramp <= steps, -1 < nu < 0.5)", test->rp, test->zone, test->ramp, test->steps, test->nu);
+    zone = calloc(e->n, 1);
+    z0 = malloc(e->n * sizeof *z0);
+    if (!zone || !z0) {
+        free(zone);
+        free(z0);
+        return sbc_fail(err, SBC_ERR_NOMEM, "bending: out of memory");
+    }
+    sbc_bpm_extent(e, ext);
+    mid = 0.5 * (ext[0] + ext[3]);
+    for (i = 0; i < e->n; ++i) {
+        const double *x = &e->x[3 * i];
+        int near_mid = fabs(x[0] - mid) <= reach;
+        z0[i] = x[2];
+        if (x[2] - ext[2] <= reach) {
+            if (x[0] - ext[0] <= reach) { zone[i] |= PIN; xpin += x[0]; ++npin; }
+            else if (ext[3] - x[0] <= reach) { zone[i] |= ROLLER; xrol += x[0]; ++nrol; }
+            else if (near_mid) zone[i] |= BOTTOM;
+        }
+        if (near_mid && ext[5] - x[2] <= reach) {
+            zone[i] |= TOP;
+            ++res->loaded;
+            if (first || x[0] < xlo) xlo = x[0];
+            if (first || x[0] > xhi) xhi = x[0];
+            first = 0;
+        }
+    }
+    res->supports = npin + nrol;
+    if (!npin || !nrol || !res->loaded) {
+        free(zone);
+        free(z0);
+        return sbc_fail(err, SBC_ERR_INPUT, "bending: a zone of %g r_p finds %zu pinned, %zu sliding and %zu loaded "
+                        "spheres (expected at least one of each)", test->zone, npin, nrol, res->loaded);
+    }
+    for (i = 0; i < e->n; ++i) {
+        if (zone[i] & PIN) e->fix[i] |= 1u | 2u | 4u | 8u | 32u;
+        if (zone[i] & ROLLER) e->fix[i] |= 2u | 4u | 8u | 32u;
+        e->vfix[6 * i] = e->vfix[6 * i + 1] = e->vfix[6 * i + 2] = 0.0;
+        e->vfix[6 * i + 3] = e->vfix[6 * i + 5] = 0.0;
+    }
+    res->Le = Le = xrol / (double)nrol - xpin / (double)npin;
+    res->b = b = xhi - xlo;
+    w = ext[4] - ext[1];
+    h = ext[5] - ext[2];
+    res->I = w * h * h * h / 12.0;
+    res->A = w * h;
+    for (t = 1; t <= test->steps; ++t) {
+        double ramp = t < test->ramp ? (double)t / (double)test->ramp : 1.0;
+        for (i = 0; i < e->n; ++i)
+            if (zone[i] & TOP)
+                e->fext[6 * i + 2] = -F * ramp / (double)res->loaded;
+        if ((st = sbc_bpm_step(e, err)) != SBC_OK)
+            break;
+        if (10 * t > 9 * test->steps) {
+            double d = mean_drop(e, zone, z0);
+            if (10 * t <= 9 * test->steps + 10 || d < lo_swing) lo_swing = d;
+            if (10 * t <= 9 * test->steps + 10 || d > hi_swing) hi_swing = d;
+        }
+        if (t % every == 0 || t == test->steps) {
+            sbc_bpm_energy en = sbc_bpm_energies(e);
+            res->delta = mean_drop(e, zone, z0);
+            if (t >= test->ramp && en.balance > res->balance)
+                res->balance = en.balance;
+            if (test->series)
+                fprintf(test->series, "%ld,%.10e,%.10e,%.6e,%.6e,%.6e,%.6e\n", t, F * ramp, res->delta, en.kinetic,
+                        en.strain, en.dissipated, en.external);
+        }
+    }
+    free(zone);
+    free(z0);
+    if (st != SBC_OK)
+        return st;
+    res->swing = hi_swing - lo_swing;
+    term = fs * (1.0 + test->nu) / res->A;
+    res->Ef_point = F / (2.0 * res->delta) * (Le * Le * Le / (24.0 * res->I) + Le * term); /* eq. 67 */
+    res->Ef_band = F / (2.0 * res->delta) *
+                   ((8.0 * Le * Le * Le - 4.0 * b * b * Le + b * b * b) / (192.0 * res->I) + (Le - b) * term); /* eq. 69 */
     return SBC_OK;
 }

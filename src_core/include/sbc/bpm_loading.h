@@ -15,7 +15,22 @@
  * the bonds between them span; for the cubic lattice this gives the thesis'
  * 3.14 GPa at every r_p), A = w0 h0 the specimen's cross-section, and w, h
  * the distances between the mean centres of the spheres within zone r_p of
- * the y and z faces (Fig. 26). */
+ * the y and z faces (Fig. 26). At the end, the RVE stress of the whole
+ * specimen (eq. 54) and the boundary-load stress F_x / A (Sect. 5.3.1).
+ *
+ * Three-point flexural test (Fig. 28). Supports: the spheres within zone r_p
+ * of the bottom face (z) and of an end face (x); the left ones are pinned
+ * (every degree of freedom held but the rotation about y), the right ones
+ * may also slide in x. Load: F, ramped linearly over `ramp` steps and then
+ * held, shared equally by the spheres within zone r_p of the top face whose
+ * centres lie within zone r_p of midspan. Deflection delta: the mean
+ * downward displacement of the loaded spheres and of the spheres in the
+ * same x range on the bottom face. With L_e the distance between the
+ * supports, b the x extent of the loaded centres, I = w h^3 / 12 and A = w h
+ * of the specimen's cross-section, f_s = 10/9 and nu from the uniaxial test:
+ *   E_f = F / 2 delta [L_e^3 / 24 I + L_e f_s (1 + nu) / A]          eq. 67
+ *   E_f = F / 2 delta [(8 L_e^3 - 4 b^2 L_e + b^3) / 192 I
+ *                      + f_s (L_e - b)(1 + nu) / A]                  eq. 69 */
 #ifndef SBC_BPM_LOADING_H
 #define SBC_BPM_LOADING_H
 
@@ -39,9 +54,34 @@ typedef struct sbc_bpm_uniaxial_result {
     double force, dL;    /* F_x (N, > 0 in tension) and dL (m) at the end */
     size_t loaded, held; /* spheres in the two end zones */
     double balance;      /* the largest eq. 53 ratio over the samples of the second half */
+    double sigma_rve[9]; /* eq. 54 over every sphere, V = the spheres' extent (bpm_stress.h), Pa */
+    double sigma_load;   /* F_x / A, the boundary-load stress (Tables 5-6: sigma^C_xx), Pa */
 } sbc_bpm_uniaxial_result;
 
 sbc_status sbc_bpm_uniaxial_run(sbc_bpm *e, const sbc_bpm_uniaxial *test, sbc_bpm_uniaxial_result *res,
                                 sbc_error *err);
+
+typedef struct sbc_bpm_bending {
+    double rp;    /* particle radius r_p, m */
+    double zone;  /* supports and loaded band, in r_p (thesis: 1.5) */
+    double force; /* total load F, N (thesis: 1e3) */
+    double nu;    /* Poisson's ratio for G in eqs. 67 and 69 */
+    long ramp;    /* load ramp, steps (thesis: 5000 to 40000) */
+    long steps;   /* steps in all (ramp included) */
+    FILE *series; /* when not NULL: step, F, delta, W_kin, W_int, W_dis, W_ext per sample */
+    long every;   /* sample interval, steps (0: 100 samples) */
+} sbc_bpm_bending;
+
+typedef struct sbc_bpm_bending_result {
+    double delta;            /* at the end, m */
+    double swing;            /* max - min of delta over the last tenth of the run, m */
+    double Ef_point, Ef_band; /* eqs. 67 and 69, Pa */
+    double Le, b, I, A;      /* m, m, m^4, m^2 */
+    size_t loaded, supports;
+    double balance;          /* the largest eq. 53 ratio over the samples after the ramp */
+} sbc_bpm_bending_result;
+
+sbc_status sbc_bpm_bending_run(sbc_bpm *e, const sbc_bpm_bending *test, sbc_bpm_bending_result *res,
+                               sbc_error *err);
 
 #endif
