@@ -1,6 +1,7 @@
 /* Irregular polydisperse periodic packings: jamming by box shrinking with FIRE
  * overlap minimization, then the periodic reconstruction of Sect. 4.2. */
 #include "sbc/generate.h"
+#include "fire.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -18,15 +19,6 @@ sbc_generate_def sbc_generate_def_default(void)
     d.polydispersity = 2.0;
     d.seed = 1;
     return d;
-}
-
-/* xorshift64*: deterministic on every platform */
-static double uniform(unsigned long long *s)
-{
-    *s ^= *s >> 12;
-    *s ^= *s << 25;
-    *s ^= *s >> 27;
-    return (double)((*s * 2685821657736338717ULL) >> 11) / 9007199254740992.0;
 }
 
 static double wrap(double a, double L) { return a - L * floor(a / L); }
@@ -95,44 +87,27 @@ static double forces(box *b)
     return e;
 }
 
-/* FIRE minimization (Bitzek et al. 2006) of the overlap energy; returns it. */
+static double forces_cb(void *ctx) { return forces(ctx); }
+
+static void wrap_cb(void *ctx, size_t k)
+{
+    box *b = ctx;
+    b->x[k] = wrap(b->x[k], b->L);
+}
+
+/* FIRE minimization of the overlap energy; returns it. */
 static double relax(box *b, double ftol)
 {
-    double dt = 0.1, alpha = 0.1, e = forces(b);
-    int k, it, npos = 0, n2 = 2 * b->n;
-    memset(b->v, 0, sizeof(double) * (size_t)n2);
-    for (it = 0; it < 20000; ++it) {
-        double p = 0.0, vn = 0.0, fnrm = 0.0, fmax = 0.0;
-        for (k = 0; k < n2; ++k) {
-            p += b->f[k] * b->v[k];
-            vn += b->v[k] * b->v[k];
-            fnrm += b->f[k] * b->f[k];
-            if (fabs(b->f[k]) > fmax) fmax = fabs(b->f[k]);
-        }
-        if (fmax < ftol)
-            break;
-        vn = sqrt(vn);
-        fnrm = sqrt(fnrm);
-        for (k = 0; k < n2; ++k)
-            b->v[k] = (1.0 - alpha) * b->v[k] + alpha * vn * b->f[k] / fnrm;
-        if (p > 0.0) {
-            if (++npos > 5) {
-                dt = fmin(1.1 * dt, 1.0);
-                alpha *= 0.99;
-            }
-        } else {
-            npos = 0;
-            dt *= 0.5;
-            alpha = 0.1;
-            memset(b->v, 0, sizeof(double) * (size_t)n2);
-        }
-        for (k = 0; k < n2; ++k) {
-            b->v[k] += dt * b->f[k];
-            b->x[k] = wrap(b->x[k] + dt * b->v[k], b->L);
-        }
-        e = forces(b);
-    }
-    return e;
+    sbc_fire_problem p;
+    p.n = 2 * (size_t)b->n;
+    p.x = b->x;
+    p.v = b->v;
+    p.f = b->f;
+    p.forces = forces_cb;
+    p.place = wrap_cb;
+    p.ctx = b;
+    p.dt_max = 1.0;
+    return sbc_fire_minimize(&p, ftol, 20000);
 }
 
 static void scale_box(box *b, double L)
@@ -171,13 +146,13 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     }
     b.rmax = 0.0;
     for (k = 0; k < n; ++k) {
-        b.r[k] = def->r_min * (1.0 + (def->polydispersity - 1.0) * uniform(&s));
+        b.r[k] = def->r_min * (1.0 + (def->polydispersity - 1.0) * sbc_uniform(&s));
         area += M_PI * b.r[k] * b.r[k];
         if (b.r[k] > b.rmax) b.rmax = b.r[k];
     }
     b.L = sqrt(area / 0.5); /* start at a packing fraction of 0.5 */
     for (k = 0; k < 2 * n; ++k)
-        b.x[k] = b.L * uniform(&s);
+        b.x[k] = b.L * sbc_uniform(&s);
     ecut = 0.5 * n * jam * jam;
     relax(&b, ftol);
     memcpy(keep.x, b.x, sizeof(double) * 2 * (size_t)n);
