@@ -10,6 +10,7 @@
 #include "sbc/bpm_loading.h"
 #include "sbc/bpm_packing.h"
 #include "sbc/bpm_stress.h"
+#include "sbc/script.h"
 
 #include <math.h>
 #include <string.h>
@@ -510,6 +511,61 @@ static void test_bpm_input(void)
     sbc_bpm_destroy(e);
 }
 
+/* The runner's 3D grammar: a uniaxial run prints eq. 64's modulus, writes its
+ * series and the VTK file; bad lines name the line, command, keyword, value. */
+static void test_bpm_runner(void)
+{
+    static const struct {
+        const char *text, *message;
+    } bad[] = {
+        {"dimension 3\npacking cubic radius 12.5e-3 box 1 2\n", "bad:2: packing: box needs three lengths"},
+        {"dimension 3\npacking cubic radius -1\n", "packing: radius -1 is not positive"},
+        {"dimension 3\npacking sc radius 1e-2\n", "kind 'sc' is not known (expected cubic, hcp or random)"},
+        {"dimension 3\npacking cubic\n", "keyword 'radius' is missing"},
+        {"dimension 3\nbond spring\n", "bond: model 'spring' is not known"},
+        {"dimension 3\nbond beam nu\n", "bond: keyword 'nu' needs a value"},
+        {"dimension 3\nbond beam colour 3\n", "bond: unknown keyword 'colour' (expected E, nu, ratio, alpha, damping"},
+        {"dimension 3\ntest uniaxial steps 10\n", "test: uniaxial needs 'velocity V' and 'steps N'"},
+        {"dimension 3\ntest bending force 1e3 ramp 10 steps 2.5\n", "test: steps 2.5 (expected a whole number"},
+        {"dimension 3\ntest uniaxial velocity 0 steps 10\n", "test: velocity 0"},
+        {"dimension 3\ntimestep critical\n", "expected 'timestep DT' (s) or 'timestep critical F'"},
+        {"dimension 3\ndensity 925 heavy\n", "density: unknown word 'heavy'"},
+        {"dimension 3\nservo_bc D F 1 0 0 1\n", "unknown command 'servo_bc' after 'dimension 3'"},
+        {"dimension 3\npacking cubic radius 12.5e-3\nbond beam\ndensity 925\ntimestep 1e-6\nrun\n", "run: no test"},
+        {"dimension 3\npacking cubic radius 12.5e-3\nbond beam nu 0.5\ndensity 925\ntimestep 1e-6\n"
+         "test uniaxial velocity 1e-5 steps 10\nrun\n", "bad:3: bond: nu 0.5 (expected -1 < nu < 0.5)"},
+        {"dimension 3\nbond beam damping -1\n", "bond: damping -1 (expected a damping ratio >= 0"},
+        {"dimension 4\n", "dimension: value '4' is not supported (expected 2, or 3"},
+    };
+    char script[1600], series[600], vtk[600], log_path[600];
+    sbc_error err;
+    FILE *log;
+    size_t k;
+    for (k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        int ok = sbc_script_run_string(bad[k].text, "bad", NULL, &err) == SBC_ERR_INPUT &&
+                 strstr(err.message, bad[k].message) != NULL;
+        if (!ok)
+            printf("  bpm runner case %zu: %s\n", k, err.message);
+        CHECK(ok);
+    }
+    snprintf(series, sizeof series, "%s/bpm_uniaxial.csv", test_tmpdir);
+    snprintf(vtk, sizeof vtk, "%s/bpm", test_tmpdir);
+    snprintf(log_path, sizeof log_path, "%s/bpm_uniaxial.log", test_tmpdir);
+    snprintf(script, sizeof script,
+             "dimension 3\npacking cubic radius 12.5e-3\nbond parallel E 4e9 ratio 4.2\ndensity 925 scaled\n"
+             "timestep critical 0.6\ntest uniaxial velocity -1e-5 steps 2000 file %s\nvtk %s\nrun\n", series, vtk);
+    log = fopen(log_path, "w");
+    CHECK(log && sbc_script_run_string(script, "uniaxial", log, &err) == SBC_OK);
+    if (log)
+        fclose(log);
+    CHECK(file_contains(log_path, "160 spheres of r_p 0.0125 m, porosity 0.4764, 384 bonds (C_n 4.800)"));
+    CHECK(file_contains(log_path, "uniaxial: E 3.14159e+09 Pa (eq. 64)"));
+    CHECK(file_contains(series, "step,dL,Fx,eps_y,eps_z,W_kin,W_int,W_dis,W_ext"));
+    snprintf(vtk, sizeof vtk, "%s/bpm_spheres.vtk", test_tmpdir);
+    CHECK(file_contains(vtk, "POINTS 160 double"));
+    CHECK(file_contains(vtk, "TENSORS stress double"));
+}
+
 void test_bpm(void)
 {
     test_frame3d();
@@ -523,4 +579,5 @@ void test_bpm(void)
     test_rve_stress();
     test_bending();
     test_bpm_input();
+    test_bpm_runner();
 }

@@ -22,7 +22,7 @@ typedef struct bad_case {
 
 static const bad_case cases[] = {
     {"dimension 2\nfoo 1\n", {"bad:2:", "unknown command 'foo'", "expected dimension"}},
-    {"dimension 3\n", {"bad:1:", "dimension", "'3'"}},
+    {"dimension 5\n", {"bad:1:", "dimension", "'5'"}},
     {"lattice square 5 5 spacing 2e-3\n", {"bad:1:", "lattice: missing values", "radius R"}},
     {"density 2e3 5\n", {"bad:1:", "extra value '5'", "density RHO"}},
     {"timestep abc\n", {"bad:1:", "'abc' is not a number", "timestep"}},

@@ -84,8 +84,10 @@ sbc_status sbc_bpm_uniaxial_run(sbc_bpm *e, const sbc_bpm_uniaxial *test, sbc_bp
     res->h0 = h0 = mean_coord(e, zone, ZHI, 2) - mean_coord(e, zone, ZLO, 2);
     res->A = (ext[4] - ext[1]) * (ext[5] - ext[2]);
     for (i = 0; i < e->n; ++i) { /* the velocity ramp; the loaded end moves to -x in tension */
-        double ramp = (xh - e->x[3 * i]) / res->L0;
+        double ramp = (xh - e->x[3 * i]) / res->L0, v0 = e->v[3 * i];
         e->v[3 * i] = -test->velocity * (ramp < 0.0 ? 0.0 : ramp > 1.0 ? 1.0 : ramp);
+        /* the ramp's kinetic energy is given to the specimen: external work (eq. 52) */
+        e->w_ext += 0.5 * e->m[i] * (e->v[3 * i] * e->v[3 * i] - v0 * v0);
         if (zone[i] & (LOADED | HELD)) {
             e->fix[i] |= 1u;
             e->vfix[6 * i] = zone[i] & LOADED ? -test->velocity : 0.0;

@@ -471,11 +471,15 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
     const char *c = w[0];
     sbc_status st;
     if (strcmp(c, "dimension") == 0) {
-        if ((st = sbc_script_expect_count(nw, w, 2, "dimension 2", err)) != SBC_OK) return st;
+        if ((st = sbc_script_expect_count(nw, w, 2, "dimension 2|3", err)) != SBC_OK) return st;
+        if (strcmp(w[1], "3") == 0) return sbc_script_bpm_begin(s, err);
         if (strcmp(w[1], "2") != 0)
-            return sbc_fail(err, SBC_ERR_INPUT, "dimension: value '%s' is not supported (expected 2)", w[1]);
+            return sbc_fail(err, SBC_ERR_INPUT, "dimension: value '%s' is not supported (expected 2, or 3 for the bonded "
+                            "particle model)", w[1]);
+        sbc_script_bpm_free(s);
         return SBC_OK;
     }
+    if (s->bpm) return sbc_script_bpm(s, nw, w, err);
     if (strcmp(c, "lattice") == 0) return cmd_lattice(s, nw, w, err);
     if (strcmp(c, "read_packing") == 0) {
         if ((st = sbc_script_expect_count(nw, w, 2, "read_packing FILE", err)) != SBC_OK) return st;
@@ -561,6 +565,7 @@ static sbc_status run_text(const char *text, const char *name, FILE *log, const 
         p = e ? e + 1 : p + len;
     }
     sbc_packing_free(&s.packing);
+    sbc_script_bpm_free(&s);
     return st;
 }
 

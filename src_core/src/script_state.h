@@ -30,6 +30,7 @@ typedef struct script {
     char plot[SBC_NAME_LEN];
     char servo_words[2048]; /* the servo_bc words without 'file NAME' */
     const char *decks_dir;  /* --decks: 'run' writes the hosts' inputs here instead */
+    struct bpm_script *bpm; /* after 'dimension 3': the 3D bonded particle model (script_bpm.c) */
 } script;
 
 /* "cmd: missing values / unexpected extra value" unless nw == want. */
@@ -46,6 +47,12 @@ sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
 /* The packing in format text, lammps, liggghts or yade, the frame flagged. */
 sbc_status sbc_script_write_packing_as(script *s, const char *format, const char *path, sbc_error *err);
 sbc_status sbc_script_rose(script *s, int nw, char **w, sbc_error *err);
+
+/* The 3D commands (script_bpm.c): 'dimension 3' begins them, every later
+ * command goes to sbc_script_bpm. */
+sbc_status sbc_script_bpm_begin(script *s, sbc_error *err);
+sbc_status sbc_script_bpm(script *s, int nw, char **w, sbc_error *err);
+void sbc_script_bpm_free(script *s);
 
 /* The case for every host (script_decks.c): in dir, the packing (packing.txt,
  * packing.lammps.data, packing.liggghts.data, packing.yade) and embedded.sbc,
