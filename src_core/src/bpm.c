@@ -71,6 +71,8 @@ void sbc_bpm_destroy(sbc_bpm *e)
     free(e->fdamp_prev);
     free(e->coordination);
     free(e->bonds);
+    free(e->parallel);
+    free(e->beam);
     free(e);
 }
 
@@ -135,31 +137,36 @@ static double bond_radius(const sbc_bpm *e, size_t a, size_t b)
 }
 
 /* axial stiffness of a bond, N/m (eq. 36) */
-static double bond_axial_stiffness(const sbc_bpm *e, const sbc_bpm_bond *bd)
+static double bond_axial_stiffness(const sbc_bpm *e, size_t k)
 {
-    double rb = bond_radius(e, bd->a, bd->b), area = sbc_bond_area(rb);
     if (e->set.model == SBC_BOND_PARALLEL)
-        return e->set.parallel.kn * area;
-    return bd->s.beam.k[0];
+        return e->set.parallel.kn * sbc_bond_area(e->parallel[k].rb);
+    return e->beam[k].k[0];
 }
 
 static sbc_status add_bond(sbc_bpm *e, size_t a, size_t b, sbc_error *err)
 {
     sbc_bpm_bond *bd;
+    int parallel = e->set.model == SBC_BOND_PARALLEL;
     if (e->nb == e->bcap) {
         size_t cap = e->bcap ? 2 * e->bcap : 256;
-        if (!grow((void **)&e->bonds, cap, sizeof *e->bonds))
+        if (!grow((void **)&e->bonds, cap, sizeof *e->bonds) ||
+            !(parallel ? grow((void **)&e->parallel, cap, sizeof *e->parallel)
+                       : grow((void **)&e->beam, cap, sizeof *e->beam)))
             return sbc_fail(err, SBC_ERR_NOMEM, "out of memory for %zu bonds", cap);
         e->bcap = cap;
     }
-    bd = &e->bonds[e->nb++];
+    bd = &e->bonds[e->nb];
     memset(bd, 0, sizeof *bd);
     bd->a = a;
     bd->b = b;
-    if (e->set.model == SBC_BOND_PARALLEL)
-        bd->s.parallel.rb = bond_radius(e, a, b);
-    else
-        sbc_beam_bond_init(&e->set.beam, bond_radius(e, a, b), &e->x[3 * a], &e->x[3 * b], &bd->s.beam);
+    if (parallel) {
+        memset(&e->parallel[e->nb], 0, sizeof *e->parallel);
+        e->parallel[e->nb].rb = bond_radius(e, a, b);
+    } else {
+        sbc_beam_bond_init(&e->set.beam, bond_radius(e, a, b), &e->x[3 * a], &e->x[3 * b], &e->beam[e->nb]);
+    }
+    ++e->nb;
     ++e->coordination[a];
     ++e->coordination[b];
     return SBC_OK;
@@ -253,7 +260,7 @@ sbc_status sbc_bpm_bond_touching(sbc_bpm *e, sbc_error *err)
     for (k = 0; k < e->nb; ++k) { /* eq. 37 */
         sbc_bpm_bond *bd = &e->bonds[k];
         double cn = 0.5 * (e->coordination[bd->a] + e->coordination[bd->b]);
-        bd->c = sbc_bond_damping(e->set.xi, bond_axial_stiffness(e, bd), e->m[bd->a], e->m[bd->b], cn);
+        bd->c = sbc_bond_damping(e->set.xi, bond_axial_stiffness(e, k), e->m[bd->a], e->m[bd->b], cn);
     }
     return SBC_OK;
 }
@@ -266,7 +273,7 @@ double sbc_bpm_critical_dt(const sbc_bpm *e)
         if (i == 0 || e->m[i] < mmin)
             mmin = e->m[i];
     for (i = 0; i < e->nb; ++i) {
-        double k = bond_axial_stiffness(e, &e->bonds[i]);
+        double k = bond_axial_stiffness(e, i);
         if (k > kmax)
             kmax = k;
     }
@@ -299,8 +306,8 @@ static void bond_loads(sbc_bpm *e, double *load)
             dtb[q] = dt * e->w[3 * b + q];
         }
         if (e->set.model == SBC_BOND_BEAM) {
-            e->w_strain_beam += sbc_beam_bond_increment(&bd->s.beam, dxa, dta, dxb, dtb);
-            sbc_beam_bond_apply(&bd->s.beam, &load[6 * a], &load[6 * a + 3], &load[6 * b], &load[6 * b + 3]);
+            e->w_strain_beam += sbc_beam_bond_increment(&e->beam[k], dxa, dta, dxb, dtb);
+            sbc_beam_bond_apply(&e->beam[k], &load[6 * a], &load[6 * a + 3], &load[6 * b], &load[6 * b + 3]);
         } else {
             double xc[3], n[3], ra_[3], rb_[3], wa[3], wb[3], du[3], dth[3];
             sbc_parallel_bond_geometry(xa, e->r[a], xb, e->r[b], n, xc);
@@ -314,8 +321,8 @@ static void bond_loads(sbc_bpm *e, double *load)
                 du[q] = (dxa[q] + wa[q]) - (dxb[q] + wb[q]);
                 dth[q] = dta[q] - dtb[q]; /* eq. 15 */
             }
-            sbc_parallel_bond_increment(&e->set.parallel, &bd->s.parallel, n, du, dth);
-            sbc_parallel_bond_apply(&bd->s.parallel, xa, xb, xc, &load[6 * a], &load[6 * a + 3], &load[6 * b],
+            sbc_parallel_bond_increment(&e->set.parallel, &e->parallel[k], n, du, dth);
+            sbc_parallel_bond_apply(&e->parallel[k], xa, xb, xc, &load[6 * a], &load[6 * a + 3], &load[6 * b],
                                     &load[6 * b + 3]);
         }
     }
@@ -404,7 +411,7 @@ sbc_bpm_energy sbc_bpm_energies(const sbc_bpm *e)
     } else {
         en.strain = 0.0;
         for (k = 0; k < e->nb; ++k)
-            en.strain += sbc_parallel_bond_energy(&e->set.parallel, &e->bonds[k].s.parallel);
+            en.strain += sbc_parallel_bond_energy(&e->set.parallel, &e->parallel[k]);
     }
     big = fabs(en.kinetic);
     if (fabs(en.strain) > big) big = fabs(en.strain);

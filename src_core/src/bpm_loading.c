@@ -151,7 +151,8 @@ sbc_status sbc_bpm_bending_run(sbc_bpm *e, const sbc_bpm_bending *test, sbc_bpm_
                                sbc_error *err)
 {
     double ext[6], reach = test->zone * test->rp, mid, w, h, xlo = 0.0, xhi = 0.0, xpin = 0.0, xrol = 0.0;
-    double *z0, lo_swing = 0.0, hi_swing = 0.0, fs = 10.0 / 9.0, F = test->force, Le, b, term;
+    double *z0, lo_swing = 0.0, hi_swing = 0.0, sum_tail = 0.0, fs = 10.0 / 9.0, F = test->force, Le, b, term;
+    long tail = 0;
     unsigned char *zone;
     long t, every = test->every > 0 ? test->every : (test->steps >= 100 ? test->steps / 100 : 1);
     size_t i, npin = 0, nrol = 0, first = 1;
@@ -216,18 +217,20 @@ sbc_status sbc_bpm_bending_run(sbc_bpm *e, const sbc_bpm_bending *test, sbc_bpm_
                 e->fext[6 * i + 2] = -F * ramp / (double)res->loaded;
         if ((st = sbc_bpm_step(e, err)) != SBC_OK)
             break;
-        if (10 * t > 9 * test->steps) {
+        if (10 * t > 9 * test->steps) { /* the last tenth: mean and swing */
             double d = mean_drop(e, zone, z0);
-            if (10 * t <= 9 * test->steps + 10 || d < lo_swing) lo_swing = d;
-            if (10 * t <= 9 * test->steps + 10 || d > hi_swing) hi_swing = d;
+            if (tail == 0 || d < lo_swing) lo_swing = d;
+            if (tail == 0 || d > hi_swing) hi_swing = d;
+            sum_tail += d;
+            ++tail;
         }
         if (t % every == 0 || t == test->steps) {
             sbc_bpm_energy en = sbc_bpm_energies(e);
-            res->delta = mean_drop(e, zone, z0);
+            double d = mean_drop(e, zone, z0);
             if (t >= test->ramp && en.balance > res->balance)
                 res->balance = en.balance;
             if (test->series)
-                fprintf(test->series, "%ld,%.10e,%.10e,%.6e,%.6e,%.6e,%.6e\n", t, F * ramp, res->delta, en.kinetic,
+                fprintf(test->series, "%ld,%.10e,%.10e,%.6e,%.6e,%.6e,%.6e\n", t, F * ramp, d, en.kinetic,
                         en.strain, en.dissipated, en.external);
         }
     }
@@ -235,6 +238,7 @@ sbc_status sbc_bpm_bending_run(sbc_bpm *e, const sbc_bpm_bending *test, sbc_bpm_
     free(z0);
     if (st != SBC_OK)
         return st;
+    res->delta = sum_tail / (double)tail;
     res->swing = hi_swing - lo_swing;
     term = fs * (1.0 + test->nu) / res->A;
     res->Ef_point = F / (2.0 * res->delta) * (Le * Le * Le / (24.0 * res->I) + Le * term); /* eq. 67 */

@@ -32,9 +32,9 @@ sbc_status sbc_bpm_particle_stress(const sbc_bpm *e, double *sigma, sbc_error *e
         double arm_a[3], arm_b[3];
         sbc_parallel_bond_geometry(xa, e->r[a], xb, e->r[b], n, xc);
         if (e->set.model == SBC_BOND_BEAM)
-            sbc_beam_bond_apply(&bd->s.beam, fa, ma, fb, mb);
+            sbc_beam_bond_apply(&e->beam[k], fa, ma, fb, mb);
         else
-            sbc_parallel_bond_apply(&bd->s.parallel, xa, xb, xc, fa, ma, fb, mb);
+            sbc_parallel_bond_apply(&e->parallel[k], xa, xb, xc, fa, ma, fb, mb);
         for (q = 0; q < 3; ++q) {
             arm_a[q] = xc[q] - xa[q];
             arm_b[q] = xc[q] - xb[q];

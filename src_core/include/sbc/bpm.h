@@ -42,10 +42,6 @@ typedef struct sbc_bpm_settings {
 typedef struct sbc_bpm_bond {
     size_t a, b;
     double c; /* dashpot coefficient, N s/m (eq. 37) */
-    union {
-        sbc_parallel_bond parallel;
-        sbc_beam_bond beam;
-    } s;
 } sbc_bpm_bond;
 
 typedef struct sbc_bpm_energy {
@@ -71,6 +67,8 @@ typedef struct sbc_bpm {
     unsigned *coordination; /* bonds per sphere */
     size_t nb, bcap;
     sbc_bpm_bond *bonds;
+    sbc_parallel_bond *parallel; /* bond k's state, parallel bond model (else NULL) */
+    sbc_beam_bond *beam;         /* bond k's state, beam model (else NULL) */
     sbc_bpm_settings set;
     double dt;
     long step;

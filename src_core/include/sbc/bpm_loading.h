@@ -25,7 +25,8 @@
  * held, shared equally by the spheres within zone r_p of the top face whose
  * centres lie within zone r_p of midspan. Deflection delta: the mean
  * downward displacement of the loaded spheres and of the spheres in the
- * same x range on the bottom face. With L_e the distance between the
+ * same x range on the bottom face, averaged over the last tenth of the run
+ * (as the thesis does at 2.5 mm, where a vibration of 0.8 % remains). With L_e the distance between the
  * supports, b the x extent of the loaded centres, I = w h^3 / 12 and A = w h
  * of the specimen's cross-section, f_s = 10/9 and nu from the uniaxial test:
  *   E_f = F / 2 delta [L_e^3 / 24 I + L_e f_s (1 + nu) / A]          eq. 67
@@ -73,8 +74,8 @@ typedef struct sbc_bpm_bending {
 } sbc_bpm_bending;
 
 typedef struct sbc_bpm_bending_result {
-    double delta;            /* at the end, m */
-    double swing;            /* max - min of delta over the last tenth of the run, m */
+    double delta;            /* mean over the last tenth of the run (the vibration averaged out), m */
+    double swing;            /* max - min of delta over that tenth, m */
     double Ef_point, Ef_band; /* eqs. 67 and 69, Pa */
     double Le, b, I, A;      /* m, m, m^4, m^2 */
     size_t loaded, supports;
