@@ -490,6 +490,92 @@ static void test_bending(void)
     sbc_bpm_destroy(e);
 }
 
+/* Optional failure (bpm_bond.h): two bonded spheres (r_p = 5 mm, parallel
+ * bond of Table 3), B pulled away at constant speed: the bond carries
+ * tension up to the strength and breaks at the first step past it (within one
+ * step's force increment); apart, no force; pushed back into overlap, the
+ * pair is a frictional contact with normal force kn dn; the energy the bond
+ * held counts as dissipated, so eq. 53 still balances. Twisting alone breaks
+ * the bond at M_t,u. Without a strength, nothing breaks. */
+static sbc_bpm *pair(sbc_bond_model model, double tension, double twisting)
+{
+    sbc_bpm_settings s = sbc_bpm_settings_default();
+    sbc_bpm *e = NULL;
+    sbc_error err;
+    double xa[3] = {0, 0, 0}, xb[3] = {1e-2, 0, 0};
+    s.model = model;
+    s.parallel = sbc_bpm_parallel_law(EB, 5e-3, 4.2);
+    s.strength.tension = tension;
+    s.strength.twisting = twisting;
+    s.mu = 0.5;
+    if (sbc_bpm_create(&s, &e, &err) != SBC_OK)
+        return NULL;
+    sbc_bpm_add(e, xa, 5e-3, 925.0, NULL, &err);
+    sbc_bpm_add(e, xb, 5e-3, 925.0, NULL, &err);
+    sbc_bpm_bond_touching(e, &err);
+    e->fix[0] = 63;
+    e->fix[1] = 63;
+    e->dt = 0.2 * sbc_bpm_critical_dt(e);
+    return e;
+}
+
+static void test_failure(void)
+{
+    sbc_error err;
+    sbc_bpm *e = pair(SBC_BOND_PARALLEL, 100.0, 0.0);
+    double k, v = 1e-3, step_force, peak = 0.0;
+    long t, broke_at = -1;
+    if (!e) {
+        CHECK(e != NULL);
+        return;
+    }
+    k = e->set.parallel.kn * sbc_bond_area(5e-3);
+    step_force = k * v * e->dt;
+    e->vfix[6 + 0] = v; /* B moves away */
+    for (t = 1; t <= 100000 && broke_at < 0; ++t) {
+        sbc_bpm_step(e, &err);
+        peak = fmax(peak, e->reaction[6]); /* the pull that holds B back */
+        if (e->nbroken) broke_at = t;
+    }
+    CHECK(broke_at > 0);
+    CHECK(peak <= 100.0 && peak > 100.0 - 1.01 * step_force);
+    CHECK(sbc_bpm_energies(e).balance < 1e-3); /* the breaking step's half increment: 5e-5 */
+    CHECK(sbc_bpm_energies(e).dissipated > 0.9 * 0.5 * 100.0 * 100.0 / k);
+    for (t = 0; t < 10; ++t)
+        sbc_bpm_step(e, &err);
+    CHECK_ABS(e->reaction[6], 0.0, 1e-12); /* apart: no force */
+    e->vfix[6] = -v;                         /* back, into overlap */
+    while (e->x[3] > 1e-2 - 1e-6)
+        sbc_bpm_step(e, &err);
+    sbc_bpm_step(e, &err);
+    CHECK(e->reaction[6] < 0.0); /* pushed back by the contact */
+    CHECK_REL(-e->reaction[6], k * (1e-2 - e->x[3]), 2e-2);
+    CHECK(sbc_bpm_energies(e).balance < 1e-3);
+    sbc_bpm_destroy(e);
+
+    e = pair(SBC_BOND_BEAM, 1e9, 2.0); /* twisting alone */
+    peak = 0.0;
+    broke_at = -1;
+    e->vfix[6 + 3] = 10.0; /* B spins about the bond axis */
+    for (t = 1; t <= 100000 && broke_at < 0; ++t) {
+        sbc_bpm_step(e, &err);
+        peak = fmax(peak, fabs(e->reaction[6 + 3]));
+        if (e->nbroken) broke_at = t;
+    }
+    CHECK(broke_at > 0);
+    CHECK(peak <= 2.0 && peak > 2.0 * 0.99);
+    CHECK(sbc_bpm_energies(e).balance < 1e-3); /* the breaking step's half increment: 5e-5 */
+    sbc_bpm_destroy(e);
+
+    e = pair(SBC_BOND_PARALLEL, 0.0, 0.0); /* no strength: no failure */
+    e->vfix[6] = v;
+    for (t = 0; t < 20000; ++t)
+        sbc_bpm_step(e, &err);
+    CHECK(e->nbroken == 0 && e->broken == NULL);
+    CHECK(e->reaction[6] > 100.0);
+    sbc_bpm_destroy(e);
+}
+
 /* Bad input is refused with a message. */
 static void test_bpm_input(void)
 {
@@ -535,6 +621,9 @@ static void test_bpm_runner(void)
         {"dimension 3\npacking cubic radius 12.5e-3\nbond beam nu 0.5\ndensity 925\ntimestep 1e-6\n"
          "test uniaxial velocity 1e-5 steps 10\nrun\n", "bad:3: bond: nu 0.5 (expected -1 < nu < 0.5)"},
         {"dimension 3\nbond beam damping -1\n", "bond: damping -1 (expected a damping ratio >= 0"},
+        {"dimension 3\nbond beam strength 1 2 3\n", "bond: strength needs four values"},
+        {"dimension 3\nbond beam strength 0 2 3 4\n", "bond: strength value '0' (expected a tension > 0"},
+        {"dimension 3\nbond beam strength 1 -2 3 4\n", "bond: strength value '-2'"},
         {"dimension 4\n", "dimension: value '4' is not supported (expected 2, or 3"},
     };
     char script[1600], series[600], vtk[600], log_path[600];
@@ -578,6 +667,7 @@ void test_bpm(void)
     test_random_packing();
     test_rve_stress();
     test_bending();
+    test_failure();
     test_bpm_input();
     test_bpm_runner();
 }

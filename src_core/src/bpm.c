@@ -34,6 +34,10 @@ sbc_status sbc_bpm_create(const sbc_bpm_settings *set, sbc_bpm **out, sbc_error 
     if (set->alpha <= 0.0 || set->alpha > 1.0)
         return sbc_fail(err, SBC_ERR_INPUT, "bond radius multiplier %g is out of range (expected 0 < alpha <= 1)",
                         set->alpha);
+    if (set->strength.tension > 0.0 && (set->strength.shear < 0.0 || set->strength.bending < 0.0 ||
+                                        set->strength.twisting < 0.0 || set->mu < 0.0))
+        return sbc_fail(err, SBC_ERR_INPUT, "bond strength: shear %g, bending %g, twisting %g, friction %g (expected "
+                        "values >= 0)", set->strength.shear, set->strength.bending, set->strength.twisting, set->mu);
     if (set->xi < 0.0)
         return sbc_fail(err, SBC_ERR_INPUT, "damping ratio %g is negative", set->xi);
     if (set->model == SBC_BOND_BEAM && (set->beam.E <= 0.0 || set->beam.nu <= -1.0 || set->beam.nu >= 0.5))
@@ -73,6 +77,8 @@ void sbc_bpm_destroy(sbc_bpm *e)
     free(e->bonds);
     free(e->parallel);
     free(e->beam);
+    free(e->broken);
+    free(e->contact);
     free(e);
 }
 
@@ -152,12 +158,18 @@ static sbc_status add_bond(sbc_bpm *e, size_t a, size_t b, sbc_error *err)
         size_t cap = e->bcap ? 2 * e->bcap : 256;
         if (!grow((void **)&e->bonds, cap, sizeof *e->bonds) ||
             !(parallel ? grow((void **)&e->parallel, cap, sizeof *e->parallel)
-                       : grow((void **)&e->beam, cap, sizeof *e->beam)))
+                       : grow((void **)&e->beam, cap, sizeof *e->beam)) ||
+            (e->set.strength.tension > 0.0 && (!grow((void **)&e->broken, cap, 1) ||
+                                               !grow((void **)&e->contact, cap, sizeof *e->contact))))
             return sbc_fail(err, SBC_ERR_NOMEM, "out of memory for %zu bonds", cap);
         e->bcap = cap;
     }
     bd = &e->bonds[e->nb];
     memset(bd, 0, sizeof *bd);
+    if (e->broken) {
+        e->broken[e->nb] = 0;
+        memset(&e->contact[e->nb], 0, sizeof *e->contact);
+    }
     bd->a = a;
     bd->b = b;
     if (parallel) {
@@ -287,44 +299,104 @@ static void cross(const double a[3], const double b[3], double c[3])
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* contact law of bond k once broken */
+static sbc_friction_law broken_law(const sbc_bpm *e, size_t k)
+{
+    sbc_friction_law law;
+    law.kn = bond_axial_stiffness(e, k);
+    law.ks = e->set.model == SBC_BOND_PARALLEL ? law.kn * e->set.parallel.ks / e->set.parallel.kn
+                                               : law.kn / (2.0 * (1.0 + e->set.beam.nu));
+    law.mu = e->set.mu;
+    return law;
+}
+
+/* strain energy bond k holds (intact), J */
+static double bond_energy(const sbc_bpm *e, size_t k)
+{
+    return e->set.model == SBC_BOND_BEAM ? e->beam[k].w : sbc_parallel_bond_energy(&e->set.parallel, &e->parallel[k]);
+}
+
+/* bond k fails: its energy is dissipated, its loads vanish */
+static void break_bond(sbc_bpm *e, size_t k)
+{
+    e->w_fracture += bond_energy(e, k);
+    if (e->set.model == SBC_BOND_BEAM) {
+        memset(e->beam[k].f, 0, sizeof e->beam[k].f);
+        e->beam[k].w = 0.0;
+    } else {
+        double rb = e->parallel[k].rb;
+        memset(&e->parallel[k], 0, sizeof e->parallel[k]);
+        e->parallel[k].rb = rb;
+    }
+    e->broken[k] = 1;
+    memset(&e->contact[k], 0, sizeof e->contact[k]);
+    ++e->nbroken;
+}
+
 /* Bond loads at t from the increments dt v(t - dt/2), eqs. 10-34; adds the
  * forces to load (6 per sphere). */
 static void bond_loads(sbc_bpm *e, double *load)
 {
     double dt = e->dt;
     size_t k;
+    int failure = e->set.strength.tension > 0.0;
     for (k = 0; k < e->nb; ++k) {
         sbc_bpm_bond *bd = &e->bonds[k];
         size_t a = bd->a, b = bd->b;
         const double *xa = &e->x[3 * a], *xb = &e->x[3 * b];
-        double dxa[3], dta[3], dxb[3], dtb[3];
-        int q;
+        double dxa[3], dta[3], dxb[3], dtb[3], xc[3], n[3], ra_[3], rb_[3], wa[3], wb[3], du[3], dth[3], L = 0.0;
+        double *fa = &load[6 * a], *ma = &load[6 * a + 3], *fb = &load[6 * b], *mb = &load[6 * b + 3];
+        int q, beam = e->set.model == SBC_BOND_BEAM, broken = failure && e->broken[k];
         for (q = 0; q < 3; ++q) {
             dxa[q] = dt * e->v[3 * a + q];
             dta[q] = dt * e->w[3 * a + q];
             dxb[q] = dt * e->v[3 * b + q];
             dtb[q] = dt * e->w[3 * b + q];
         }
-        if (e->set.model == SBC_BOND_BEAM) {
-            e->w_strain_beam += sbc_beam_bond_increment(&e->beam[k], dxa, dta, dxb, dtb);
-            sbc_beam_bond_apply(&e->beam[k], &load[6 * a], &load[6 * a + 3], &load[6 * b], &load[6 * b + 3]);
-        } else {
-            double xc[3], n[3], ra_[3], rb_[3], wa[3], wb[3], du[3], dth[3];
-            sbc_parallel_bond_geometry(xa, e->r[a], xb, e->r[b], n, xc);
+        if (!beam || broken) { /* the contact point's motion, eqs. 14-15 */
+            L = sbc_parallel_bond_geometry(xa, e->r[a], xb, e->r[b], n, xc);
             for (q = 0; q < 3; ++q) {
                 ra_[q] = xc[q] - xa[q];
                 rb_[q] = xc[q] - xb[q];
             }
-            cross(dta, ra_, wa); /* eq. 14 times dt */
+            cross(dta, ra_, wa);
             cross(dtb, rb_, wb);
             for (q = 0; q < 3; ++q) {
                 du[q] = (dxa[q] + wa[q]) - (dxb[q] + wb[q]);
-                dth[q] = dta[q] - dtb[q]; /* eq. 15 */
+                dth[q] = dta[q] - dtb[q];
             }
-            sbc_parallel_bond_increment(&e->set.parallel, &e->parallel[k], n, du, dth);
-            sbc_parallel_bond_apply(&e->parallel[k], xa, xb, xc, &load[6 * a], &load[6 * a + 3], &load[6 * b],
-                                    &load[6 * b + 3]);
         }
+        if (broken) {
+            sbc_friction_law law = broken_law(e, k);
+            double f[3], tf[3];
+            sbc_broken_bond_increment(&law, &e->contact[k], e->r[a] + e->r[b] - L, n, du, f);
+            for (q = 0; q < 3; ++q) {
+                fa[q] += f[q];
+                fb[q] -= f[q];
+            }
+            cross(ra_, f, tf); /* eq. 20 */
+            for (q = 0; q < 3; ++q) ma[q] += tf[q];
+            cross(f, rb_, tf); /* (xc - xb) x (-f) */
+            for (q = 0; q < 3; ++q) mb[q] += tf[q];
+            continue;
+        }
+        if (beam)
+            sbc_beam_bond_increment(&e->beam[k], dxa, dta, dxb, dtb);
+        else
+            sbc_parallel_bond_increment(&e->set.parallel, &e->parallel[k], n, du, dth);
+        if (failure) {
+            double l[4];
+            if (beam) sbc_beam_bond_loads(&e->beam[k], l);
+            else sbc_parallel_bond_loads(&e->parallel[k], n, l);
+            if (sbc_bond_criterion(&e->set.strength, l[0], l[1], l[2], l[3]) >= 1.0) {
+                break_bond(e, k);
+                continue;
+            }
+        }
+        if (beam)
+            sbc_beam_bond_apply(&e->beam[k], fa, ma, fb, mb);
+        else
+            sbc_parallel_bond_apply(&e->parallel[k], xa, xb, xc, fa, ma, fb, mb);
     }
 }
 
@@ -404,14 +476,20 @@ sbc_bpm_energy sbc_bpm_energies(const sbc_bpm *e)
     double big;
     size_t k;
     en.kinetic = e->w_kin;
-    en.dissipated = e->w_dis;
+    en.dissipated = e->w_dis + e->w_fracture;
     en.external = e->w_ext;
-    if (e->set.model == SBC_BOND_BEAM) {
-        en.strain = e->w_strain_beam;
-    } else {
-        en.strain = 0.0;
-        for (k = 0; k < e->nb; ++k)
-            en.strain += sbc_parallel_bond_energy(&e->set.parallel, &e->parallel[k]);
+    en.strain = 0.0;
+    for (k = 0; k < e->nb; ++k) {
+        if (e->broken && e->broken[k]) { /* elastic part as strain, the rest (friction) dissipated */
+            sbc_friction_law law = broken_law(e, k);
+            double n[3], xc[3], L = sbc_parallel_bond_geometry(&e->x[3 * e->bonds[k].a], e->r[e->bonds[k].a],
+                                                               &e->x[3 * e->bonds[k].b], e->r[e->bonds[k].b], n, xc);
+            double el = sbc_broken_bond_energy(&law, &e->contact[k], e->r[e->bonds[k].a] + e->r[e->bonds[k].b] - L);
+            en.strain += el;
+            en.dissipated += e->contact[k].w - el;
+        } else {
+            en.strain += bond_energy(e, k);
+        }
     }
     big = fabs(en.kinetic);
     if (fabs(en.strain) > big) big = fabs(en.strain);

@@ -153,6 +153,7 @@ void sbc_beam_bond_init(const sbc_beam_law *law, double rb, const double xa[3], 
     bond->k[4] = K[4][4];  /* E I (4 + Phi) / L (1 + Phi) */
     bond->k[5] = K[4][10]; /* E I (2 - Phi) / L (1 + Phi) */
     memset(bond->f, 0, sizeof bond->f);
+    bond->w = 0.0;
 }
 
 /* eq. 26 written out: A's forces and moments, then B's */
@@ -189,6 +190,7 @@ double sbc_beam_bond_increment(sbc_beam_bond *bond, const double dxa[3], const d
         w += (bond->f[i] + 0.5 * df[i]) * ul[i];
         bond->f[i] += df[i];
     }
+    bond->w += w;
     return w;
 }
 
@@ -203,6 +205,69 @@ void sbc_beam_bond_apply(const sbc_beam_bond *bond, double fa[3], double ma[3], 
                 s += bond->T[i][k] * bond->f[3 * b + i];
             out[b][k] -= s;
         }
+}
+
+/* ---- failure ----------------------------------------------------------------- */
+
+double sbc_bond_criterion(const sbc_bond_strength *s, double ft, double fs, double mb, double mt)
+{
+    double c = 0.0;
+    if (s->tension > 0.0) c += ft / s->tension;
+    if (s->shear > 0.0) c += fabs(fs) / s->shear;
+    if (s->bending > 0.0) c += fabs(mb) / s->bending;
+    if (s->twisting > 0.0) c += fabs(mt) / s->twisting;
+    return c;
+}
+
+void sbc_parallel_bond_loads(const sbc_parallel_bond *bond, const double n[3], double out[4])
+{
+    out[0] = dot(bond->fn, n); /* force on A toward B: tension */
+    out[1] = sqrt(dot(bond->fs, bond->fs));
+    out[2] = sqrt(dot(bond->ms, bond->ms));
+    out[3] = sqrt(dot(bond->mn, bond->mn));
+}
+
+void sbc_beam_bond_loads(const sbc_beam_bond *bond, double out[4])
+{
+    const double *f = bond->f;
+    out[0] = -f[0]; /* A receives -f_l: along x^ toward B is tension */
+    out[1] = sqrt(f[1] * f[1] + f[2] * f[2]);
+    out[2] = fmax(sqrt(f[4] * f[4] + f[5] * f[5]), sqrt(f[10] * f[10] + f[11] * f[11]));
+    out[3] = fabs(f[3]);
+}
+
+void sbc_broken_bond_increment(const sbc_friction_law *law, sbc_broken_bond *c, double dn, const double n[3],
+                               const double du[3], double f[3])
+{
+    double un = dot(du, n), cap, mag;
+    int k;
+    if (dn <= 0.0) {
+        memset(c->fs, 0, sizeof c->fs);
+    } else {
+        for (k = 0; k < 3; ++k)
+            c->fs[k] -= law->ks * (du[k] - un * n[k]);
+        /* keep the spring in the contact plane as n turns */
+        mag = dot(c->fs, n);
+        for (k = 0; k < 3; ++k)
+            c->fs[k] -= mag * n[k];
+        cap = law->mu * law->kn * dn;
+        mag = sqrt(dot(c->fs, c->fs));
+        if (mag > cap)
+            for (k = 0; k < 3; ++k)
+                c->fs[k] *= cap / mag;
+    }
+    for (k = 0; k < 3; ++k)
+        f[k] = (dn > 0.0 ? -law->kn * dn * n[k] : 0.0) + c->fs[k];
+    c->w -= 0.5 * (dot(c->f, du) + dot(f, du)); /* work done on the contact */
+    memcpy(c->f, f, sizeof c->f);
+}
+
+double sbc_broken_bond_energy(const sbc_friction_law *law, const sbc_broken_bond *c, double dn)
+{
+    double w = dn > 0.0 ? 0.5 * law->kn * dn * dn : 0.0;
+    if (law->ks > 0.0)
+        w += 0.5 * dot(c->fs, c->fs) / law->ks;
+    return w;
 }
 
 /* ---- damping ---------------------------------------------------------------- */

@@ -3,6 +3,7 @@
  *
  *   packing cubic|hcp|random radius RP [box LX LY LZ] [porosity P] [seed N]
  *   bond parallel|beam [E EB] [nu NU] [ratio KN/KS] [alpha A] [damping XI] [touch T]
+ *        [strength FT FS MB MT] [friction MU]
  *   density RHO [scaled]
  *   timestep DT | timestep critical F
  *   test uniaxial velocity V steps N [zone Z] [file F.csv]
@@ -161,7 +162,22 @@ static sbc_status cmd_bond(struct bpm_script *b, int nw, char **w, sbc_error *er
         else if (strcmp(w[k], "alpha") == 0) st = positive(nw, w, k, &b->set.alpha, err);
         else if (strcmp(w[k], "damping") == 0) st = value(nw, w, k, &b->set.xi, err);
         else if (strcmp(w[k], "touch") == 0) st = value(nw, w, k, &b->set.touch, err);
-        else st = unknown(w, k, "E, nu, ratio, alpha, damping or touch", err);
+        else if (strcmp(w[k], "friction") == 0) st = value(nw, w, k, &b->set.mu, err);
+        else if (strcmp(w[k], "strength") == 0) {
+            double *v[4] = {&b->set.strength.tension, &b->set.strength.shear, &b->set.strength.bending,
+                            &b->set.strength.twisting};
+            int q;
+            if (k + 4 >= nw)
+                st = sbc_fail(err, SBC_ERR_INPUT, "bond: strength needs four values (expected 'strength FT FS MB MT': "
+                              "tension N, shear N, bending N m, twisting N m)");
+            for (q = 0; q < 4 && st == SBC_OK; ++q) {
+                st = sbc_parse_real(w[k + 1 + q], "strength", v[q], NULL);
+                if (st != SBC_OK || !(*v[q] >= 0.0) || (q == 0 && !(*v[q] > 0.0)))
+                    st = sbc_fail(err, SBC_ERR_INPUT, "bond: strength value '%s' (expected a tension > 0 and shear, "
+                                  "bending, twisting >= 0; 0 leaves a term out)", w[k + 1 + q]);
+            }
+            k += 3;
+        } else st = unknown(w, k, "E, nu, ratio, alpha, damping, touch, strength or friction", err);
     }
     if (st == SBC_OK && !(b->set.beam.nu > -1.0 && b->set.beam.nu < 0.5))
         st = sbc_fail(err, SBC_ERR_INPUT, "bond: nu %g (expected -1 < nu < 0.5)", b->set.beam.nu);
@@ -332,7 +348,8 @@ static sbc_status cmd_run(script *s, struct bpm_script *b, sbc_error *err)
                     "L0 %.6g m, A %.6g m^2, %zu loaded and %zu held spheres\n"
                     "uniaxial: sigma_xx %.6g Pa (RVE, eq. 54) against F_x/A %.6g Pa: %.3f %%; energy balance (eq. 53) "
                     "%.2e\n", r.E, r.nu_xy, r.nu_xz, r.force, r.dL, r.L0, r.A, r.loaded, r.held, r.sigma_rve[0],
-                    r.sigma_load, 100.0 * (r.sigma_rve[0] - r.sigma_load) / r.sigma_load, r.balance);
+                    r.sigma_load, r.sigma_load != 0.0 ? 100.0 * (r.sigma_rve[0] - r.sigma_load) / r.sigma_load : 0.0,
+                    r.balance);
     } else {
         sbc_bpm_bending_result r;
         b->bending.rp = b->rp;
@@ -350,6 +367,8 @@ static sbc_status cmd_run(script *s, struct bpm_script *b, sbc_error *err)
     if (st == SBC_OK && s->log)
         fprintf(s->log, "bpm: %ld steps in %.2f s: %.1f ns per sphere-step, %.1f ns per bond-step\n", steps, seconds,
                 1e9 * seconds / ((double)steps * (double)e->n), 1e9 * seconds / ((double)steps * (double)e->nb));
+    if (st == SBC_OK && set.strength.tension > 0.0 && s->log)
+        fprintf(s->log, "bpm: %zu of %zu bonds broken\n", e->nbroken, e->nb);
     if (st == SBC_OK && b->vtk[0] && (st = write_vtk(e, b->vtk, err)) == SBC_OK && s->log)
         fprintf(s->log, "bpm: spheres with their stress (eq. 62) in %s_spheres.vtk\n", b->vtk);
 done:

@@ -19,7 +19,15 @@
  * position Verlet scheme conserves exactly; with it, strain energy by the
  * trapezoidal rule and the work of external, reaction and dashpot forces
  * paired with the same increments, eq. 53 holds to round-off for a linear
- * elastic bond network. */
+ * elastic bond network. With failure, the energy a bond held when it broke
+ * and the work of friction in broken contacts count as dissipated, the
+ * contacts' elastic energy as strain energy.
+ *
+ * Failure (optional, settings.strength): a bond whose criterion reaches 1
+ * at a step breaks before its loads are applied; from then on the pair is a
+ * frictional contact (bpm_bond.h) with kn the bond's axial stiffness and ks
+ * = kn k^s/k^n (parallel bond) or kn / 2(1 + nu_b) (beam). Spheres that were
+ * not bonded at the start never interact. */
 #ifndef SBC_BPM_H
 #define SBC_BPM_H
 
@@ -37,6 +45,8 @@ typedef struct sbc_bpm_settings {
     double alpha;                   /* bond radius multiplier, eq. 9: r_b = alpha r_min (thesis: 1) */
     double xi;                      /* dashpot damping ratio of eq. 37, - */
     double touch;                   /* spheres bond when |xb - xa| <= (ra + rb)(1 + touch) */
+    sbc_bond_strength strength;     /* optional failure (bpm_bond.h); tension <= 0: none (the default) */
+    double mu;                      /* friction of a broken bond's contact, - */
 } sbc_bpm_settings;
 
 typedef struct sbc_bpm_bond {
@@ -69,10 +79,14 @@ typedef struct sbc_bpm {
     sbc_bpm_bond *bonds;
     sbc_parallel_bond *parallel; /* bond k's state, parallel bond model (else NULL) */
     sbc_beam_bond *beam;         /* bond k's state, beam model (else NULL) */
+    unsigned char *broken;       /* bond k has failed (only with a strength) */
+    sbc_broken_bond *contact;    /* bond k's contact once broken (only with a strength) */
+    size_t nbroken;
+    double w_fracture;           /* strain energy the broken bonds held, J (dissipated) */
     sbc_bpm_settings set;
     double dt;
     long step;
-    double w_strain_beam, w_dis, w_ext, w_kin;
+    double w_dis, w_ext, w_kin;
 } sbc_bpm;
 
 /* Thesis defaults (Table 3): Timoshenko beams, E_b = 4 GPa, nu_b = 0.3,

@@ -95,6 +95,7 @@ typedef struct sbc_beam_bond {
     double T[3][3];
     double k[6];
     double f[12];
+    double w; /* strain energy, J: the trapezoidal sum of the increments */
 } sbc_beam_bond;
 
 /* Creates the bond state between centres xa and xb with radius rb. */
@@ -105,8 +106,8 @@ void sbc_beam_bond_init(const sbc_beam_law *law, double rb, const double xa[3], 
 void sbc_beam_bond_product(const sbc_beam_bond *bond, const double ul[12], double df[12]);
 
 /* One increment, eqs. 32 and 23: du_l = diag(T, T, T, T) (dxa, dtha, dxb,
- * dthb), f_l += K du_l. Returns the strain-energy increment (J), exact for
- * the linear law: (f_old + f_new)/2 . du_l. */
+ * dthb), f_l += K du_l. Adds the strain-energy increment (f_old + f_new)/2 .
+ * du_l (exact for the linear law) to bond->w and returns it (J). */
 double sbc_beam_bond_increment(sbc_beam_bond *bond, const double dxa[3], const double dtha[3], const double dxb[3],
                                const double dthb[3]);
 
@@ -114,6 +115,58 @@ double sbc_beam_bond_increment(sbc_beam_bond *bond, const double dxa[3], const d
  * particle A gets -T^T f_l[0..2] and -T^T f_l[3..5], B the rest. Adds to fa, ma,
  * fb, mb. */
 void sbc_beam_bond_apply(const sbc_beam_bond *bond, double fa[3], double ma[3], double fb[3], double mb[3]);
+
+/* ---- Optional failure ------------------------------------------------------ */
+
+/* Bond strength: the paper's eq. 8 (contact.h) in 3D with twisting. A bond
+ * breaks for good when
+ *   F_t / F_t,u + |F_s| / F_s,u + |M_b| / M_b,u + |M_t| / M_t,u >= 1
+ * with F_t its normal force, tension positive (compression lowers the
+ * criterion, as in our reading of the 2D eq. 8), F_s its shear force, M_b its
+ * bending and M_t its twisting moment (for a beam the larger end moment). A
+ * strength of 0 leaves its term out; tension <= 0 means no failure (the
+ * default). */
+typedef struct sbc_bond_strength {
+    double tension;  /* F_t,u, N */
+    double shear;    /* F_s,u, N */
+    double bending;  /* M_b,u, N m */
+    double twisting; /* M_t,u, N m */
+} sbc_bond_strength;
+
+/* The criterion's left-hand side for the loads (ft, fs, mb, mt). */
+double sbc_bond_criterion(const sbc_bond_strength *s, double ft, double fs, double mb, double mt);
+
+/* A bond's loads in the criterion's terms (n: unit A -> B). */
+void sbc_parallel_bond_loads(const sbc_parallel_bond *bond, const double n[3], double out[4]);
+void sbc_beam_bond_loads(const sbc_beam_bond *bond, double out[4]);
+
+/* A broken bond becomes a frictional contact (the thesis' contact springs,
+ * eqs. 12-13, with Coulomb's cap): while the spheres overlap by dn > 0 the
+ * normal force on A is -kn dn n, the tangential spring force fs (on A) is
+ * advanced by -ks du_s and capped at mu kn dn; apart, both vanish. No
+ * moment but that of fs about the centres (eq. 20). w accumulates the work
+ * done on the contact (trapezoidal), so that friction's share is
+ * w - the elastic energy. */
+typedef struct sbc_friction_law {
+    double kn; /* N/m */
+    double ks; /* N/m */
+    double mu; /* - */
+} sbc_friction_law;
+
+typedef struct sbc_broken_bond {
+    double fs[3]; /* tangential spring force on A, N */
+    double f[3];  /* total force on A at the last step, N */
+    double w;     /* work done on the contact, J */
+} sbc_broken_bond;
+
+/* One increment at overlap dn (m) with the relative displacement du of A
+ * against B at the contact point (as sbc_parallel_bond_increment); writes
+ * the force on A into f. */
+void sbc_broken_bond_increment(const sbc_friction_law *law, sbc_broken_bond *c, double dn, const double n[3],
+                               const double du[3], double f[3]);
+
+/* Elastic energy of the contact: kn dn^2 / 2 + |fs|^2 / 2 ks, J. */
+double sbc_broken_bond_energy(const sbc_friction_law *law, const sbc_broken_bond *c, double dn);
 
 /* ---- Viscous bond damping, eqs. 35-37 ------------------------------------ */
 
