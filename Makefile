@@ -148,6 +148,7 @@ $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 bench: $(B)/bench_engine
 	@bash scripts/install-deps.sh lammps || echo "bench: LAMMPS not available; measuring the embedded engine only"
 	bash bench/engine_vs_lammps.sh $(B)/bench_engine
+	bash bench/bpm.sh
 
 clean:
 	rm -rf $(B) out

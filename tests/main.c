@@ -1,4 +1,5 @@
-/* Test runner: run_tests [SERVO_BC_BINARY [TMPDIR]]; last line "N passed, N failed". */
+/* Test runner: run_tests [SERVO_BC_BINARY [TMPDIR]]; last line "N passed, N failed".
+ * SBC_TEST_SUITE=NAME runs one suite. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 #include "tests.h"
@@ -42,6 +43,9 @@ int main(int argc, char **argv)
     mkdir(test_tmpdir, 0777);
     for (k = 0; k < sizeof suites / sizeof suites[0]; ++k) {
         int f0 = check_failed, p0 = check_passed;
+        const char *only = getenv("SBC_TEST_SUITE"); /* one suite by name, e.g. for timing */
+        if (only && strcmp(only, suites[k].name) != 0)
+            continue;
         suites[k].fn();
         printf("%-12s %4d checks, %d failed\n", suites[k].name, check_passed - p0 + check_failed - f0,
                check_failed - f0);

@@ -358,7 +358,7 @@ static void test_random_packing(void)
     sbc_bpm_destroy(again);
     sbc_bpm_destroy(e);
     for (k = 0; k < 2; ++k) {
-        sbc_bpm_uniaxial test = {rp, 1.5, k ? 1e-5 : -1e-5, 6000, NULL, 0};
+        sbc_bpm_uniaxial test = {rp, 1.5, k ? 1e-5 : -1e-5, 3000, NULL, 0};
         sbc_bpm_uniaxial_result res;
         s.model = SBC_BOND_PARALLEL;
         s.parallel = sbc_bpm_parallel_law(EB, rp, 4.2);
@@ -389,7 +389,7 @@ static void uniaxial_cubic(sbc_bond_model model, double rp, double velocity, sbc
     sbc_bpm_settings s = sbc_bpm_settings_default();
     sbc_bpm *e = NULL;
     sbc_error err;
-    sbc_bpm_uniaxial test = {rp, 1.5, velocity, 4000, NULL, 0};
+    sbc_bpm_uniaxial test = {rp, 1.5, velocity, 2000, NULL, 0};
     s.model = model;
     s.parallel = sbc_bpm_parallel_law(EB, rp, 4.2);
     sbc_bpm_create(&s, &e, &err);
@@ -438,7 +438,7 @@ static void test_rve_stress(void)
             sbc_bpm_settings s = sbc_bpm_settings_default();
             sbc_bpm *e = NULL;
             sbc_error err;
-            sbc_bpm_uniaxial test = {radii[k], 1.5, -1e-5, 4000, NULL, 0};
+            sbc_bpm_uniaxial test = {radii[k], 1.5, -1e-5, 2000, NULL, 0};
             sbc_bpm_uniaxial_result res;
             s.model = SBC_BOND_PARALLEL;
             s.parallel = sbc_bpm_parallel_law(EB, radii[k], 4.2);
