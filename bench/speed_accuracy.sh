@@ -29,15 +29,21 @@ case_file=$(awk '$1 == "case" { print $2; exit }' "$sweep")
 mkdir -p "$out/runs"
 out=$(cd "$out" && pwd)
 
-# script LABEL WORDS...: the case with WORDS appended to its servo_bc line
+# script KNOB LABEL WORDS...: the case with WORDS appended to its servo_bc
+# line; for KNOB "preset" the case's own `relax TOL WINDOW` is dropped first,
+# so that the preset's relaxation tolerance applies (explicit words win over
+# a preset; the case's gains, which carry its physics, stay)
 script() {
-  local label=$1 dt="" words=() w
-  shift
+  local knob=$1 label=$2 dt="" words=() w
+  shift 2
   for w in "$@"; do
     case $w in timestep=*) dt=${w#timestep=} ;; *) words+=("$w") ;; esac
   done
-  awk -v extra="${words[*]:-}" -v dt="$dt" -v csv="$out/runs/$label.csv" '
-    $1 == "servo_bc" { print $0 (extra != "" ? " " extra : "") " file " csv; next }
+  awk -v extra="${words[*]:-}" -v dt="$dt" -v csv="$out/runs/$label.csv" -v knob="$knob" '
+    $1 == "servo_bc" {
+      line = $0
+      if (knob == "preset") gsub(/ relax [^ ]+ [^ ]+/, "", line)
+      print line (extra != "" ? " " extra : "") " file " csv; next }
     $1 == "timestep" && dt != "" { print "timestep " dt; next }
     { print }' "$top/$case_file" > "$out/runs/$label.sbc"
 }
@@ -45,7 +51,7 @@ script() {
 grep -v '^[[:space:]]*\(#\|$\|case \)' "$sweep" > "$out/runs.txt"
 while read -r knob label words; do
   # shellcheck disable=SC2086
-  script "$label" $words
+  script "$knob" "$label" $words
 done < "$out/runs.txt"
 awk '{ print $2 }' "$out/runs.txt" | xargs -P "$jobs" -I{} sh -c \
   '"$0" "$1/runs/{}.sbc" > "$1/runs/{}.log" 2>&1 || true' "$B/servo-bc" "$out"
