@@ -292,13 +292,6 @@ double sbc_bpm_critical_dt(const sbc_bpm *e)
     return kmax > 0.0 ? 0.22 * sqrt(mmin / kmax) : 0.0; /* eq. 48 */
 }
 
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* contact law of bond k once broken */
 static sbc_friction_law broken_law(const sbc_bpm *e, size_t k)
 {
@@ -359,8 +352,8 @@ static void bond_loads(sbc_bpm *e, double *load)
                 ra_[q] = xc[q] - xa[q];
                 rb_[q] = xc[q] - xb[q];
             }
-            cross(dta, ra_, wa);
-            cross(dtb, rb_, wb);
+            sbc_cross3(dta, ra_, wa);
+            sbc_cross3(dtb, rb_, wb);
             for (q = 0; q < 3; ++q) {
                 du[q] = (dxa[q] + wa[q]) - (dxb[q] + wb[q]);
                 dth[q] = dta[q] - dtb[q];
@@ -374,9 +367,9 @@ static void bond_loads(sbc_bpm *e, double *load)
                 fa[q] += f[q];
                 fb[q] -= f[q];
             }
-            cross(ra_, f, tf); /* eq. 20 */
+            sbc_cross3(ra_, f, tf); /* eq. 20 */
             for (q = 0; q < 3; ++q) ma[q] += tf[q];
-            cross(f, rb_, tf); /* (xc - xb) x (-f) */
+            sbc_cross3(f, rb_, tf); /* (xc - xb) x (-f) */
             for (q = 0; q < 3; ++q) mb[q] += tf[q];
             continue;
         }

@@ -5,13 +5,6 @@
 #include <math.h>
 #include <string.h>
 
-static void cross(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 static double normalize(double a[3])
@@ -34,13 +27,13 @@ double sbc_bond_frame(const double xa[3], const double xb[3], double T[3][3])
     for (k = 0; k < 3; ++k)
         T[0][k] = xb[k] - xa[k];
     L = normalize(T[0]);                               /* eq. 5 */
-    cross(T[0], ez, T[1]);                             /* eq. 6 */
+    sbc_cross3(T[0], ez, T[1]);                        /* eq. 6 */
     if (normalize(T[1]) < 1e-12) {                     /* eq. 7: x^ along e_z */
         T[1][0] = 0.0;
         T[1][1] = 1.0;
         T[1][2] = 0.0;
     }
-    cross(T[0], T[1], T[2]);                           /* eq. 8 */
+    sbc_cross3(T[0], T[1], T[2]);                      /* eq. 8 */
     normalize(T[2]);
     return L;
 }
@@ -87,8 +80,8 @@ void sbc_parallel_bond_apply(const sbc_parallel_bond *bond, const double xa[3], 
         arm_b[k] = xc[k] - xb[k];
         fs_b[k] = -bond->fs[k];
     }
-    cross(arm_a, bond->fs, tfs_a); /* eq. 20 */
-    cross(arm_b, fs_b, tfs_b);
+    sbc_cross3(arm_a, bond->fs, tfs_a); /* eq. 20 */
+    sbc_cross3(arm_b, fs_b, tfs_b);
     for (k = 0; k < 3; ++k) {
         double f = bond->fn[k] + bond->fs[k], m = bond->mn[k] + bond->ms[k];
         fa[k] += f;

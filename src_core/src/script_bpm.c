@@ -18,6 +18,7 @@
 #include "sbc/bpm_loading.h"
 #include "sbc/bpm_packing.h"
 #include "sbc/bpm_stress.h"
+#include "sbc/bpm_vtk.h"
 #include "sbc/settings.h"
 
 #include <math.h>
@@ -256,49 +257,6 @@ static sbc_status build(struct bpm_script *b, sbc_bpm *e, double *porosity, sbc_
     return sbc_bpm_bond_touching(e, err);
 }
 
-static sbc_status write_vtk(const sbc_bpm *e, const char *prefix, sbc_error *err)
-{
-    char path[SBC_NAME_LEN + 32];
-    double *sigma = malloc((9 * e->n + 1) * sizeof *sigma);
-    FILE *fp;
-    size_t i;
-    int q;
-    if (!sigma)
-        return sbc_fail(err, SBC_ERR_NOMEM, "vtk: out of memory");
-    sbc_bpm_particle_stress(e, sigma, err);
-    snprintf(path, sizeof path, "%s_spheres.vtk", prefix);
-    fp = fopen(path, "w");
-    if (!fp) {
-        free(sigma);
-        return sbc_fail(err, SBC_ERR_IO, "vtk: cannot write '%s'", path);
-    }
-    fprintf(fp, "# vtk DataFile Version 3.0\nservo_bc 3D bonded spheres\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
-            e->n);
-    for (i = 0; i < e->n; ++i)
-        fprintf(fp, "%.10g %.10g %.10g\n", e->x[3 * i], e->x[3 * i + 1], e->x[3 * i + 2]);
-    fprintf(fp, "VERTICES %zu %zu\n", e->n, 2 * e->n);
-    for (i = 0; i < e->n; ++i)
-        fprintf(fp, "1 %zu\n", i);
-    fprintf(fp, "POINT_DATA %zu\nSCALARS radius double 1\nLOOKUP_TABLE default\n", e->n);
-    for (i = 0; i < e->n; ++i)
-        fprintf(fp, "%.10g\n", e->r[i]);
-    fprintf(fp, "SCALARS bonds int 1\nLOOKUP_TABLE default\n");
-    for (i = 0; i < e->n; ++i)
-        fprintf(fp, "%u\n", e->coordination[i]);
-    fprintf(fp, "VECTORS velocity double\n");
-    for (i = 0; i < e->n; ++i)
-        fprintf(fp, "%.10g %.10g %.10g\n", e->v[3 * i], e->v[3 * i + 1], e->v[3 * i + 2]);
-    fprintf(fp, "TENSORS stress double\n"); /* eq. 62, Pa */
-    for (i = 0; i < e->n; ++i)
-        for (q = 0; q < 3; ++q)
-            fprintf(fp, "%.10g %.10g %.10g\n", sigma[9 * i + 3 * (size_t)q], sigma[9 * i + 3 * (size_t)q + 1],
-                    sigma[9 * i + 3 * (size_t)q + 2]);
-    free(sigma);
-    if (fclose(fp) != 0)
-        return sbc_fail(err, SBC_ERR_IO, "vtk: cannot finish '%s'", path);
-    return SBC_OK;
-}
-
 static sbc_status cmd_run(script *s, struct bpm_script *b, sbc_error *err)
 {
     sbc_bpm *e = NULL;
@@ -369,7 +327,7 @@ static sbc_status cmd_run(script *s, struct bpm_script *b, sbc_error *err)
                 1e9 * seconds / ((double)steps * (double)e->n), 1e9 * seconds / ((double)steps * (double)e->nb));
     if (st == SBC_OK && set.strength.tension > 0.0 && s->log)
         fprintf(s->log, "bpm: %zu of %zu bonds broken\n", e->nbroken, e->nb);
-    if (st == SBC_OK && b->vtk[0] && (st = write_vtk(e, b->vtk, err)) == SBC_OK && s->log)
+    if (st == SBC_OK && b->vtk[0] && (st = sbc_bpm_vtk_write(b->vtk, e, err)) == SBC_OK && s->log)
         fprintf(s->log, "bpm: spheres with their stress (eq. 62) in %s_spheres.vtk\n", b->vtk);
 done:
     if (series && fclose(series) != 0 && st == SBC_OK)
