@@ -181,9 +181,9 @@ static void test_generated_frame(const sbc_packing *a, double L)
         CHECK(sbc_script_run_string(script, "escaped", NULL, &err) == SBC_ERR_GEOMETRY &&
               strstr(err.message, "increment 0: interior particle 36 escaped through a gap between frame particles"));
     }
-    CHECK(sbc_script_run_string("generate periodic n0 25 rmin 0.67e-3 polydispersity 3 seed 1\n", "bad", NULL,
+    CHECK(sbc_script_run_string("generate periodic n0 25 rmin 0.67e-3 polydispersity 11 seed 1\n", "bad", NULL,
                                 &err) == SBC_ERR_INPUT &&
-          strstr(err.message, "bad:1: generate: polydispersity '3'"));
+          strstr(err.message, "bad:1: generate: polydispersity '11' is not valid (expected a real from 1 to 10"));
     CHECK(sbc_script_run_string("write_packing vtk x\n", "bad", NULL, &err) == SBC_ERR_INPUT &&
           strstr(err.message, "no packing"));
     /* the runner's writers by name: YADE needs no density, the data files do */
@@ -207,14 +207,61 @@ static void test_generated_frame(const sbc_packing *a, double L)
 }
 
 
+/* The reconstructed packing a of d: no overlaps beyond the relaxation
+ * tolerance, radii in [R_min, pd R_min], every disc crossing an edge copied at
+ * exactly +-L, one corner particle on the four corners (the only discs that
+ * cross two edges); returns the corner particle's radius. */
+static double check_reconstruction(const sbc_packing *a, const sbc_generate_def *d, double L)
+{
+    int i, j, overlaps = 0, unpaired = 0, corners = 0, two_edges = 0;
+    double tol = 1e-9 * d->r_min, r_corner = 0.0, r_max = 0.0;
+    for (i = 0; i < a->n; ++i) {
+        double x = a->x[2 * i], y = a->x[2 * i + 1], r = a->r[i];
+        CHECK(r >= d->r_min && r <= d->polydispersity * d->r_min);
+        for (j = i + 1; j < a->n; ++j) {
+            double dx = a->x[2 * j] - x, dy = a->x[2 * j + 1] - y;
+            if (sqrt(dx * dx + dy * dy) < a->r[j] + r - tol) ++overlaps;
+        }
+        /* a disc crossing an edge has its copy at exactly +-L on the other side */
+        if (x - r < 0.0 || x + r > L) {
+            double want = x - r < 0.0 ? x + L : x - L;
+            int found = 0;
+            for (j = 0; j < a->n; ++j)
+                found |= a->x[2 * j] == want && a->x[2 * j + 1] == y && a->r[j] == r;
+            unpaired += !found;
+        }
+        if (y - r < 0.0 || y + r > L) {
+            double want = y - r < 0.0 ? y + L : y - L;
+            int found = 0;
+            for (j = 0; j < a->n; ++j)
+                found |= a->x[2 * j + 1] == want && a->x[2 * j] == x && a->r[j] == r;
+            unpaired += !found;
+        }
+        if ((x == 0.0 || x == L) && (y == 0.0 || y == L)) {
+            ++corners;
+            r_corner = r;
+        } else {
+            two_edges += (fabs(x) < r || fabs(x - L) < r) && (fabs(y) < r || fabs(y - L) < r);
+        }
+    }
+    CHECK(overlaps == 0);
+    CHECK(unpaired == 0);
+    CHECK(corners == 4);
+    CHECK(two_edges == 0);
+    for (i = 0; i < a->n; ++i)
+        r_max = fmax(r_max, a->r[i]);
+    CHECK(r_max <= (1.0 + sqrt(2.0)) * r_corner); /* no disc can cross the two edges beside the corner disc */
+    return r_corner;
+}
+
 void test_generate(void)
 {
     sbc_generate_def d = sbc_generate_def_default();
     sbc_packing a, b;
     sbc_generate_info ia, ib;
     sbc_error err;
-    int i, j, overlaps = 0, unpaired = 0, corners = 0;
-    double L, tol;
+    double L, rmax = 0.0;
+    int i;
     d.n = 25;
     CHECK(sbc_generate_periodic(&d, &a, &ia, &err) == SBC_OK);
     CHECK(sbc_generate_periodic(&d, &b, &ib, &err) == SBC_OK);
@@ -225,36 +272,36 @@ void test_generate(void)
     CHECK(sbc_generate_periodic(&d, &b, &ib, &err) == SBC_OK);
     CHECK(b.n != a.n || memcmp(a.x, b.x, sizeof(double) * 2 * (size_t)a.n) != 0);
     L = ia.L;
-    tol = 1e-9 * d.r_min;
     CHECK(ia.n > ia.n0 && ia.fraction > 0.80 && ia.fraction < 0.87);
-    for (i = 0; i < a.n; ++i) {
-        double x = a.x[2 * i], y = a.x[2 * i + 1], r = a.r[i];
-        CHECK(r >= d.r_min && r <= 2.0 * d.r_min);
-        for (j = i + 1; j < a.n; ++j) {
-            double dx = a.x[2 * j] - x, dy = a.x[2 * j + 1] - y;
-            if (sqrt(dx * dx + dy * dy) < a.r[j] + r - tol) ++overlaps;
-        }
-        /* a disc crossing an edge has its copy at exactly +-L on the other side */
-        if (x - r < 0.0 || x + r > L) {
-            double want = x - r < 0.0 ? x + L : x - L;
-            int found = 0;
-            for (j = 0; j < a.n; ++j)
-                found |= a.x[2 * j] == want && a.x[2 * j + 1] == y && a.r[j] == r;
-            unpaired += !found;
-        }
-        if (y - r < 0.0 || y + r > L) {
-            double want = y - r < 0.0 ? y + L : y - L;
-            int found = 0;
-            for (j = 0; j < a.n; ++j)
-                found |= a.x[2 * j + 1] == want && a.x[2 * j] == x && a.r[j] == r;
-            unpaired += !found;
-        }
-        corners += (x == 0.0 || x == L) && (y == 0.0 || y == L);
-    }
-    CHECK(overlaps == 0);
-    CHECK(unpaired == 0);
-    CHECK(corners == 4);
+    d.seed = 1;
+    check_reconstruction(&a, &d, L);
     test_generated_frame(&a, L);
     sbc_packing_free(&a);
     sbc_packing_free(&b);
+    /* R_max / R_min = 10: disc 0 of seed 2 is too small to be the corner
+       (R_max > (1 + sqrt 2) r_0), and the largest disc takes its place; the
+       frame is found as for 2 */
+    d.n = 40;
+    d.seed = 2;
+    d.polydispersity = 10.0;
+    CHECK(sbc_generate_periodic(&d, &a, &ia, &err) == SBC_OK);
+    for (i = 0; i < a.n; ++i)
+        rmax = fmax(rmax, a.r[i]);
+    CHECK(check_reconstruction(&a, &d, ia.L) == rmax);
+    CHECK(ia.fraction > 0.80 && ia.fraction < 0.90);
+    {
+        sbc_frame f;
+        int sides[5] = {0, 0, 0, 0, 0};
+        const int detected = sbc_frame_detect_packing(&f, &a, &err) == SBC_OK;
+        CHECK(detected);
+        if (detected) {
+            for (i = 0; i < f.n; ++i)
+                ++sides[f.side[i]];
+            CHECK(sides[SBC_SIDE_CORNER] == 4 && sides[SBC_SIDE_BOTTOM] == sides[SBC_SIDE_TOP] &&
+                  sides[SBC_SIDE_LEFT] == sides[SBC_SIDE_RIGHT] && sides[SBC_SIDE_BOTTOM] > 0);
+            CHECK_REL(f.V, ia.L * ia.L, 1e-12);
+            sbc_frame_free(&f);
+        }
+    }
+    sbc_packing_free(&a);
 }

@@ -358,6 +358,27 @@ static void divergence(void)
     CHECK(csv_read(csv, rows, 8) >= 0); /* header at least, every field finite */
 }
 
+/* An increment whose first step would move a frame particle by more than
+ * half a radius is refused, with the jump in radii and how many more
+ * increments it takes. F12 = 0.3 in one increment moves the top frame
+ * particles of the 5 x 5 lattice (X2 = 8 mm) by 0.3 * 8 / 1.02 = 2.353 radii:
+ * five times as many increments (0.471 radii each) pass. */
+static void first_step_jump(void)
+{
+    final_state f;
+    run_lattice("D F 1 0.3 0 1 increments 1", 2e3, &f);
+    CHECK(f.status == SBC_ERR_INPUT);
+    CHECK(strstr(f.message, "servo_bc D: increment 1: its first step moves frame particle") &&
+          strstr(f.message, "by 2.35 radii") && strstr(f.message, "take at least 5 times as many increments"));
+    final_free(&f);
+    run_lattice("P F 1 0.3 0 1 increments 4", 2e3, &f); /* 0.588 radii */
+    CHECK(f.status == SBC_ERR_INPUT && strstr(f.message, "by 0.588 radii") && strstr(f.message, "at least 2 times"));
+    final_free(&f);
+    run_lattice("D F 1 0.3 0 1 increments 5", 2e3, &f);
+    CHECK(f.status == SBC_OK && fabs(f.F[1] - 0.3) < 1e-15);
+    final_free(&f);
+}
+
 void test_servo(void)
 {
     periodic_closed_form();
@@ -369,4 +390,5 @@ void test_servo(void)
     dirichlet_hill_mandel();
     prediction();
     divergence();
+    first_step_jump();
 }

@@ -186,7 +186,16 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     /* positions and L on a grid of 2^-50 m (~9e-16 m): then x + L and x - L are
        exact, and every copy sits at exactly +-L from its original both ways */
     keep.L = quantize(keep.L);
+    /* the corner particle: a disc of radius r crossing both edges beside a
+       corner disc of radius R_c at the origin would have its centre within
+       r sqrt(2) of it, and overlap it unless r > (1 + sqrt(2)) R_c; that disc
+       would be a second corner. Disc 0 when it is large enough (every packing
+       of polydispersity up to 2), else the largest disc. */
     corner = 0;
+    if (b.rmax > (1.0 + sqrt(2.0)) * b.r[0])
+        for (k = 1; k < n; ++k)
+            if (b.r[k] > b.r[corner])
+                corner = k;
     for (k = 0; k < n; ++k) {
         double x = quantize(wrap(keep.x[2 * k] - keep.x[2 * corner], keep.L));
         double y = quantize(wrap(keep.x[2 * k + 1] - keep.x[2 * corner + 1], keep.L)), r = b.r[k];

@@ -27,10 +27,10 @@ sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
     if ((st = sbc_script_positive("generate", "rmin", w[5], &def.r_min, err)) != SBC_OK) return st;
     if ((st = sbc_script_expect_key("generate", w[6], "polydispersity", usage, err)) != SBC_OK) return st;
     if (sbc_parse_real(w[7], "polydispersity", &def.polydispersity, NULL) != SBC_OK || !(def.polydispersity >= 1.0) ||
-        def.polydispersity > 2.0)
+        def.polydispersity > 10.0)
         return sbc_fail(err, SBC_ERR_INPUT,
-                        "generate: polydispersity '%s' is not valid (expected a real from 1 to 2: wider size ranges "
-                        "let a disc cross two edges beside the corner particle)", w[7]);
+                        "generate: polydispersity '%s' is not valid (expected a real from 1 to 10, R_max / R_min)",
+                        w[7]);
     if ((st = sbc_script_expect_key("generate", w[8], "seed", usage, err)) != SBC_OK) return st;
     if (sbc_parse_int(w[9], "seed", 0, 2147483647L, &seed, NULL) != SBC_OK)
         return sbc_fail(err, SBC_ERR_INPUT, "generate: seed '%s' is not valid (expected an integer >= 0)", w[9]);

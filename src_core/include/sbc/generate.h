@@ -12,7 +12,9 @@
  *
  * Then the geometrically periodic reconstruction of Sect. 4.2: the square is
  * shifted so that one particle's centre sits at a corner (that particle, copied
- * to the three other corners, gives the frame its four corners), and every
+ * to the three other corners, gives the frame its four corners: disc 0, or the
+ * largest disc when R_max > (1 + sqrt 2) r_0, so that no other disc crosses
+ * the two edges beside it), and every
  * particle crossing an edge of the square is copied to the opposite edge, so
  * that each frame particle has its partner at exactly +-L. */
 #ifndef SBC_GENERATE_H
@@ -23,7 +25,7 @@
 typedef struct sbc_generate_def {
     int n;               /* particles before the reconstruction, n0 */
     double r_min;        /* smallest radius, m */
-    double polydispersity; /* R_max / R_min, >= 1 */
+    double polydispersity; /* R_max / R_min, >= 1 (the runner accepts up to 10) */
     unsigned long seed;  /* random seed; the same seed gives the same packing */
 } sbc_generate_def;
 
