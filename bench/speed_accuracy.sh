@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The speed-accuracy trade of one case (issue 9, docs/speed-accuracy.md).
-#   bash bench/speed_accuracy.sh SWEEP [OUT]       (JOBS=2 runs two at a time)
+#   bash bench/speed_accuracy.sh SWEEP [OUT]       (JOBS=2 runs two at a time;
+#   KEEP=1 keeps the runs already in OUT whose script is unchanged)
 # SWEEP (bench/speed_accuracy/*.sweep) names the case, a runner script whose
 # servo_bc line holds the paper's settings, and one run per line:
 #   case FILE.sbc
@@ -49,12 +50,21 @@ script() {
 }
 
 grep -v '^[[:space:]]*\(#\|$\|case \)' "$sweep" > "$out/runs.txt"
+: > "$out/todo.txt"
 while read -r knob label words; do
+  old=""
+  [ -f "$out/runs/$label.sbc" ] && old=$(cat "$out/runs/$label.sbc")
   # shellcheck disable=SC2086
   script "$knob" "$label" $words
+  # KEEP=1: a run already in OUT with the same script and a finished log is kept
+  if [ "${KEEP:-0}" = 1 ] && [ "$old" = "$(cat "$out/runs/$label.sbc")" ] &&
+     grep -q '^ERROR\|^servo_bc: finished' "$out/runs/$label.log" 2>/dev/null; then
+    continue
+  fi
+  echo "$label" >> "$out/todo.txt"
 done < "$out/runs.txt"
-awk '{ print $2 }' "$out/runs.txt" | xargs -P "$jobs" -I{} sh -c \
-  '"$0" "$1/runs/{}.sbc" > "$1/runs/{}.log" 2>&1 || true' "$B/servo-bc" "$out"
+xargs -P "$jobs" -I{} sh -c '"$0" "$1/runs/{}.sbc" > "$1/runs/{}.log" 2>&1 || true' "$B/servo-bc" "$out" \
+  < "$out/todo.txt"
 
 ref=$(awk '$1 == "reference" { print $2; exit }' "$out/runs.txt")
 [ -s "$out/runs/$ref.csv" ] && ! grep -q '^ERROR' "$out/runs/$ref.log" ||
