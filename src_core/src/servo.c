@@ -32,28 +32,14 @@ static void add_scale(raw_sums *w, const double *a, double R)
 
 /* The force residual relative to the frame's own forces, and with
  * tol_relative r_force and r_moment so: 0 when there is neither residual nor
- * force. Over groups w[0..n-1] the largest ratio counts: the mixed condition
- * measures its periodic pairs and its traction components apart, so that the
- * larger forces of one group do not hide the residual of the other (the
- * prescribed stress of the layer, Sect. 5.3, lives in its T components). */
-static double ratio(double residual, double scale)
+ * force. */
+static void relative_norms(const sbc_settings *s, const raw_sums *w, sbc_servo_norms *o)
 {
-    return residual > 0.0 ? (scale > 0.0 ? sqrt(residual / scale) : 1.0) : 0.0;
-}
-
-static void relative_norms(const sbc_settings *s, const raw_sums *w, int n, sbc_servo_norms *o)
-{
-    double rf = 0.0, rm = 0.0;
-    int g;
-    for (g = 0; g < n; ++g) {
-        rf = fmax(rf, ratio(w[g].fr, w[g].fs));
-        rm = fmax(rm, ratio(w[g].mr, w[g].ms));
-    }
-    o->relative_force = rf;
+    o->relative_force = w->fr > 0.0 ? (w->fs > 0.0 ? sqrt(w->fr / w->fs) : 1.0) : 0.0;
     if (!(s->tol_relative > 0.0))
         return;
-    o->r_force = rf;
-    o->r_moment = rm;
+    o->r_force = o->relative_force;
+    o->r_moment = w->mr > 0.0 ? (w->ms > 0.0 ? sqrt(w->mr / w->ms) : 1.0) : 0.0;
 }
 
 /* One +/- pair (q, p) of (P): corrections on both partners alike; adds the
@@ -114,7 +100,7 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
     o->r_force = sqrt(sf);
     o->r_moment = sqrt(sm);
     o->r_deformation = 0.0;
-    relative_norms(s, &w, 1, o);
+    relative_norms(s, &w, o);
 }
 
 /* (T), eqs. 35-36, for every frame particle q:
@@ -178,7 +164,7 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
     o->r_force = sqrt(sf);
     o->r_moment = 0.0;
     o->r_deformation = sqrt(sd);
-    relative_norms(s, &w, 1, o);
+    relative_norms(s, &w, o);
 }
 
 void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
@@ -205,7 +191,7 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
                      const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double P[4] = {0.0, 0.0, 0.0, 0.0}, sf = 0.0, sm = 0.0;
-    raw_sums w[2] = {{0.0, 0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 0.0}}; /* P pairs, T components */
+    raw_sums w = {0.0, 0.0, 0.0, 0.0};
     int q, k;
     o->max_step = 0.0;
     for (q = 0; q < f->n; ++q) { /* eq. 23 */
@@ -226,7 +212,7 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
         int c;
         if (mode[2 * q] == SBC_MODE_P) {
             if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)
-                periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, &w[0], o);
+                periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, &w, o);
             continue;
         }
         for (c = 0; c < 2; ++c) {
@@ -235,8 +221,8 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
                 continue;
             da = P[2 * c] * A[0] + P[2 * c + 1] * A[1] - a[2 * q + c];
             sf += da * da / (at * at);
-            w[1].fr += da * da;
-            w[1].fs += a[2 * q + c] * a[2 * q + c] + (da + a[2 * q + c]) * (da + a[2 * q + c]); /* measured and target */
+            w.fr += da * da;
+            w.fs += a[2 * q + c] * a[2 * q + c] + (da + a[2 * q + c]) * (da + a[2 * q + c]); /* measured and target */
             du[2 * q + c] = ga * da;
             step = fabs(ga * da) / R;
             if (step > o->max_step) o->max_step = step;
@@ -245,5 +231,5 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
     o->r_force = sqrt(sf);
     o->r_moment = sqrt(sm);
     o->r_deformation = 0.0;
-    relative_norms(s, w, 2, o);
+    relative_norms(s, &w, o);
 }
