@@ -19,6 +19,7 @@
 #include "update.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -39,7 +40,7 @@ enum { CALLBACK_GROW = 0, CALLBACK_RESTART = 1 };    // Atom::GROW, Atom::RESTAR
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), frame_still(0), any_free(1)
+    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), frame_still(0), any_free(1), since_check(0)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
@@ -338,6 +339,33 @@ void FixServoBC::frame_pass()
   buf[6 * Q + 1] = npart;
 }
 
+/* confine.h on the owned interior atoms against the frame's present centres;
+   the smallest failing atom ID over all ranks names the error, on every rank */
+void FixServoBC::check_confined(int increment)
+{
+  const int Q = frame.n, nlocal = atom->nlocal, *mask = atom->mask;
+  double **x = atom->x, **v = atom->v;
+  frame_pass();
+  MPI_Allreduce(buf.data(), sum.data(), 2 * Q, MPI_DOUBLE, MPI_SUM, world);
+  long bad = LONG_MAX, first;
+  char message[SBC_ERROR_LEN] = "";
+  sbc_error err;
+  for (int i = 0; i < nlocal; i++) {
+    const long id = (long) atom->tag[i];
+    if (!(mask[i] & interior_bit) || id >= bad) continue;
+    if (sbc_confine_check(&frame, sum.data(), increment, id, x[i], v[i], &err) != SBC_OK) {
+      bad = id;
+      std::snprintf(message, sizeof message, "%s", err.message);
+    }
+  }
+  MPI_Allreduce(&bad, &first, 1, MPI_LONG, MPI_MIN, world);
+  if (first == LONG_MAX) return;
+  int mine = bad == first ? comm->me : comm->nprocs, root;
+  MPI_Allreduce(&mine, &root, 1, MPI_INT, MPI_MIN, world);
+  MPI_Bcast(message, (int) sizeof message, MPI_CHAR, root, world);
+  fail(message);
+}
+
 /* damping, then what the controller asks for (sbc_controller_needs): Ek every
    step, Ep and the contact sums past the kinetic-energy peak, the frame when
    the relaxation ends; then the controller step */
@@ -379,6 +407,12 @@ void FixServoBC::post_force(int)
 
   sbc_error err;
   sbc_event ev = sbc_controller_step(ctl, &snap, &err);
+  const bool converged = ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED;
+  // confine.h: before a converged increment's row, on failure, and every SBC_CONFINE_EVERY steps
+  if (converged || ev == SBC_EVENT_FAILED || ++since_check >= SBC_CONFINE_EVERY) {
+    since_check = 0;
+    check_confined(converged ? sbc_controller_result(ctl)->increment : sbc_controller_increment(ctl));
+  }
   if (ev == SBC_EVENT_FAILED) fail(err.message);
   if (ev == SBC_EVENT_CORRECTED || ev == SBC_EVENT_INCREMENT) frame_still = 0;
   if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {

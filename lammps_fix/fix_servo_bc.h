@@ -29,6 +29,7 @@ FixStyle(servo_bc,FixServoBC);
 #include <vector>
 
 extern "C" {
+#include "sbc/confine.h"
 #include "sbc/controller.h"
 #include "sbc/frame.h"
 #include "sbc/settings.h"
@@ -78,10 +79,12 @@ class FixServoBC : public Fix {
   bigint last_step;                  // timestep of the last controller step
   int frame_still;                   // steps since the commands last changed (initial_integrate)
   int any_free;                      // some frame rotation is free ((T)): integrated every step
+  int since_check;                   // steps since the last confinement check (confine.h)
 
   double interior_pass(bool again);
   void contact_pass(double out[3]);
   void frame_pass();
+  void check_confined(int increment);
   void detect_frame();
   void make_buffers();
   void fail(const std::string &message);

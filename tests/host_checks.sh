@@ -116,6 +116,20 @@ lattice_checks() {
   refuses "frame atoms under another integrator" 's/^fix  *integrate servo_interior/fix integrate all/' \
     "frame atoms are also integrated by fix integrate"
   refuses "a group without a frame" 's/^fix  *servo all/group one id 1\nfix             servo one/' "cannot form a frame"
+  # the centre disc moved out through the right edge after the frame is built:
+  # confine.h stops the run at increment 0, naming the atom (on 2 ranks too)
+  refuses "an interior atom outside the frame" \
+    's/^fix  *integrate servo_interior.*/&\nregion mid block 0.003 0.005 0.003 0.005 -0.001 0.001 units box\nset region mid x 0.0105/' \
+    "servo_bc: increment 0: interior particle 13 escaped through a gap between frame particles (its centre (0.0105, 0.004) m"
+  deck_with 's/^fix  *integrate servo_interior.*/&\nregion mid block 0.003 0.005 0.003 0.005 -0.001 0.001 units box\nset region mid x 0.0105/' \
+    "$TMP/escape.in"
+  run_deck 2 escape.in "$TMP/escape.csv" "$TMP/escape.log"
+  if grep -q "ERROR: Fix servo_bc: servo_bc: increment 0: interior particle [0-9]* escaped" "$TMP/escape.log" &&
+     [ "$(wc -l < "$TMP/escape.csv")" = 1 ]; then
+    ok "2 ranks stop alike on the escaped atom; the CSV keeps its header alone"
+  else
+    no "2 ranks, escaped atom:"; grep -m1 ERROR "$TMP/escape.log" || tail -2 "$TMP/escape.log"
+  fi
 }
 
 # restart_check: a run split by write_restart (TMP/part1.in) and read_restart

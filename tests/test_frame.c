@@ -2,9 +2,11 @@
 #include "check.h"
 #include "tests.h"
 
+#include "sbc/confine.h"
 #include "sbc/frame.h"
 #include "sbc/packing.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -125,9 +127,49 @@ static void frame_errors(void)
     sbc_packing_free(&p);
 }
 
+/* confine.h on the 5 x 5 lattice (frame centres on the square [0, 8 mm]^2):
+ * inside, escaped through a gap, thrown, non-finite; the frame's own centres
+ * fx, not its reference X, define the polygon. */
+static void confinement(void)
+{
+    sbc_packing p;
+    sbc_frame f;
+    sbc_error err;
+    double fx[2 * 16], still[2] = {0.0, 0.0}, moving[2] = {0.0, -3.0}, nan_x[2];
+    int q;
+    CHECK(sbc_packing_lattice_square(&p, 5, 5, 2e-3, 1.02e-3, &err) == SBC_OK);
+    CHECK(sbc_frame_detect(&f, p.n, p.x, p.r, 0.0, &err) == SBC_OK && f.n == 16);
+    memcpy(fx, f.X, sizeof fx);
+    {
+        const double centre[2] = {4e-3, 4e-3}, gap[2] = {3e-3, -0.4e-3}, far[2] = {4e-3, -0.02};
+        CHECK(sbc_confine_check(&f, fx, 3, 12, centre, still, &err) == SBC_OK);
+        CHECK(sbc_confine_check(&f, fx, 3, 12, gap, still, &err) == SBC_ERR_GEOMETRY &&
+              strstr(err.message, "servo_bc: increment 3: interior particle 12 escaped through a gap between frame "
+                                  "particles (its centre (0.003, -0.0004) m") &&
+              strstr(err.message, "the results before increment 3 stand"));
+        CHECK(sbc_confine_check(&f, fx, 3, 12, far, moving, &err) == SBC_ERR_NUMERIC &&
+              strstr(err.message, "interior particle 12 was thrown 0.02 m beyond the frame of width 0.008 m"));
+        CHECK(sbc_confine_check(&f, fx, 3, 12, far, still, &err) == SBC_ERR_GEOMETRY); /* at rest: escaped */
+        for (q = 0; q < f.n; ++q) /* the frame sheared by 1 mm at the top: (0.4 mm, 7.6 mm) is now left of its left edge */
+            fx[2 * q] += 1e-3 * f.X[2 * q + 1] / 8e-3;
+        {
+            const double corner[2] = {0.4e-3, 7.6e-3};
+            CHECK(sbc_confine_check(&f, f.X, 0, 1, corner, still, &err) == SBC_OK);
+            CHECK(sbc_confine_check(&f, fx, 0, 1, corner, still, &err) == SBC_ERR_GEOMETRY);
+        }
+        nan_x[0] = 4e-3;
+        nan_x[1] = nan("");
+        CHECK(sbc_confine_check(&f, fx, 2, 5, nan_x, still, &err) == SBC_ERR_NUMERIC &&
+              strstr(err.message, "increment 2: particle 5 has a non-finite position"));
+    }
+    sbc_frame_free(&f);
+    sbc_packing_free(&p);
+}
+
 void test_frame(void)
 {
     lattice_frame();
     polydisperse_frame();
     frame_errors();
+    confinement();
 }

@@ -38,6 +38,7 @@ EP_UNMEASURED = -1.0                    # SBC_RELAX_EP_UNMEASURED
 NEED_POTENTIAL, NEED_FRAME = 1, 2       # SBC_NEED_*
 RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED = range(5)   # sbc_event
 RATTLER_SCAN = 1000                     # steps between full scans for contact-free bodies
+CONFINE_EVERY = 10000                   # SBC_CONFINE_EVERY: steps between confinement checks
 FRAME_MASK = 2                          # groupMask bit of the frame bodies load_packing flags
 
 
@@ -70,6 +71,7 @@ def _library():
         'sbc_host_command_free': (ctypes.POINTER(ctypes.c_ubyte), [P]),
         'sbc_host_result': (None, [P, pd]),
         'sbc_host_damping': (I, [P, pd, pd]),
+        'sbc_host_confined': (I, [P, pd, I, ctypes.POINTER(L), pd, pd]),
     }
     for name, (res, args) in sig.items():
         fn = getattr(lib, name)
@@ -188,6 +190,7 @@ class ServoBC(object):
         self.error = None
         self.finished = False
         self.steps = 0
+        self._since_check = 0
         n = len(self.bodies)
         xy, r, m = [], [], []
         for i in self.bodies:
@@ -349,6 +352,14 @@ class ServoBC(object):
         else:
             ev = lib.sbc_host_step(self._h, ek, ep, 0.0, 0, 0.0, 0, None, None, None, None)
         self.steps += 1
+        self._since_check += 1
+        converged = ev in (INCREMENT, FINISHED)
+        # confine.h: before a converged increment's row is kept, on failure, every CONFINE_EVERY steps
+        if converged or ev == FAILED or self._since_check >= CONFINE_EVERY:
+            self._since_check = 0
+            if not self._confined():
+                self._stop(ServoBCError(lib.sbc_host_message(self._h).decode()))
+                return
         if ev == FAILED:
             self._stop(ServoBCError(lib.sbc_host_message(self._h).decode()))
             return
@@ -363,6 +374,21 @@ class ServoBC(object):
             self._stop(None)
             return
         self._apply_commands(ev in (CORRECTED, INCREMENT))
+
+    def _confined(self):
+        """The interior bodies against the polygon of the frame's centres (sbc_host_confined);
+        writes a converged increment's row when they pass."""
+        n = len(self.interior)
+        fx = (ctypes.c_double * (2 * self.Q))()
+        for q, s in enumerate(self._states):
+            fx[2 * q], fx[2 * q + 1] = s.pos[0], s.pos[1]
+        ids = (ctypes.c_long * max(1, n))(*self.interior)
+        xy, vxy = (ctypes.c_double * max(2, 2 * n))(), (ctypes.c_double * max(2, 2 * n))()
+        for k, i in enumerate(self.interior):
+            st = O.bodies[i].state
+            xy[2 * k], xy[2 * k + 1] = st.pos[0], st.pos[1]
+            vxy[2 * k], vxy[2 * k + 1] = st.vel[0], st.vel[1]
+        return _core().sbc_host_confined(self._h, fx, n, ids, xy, vxy) == 0
 
     def _frame_theta(self, q, state):
         return state.rot()[2] if self._free[q] else self.theta[q]

@@ -1,6 +1,7 @@
 /* The core behind one handle, for hosts reaching C through an FFI (host.h). */
 #include "sbc/host.h"
 
+#include "sbc/confine.h"
 #include "sbc/results.h"
 #include "words.h"
 
@@ -14,7 +15,17 @@ struct sbc_host {
     sbc_controller *ctl;
     FILE *csv;
     sbc_error err;
+    int pending; /* a converged increment's row, written once sbc_host_confined passes it */
 };
+
+/* the pending row to the CSV; 0, or 1 with the message in h->err */
+static int write_pending(sbc_host *h)
+{
+    if (!h->pending)
+        return 0;
+    h->pending = 0;
+    return h->csv && sbc_csv_write(h->csv, sbc_controller_result(h->ctl), &h->err) != SBC_OK;
+}
 
 static sbc_host *fail_create(sbc_host *h, const sbc_error *err, char *msg, size_t cap)
 {
@@ -97,6 +108,8 @@ void sbc_host_free(sbc_host *h)
 {
     if (!h)
         return;
+    if (h->ctl)
+        write_pending(h);
     sbc_controller_free(h->ctl);
     sbc_frame_free(&h->frame);
     if (h->csv)
@@ -133,11 +146,25 @@ int sbc_host_step(sbc_host *h, double ek, double ep, double overlap_sum, long co
     s.contact_count = contact_count;
     s.rotation_sum = rotation_sum;
     s.particle_count = particle_count;
-    ev = sbc_controller_step(h->ctl, &s, &h->err);
-    if ((ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) && h->csv &&
-        sbc_csv_write(h->csv, sbc_controller_result(h->ctl), &h->err) != SBC_OK)
+    if (write_pending(h))
         return SBC_EVENT_FAILED;
+    ev = sbc_controller_step(h->ctl, &s, &h->err);
+    if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED)
+        h->pending = 1;
     return (int)ev;
+}
+
+int sbc_host_confined(sbc_host *h, const double *frame_x, int n, const long *ids, const double *xy,
+                      const double *vxy)
+{
+    const int increment = h->pending ? sbc_controller_result(h->ctl)->increment : sbc_controller_increment(h->ctl);
+    int k;
+    for (k = 0; k < n; ++k)
+        if (sbc_confine_check(&h->frame, frame_x, increment, ids[k], &xy[2 * k], &vxy[2 * k], &h->err) != SBC_OK) {
+            h->pending = 0; /* the increment's results are not kept */
+            return 1;
+        }
+    return write_pending(h);
 }
 
 const char *sbc_host_message(const sbc_host *h) { return h->err.message; }

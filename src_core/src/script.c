@@ -1,6 +1,7 @@
 /* The embedded runner: script commands -> packing, engine, controller. */
 #include "sbc/script.h"
 
+#include "sbc/confine.h"
 #include "sbc/controller.h"
 #include "sbc/engine.h"
 #include "sbc/frame.h"
@@ -147,56 +148,24 @@ static sbc_status cmd_snapshots(int nw, char **w, int *every_out, char *prefix, 
 
 /* 1 when point p lies inside the polygon of the frame particles' centres x,
  * taken in frame order (crossing number). */
-static int inside_frame(const sbc_frame *f, const double *x, const double *p)
-{
-    int q, in = 0;
-    for (q = 0; q < f->n; ++q) {
-        const double *a = &x[2 * f->particle[q]], *b = &x[2 * f->particle[(q + 1) % f->n]];
-        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
-            in = !in;
-    }
-    return in;
-}
-
-/* An interior disc whose centre has left the polygon of the frame's centres
- * has slipped through a gap between frame discs: nothing confines it any
- * more, and no later increment can be trusted. (No generated packing or
- * lattice starts with such a disc.) O(N Q). */
-static sbc_status check_confined(const sbc_frame *frame, const sbc_engine *engine, int increment, sbc_error *err)
+/* confine.h on every particle the frame does not move (their own index is
+ * their id); a non-finite position anywhere is named first */
+static sbc_status check_confined(const sbc_frame *frame, const sbc_engine *engine, double *fx, int increment,
+                                 sbc_error *err)
 {
     sbc_engine_view w = sbc_engine_get_view(engine);
-    int k;
+    int k, q;
+    sbc_status st;
+    for (q = 0; q < frame->n; ++q) {
+        fx[2 * q] = w.x[2 * frame->particle[q]];
+        fx[2 * q + 1] = w.x[2 * frame->particle[q] + 1];
+    }
     for (k = 0; k < w.n; ++k)
         if (!isfinite(w.x[2 * k]) || !isfinite(w.x[2 * k + 1]))
-            return sbc_fail(err, SBC_ERR_NUMERIC,
-                            "run: increment %d: particle %d has a non-finite position (the packing blew up; lower the "
-                            "time step or take smaller increments); the results before increment %d stand",
-                            increment, k, increment);
-    for (k = 0; k < w.n; ++k) {
-        double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, size, far = 0.0;
-        int q, c;
-        if (w.kinematic[k] || inside_frame(frame, w.x, &w.x[2 * k]))
-            continue;
-        for (q = 0; q < frame->n; ++q)
-            for (c = 0; c < 2; ++c) {
-                lo[c] = fmin(lo[c], w.x[2 * frame->particle[q] + c]);
-                hi[c] = fmax(hi[c], w.x[2 * frame->particle[q] + c]);
-            }
-        size = fmax(hi[0] - lo[0], hi[1] - lo[1]);
-        for (c = 0; c < 2; ++c)
-            far = fmax(far, fmax(lo[c] - w.x[2 * k + c], w.x[2 * k + c] - hi[c]));
-        if (far > size && hypot(w.v[2 * k], w.v[2 * k + 1]) > 0.0) /* a frame's width away and moving: thrown */
-            return sbc_fail(err, SBC_ERR_NUMERIC,
-                            "run: increment %d: interior particle %d was thrown %g m beyond the frame of width %g m (the "
-                            "packing blew up; lower the time step: with several contacts per particle the stable step "
-                            "is below the critical step of a contact pair); the results before increment %d stand",
-                            increment, k, far, size, increment);
-        return sbc_fail(err, SBC_ERR_GEOMETRY,
-                            "run: increment %d: interior particle %d escaped through a gap between frame particles "
-                            "(its centre (%g, %g) m is outside the polygon of the frame's centres); the results "
-                            "before increment %d stand",
-                            increment, k, w.x[2 * k], w.x[2 * k + 1], increment);
-    }
+            return sbc_confine_check(frame, fx, increment, k, &w.x[2 * k], &w.v[2 * k], err);
+    for (k = 0; k < w.n; ++k)
+        if (!w.kinematic[k] && (st = sbc_confine_check(frame, fx, increment, k, &w.x[2 * k], &w.v[2 * k], err)) != SBC_OK)
+            return st;
     return SBC_OK;
 }
 
@@ -222,6 +191,7 @@ typedef struct run_state {
     sbc_engine *engine;
     sbc_controller *ctl;
     double *mass;
+    double *fx; /* [2Q] the frame's centres for confine.h, m */
     FILE *csv;
     sbc_result *rows;
     int nrows, cap;
@@ -235,6 +205,7 @@ static void run_free(run_state *r)
     sbc_engine_free(r->engine);
     sbc_controller_free(r->ctl);
     free(r->mass);
+    free(r->fx);
     free(r->rows);
     if (r->csv)
         fclose(r->csv);
@@ -349,7 +320,8 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     }
     sbc_engine_set_frame(r.engine, &r.frame);
     r.mass = malloc(sizeof(double) * (size_t)r.frame.n);
-    if (!r.mass) {
+    r.fx = malloc(sizeof(double) * 2 * (size_t)r.frame.n);
+    if (!r.mass || !r.fx) {
         run_free(&r);
         return sbc_fail(err, SBC_ERR_NOMEM, "run: out of memory");
     }
@@ -382,10 +354,10 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         sbc_event ev = sbc_controller_step(r.ctl, &snap, err);
         /* an escaped disc explains a stalled servo better than its residuals do;
            looked for at every converged increment, every 10^4 steps and on failure */
-        if (ev == SBC_EVENT_FAILED || ++r.since_check == 10000) {
+        if (ev == SBC_EVENT_FAILED || ++r.since_check == SBC_CONFINE_EVERY) {
             sbc_error esc;
             r.since_check = 0;
-            if (check_confined(&r.frame, r.engine, r.increment_now, &esc) != SBC_OK) {
+            if (check_confined(&r.frame, r.engine, r.fx, r.increment_now, &esc) != SBC_OK) {
                 *err = esc;
                 st = err->status;
                 break;
@@ -398,7 +370,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
             const sbc_result *row = sbc_controller_result(r.ctl);
             r.increment_now = row->increment + 1;
-            if ((st = check_confined(&r.frame, r.engine, row->increment, err)) != SBC_OK) break;
+            if ((st = check_confined(&r.frame, r.engine, r.fx, row->increment, err)) != SBC_OK) break;
             if ((st = keep_row(&r, row, err)) != SBC_OK) break;
             if (r.csv && (st = sbc_csv_write(r.csv, row, err)) != SBC_OK) break;
             if ((st = write_snapshots(s, r.engine, row->increment, ev == SBC_EVENT_FINISHED, err)) != SBC_OK) break;

@@ -88,5 +88,24 @@ try:
 except servo_bc.ServoBCError as e:
     check('increment 1, iteration 0' in str(e) and 'half its radius' in str(e), 'divergence: %s' % e)
 
+# confinement (confine.h): the centre disc moved out through the right edge after
+# the frame is built stops the run at increment 0, whose row is not written
+servo_bc.O.reset()
+ids, _ = servo_bc.load_packing(packing, 2e3, 1e4, 0.0, 0.4)
+escape_csv = os.path.join(os.path.dirname(os.path.abspath(packing)), 'escape.csv')
+servo = servo_bc.ServoBC('D F 1.002 0 0 0.997 increments 2 relax 1e-22 20 file %s' % escape_csv, ids, 1e-5)
+servo_bc.O.engines = servo_bc.engines(servo, kn=1e4, ks=0.0)
+centre = [i for i in servo.interior if abs(servo_bc.O.bodies[i].state.pos[0] - 4e-3) < 1e-9
+          and abs(servo_bc.O.bodies[i].state.pos[1] - 4e-3) < 1e-9][0]
+servo_bc.O.bodies[centre].state.pos = (0.0105, 0.004, 0.0)
+try:
+    servo.run()
+    check(False, 'escaped disc: no error')
+except servo_bc.ServoBCError as e:
+    with open(escape_csv) as f:
+        lines = len(f.readlines())
+    check(('increment 0: interior particle %d escaped through a gap between frame particles (its centre (0.0105, '
+           '0.004) m' % centre) in str(e) and lines == 1, 'escaped disc: %s; the CSV keeps its header alone' % e)
+
 print('%d passed, %d failed' % (passed, failed))
 sys.exit(1 if failed else 0)

@@ -40,13 +40,24 @@ unsigned sbc_host_needs(const sbc_host *h, double ek, double ep);
 
 /* One host step (sbc_controller_step) with the snapshot's fields as
  * arguments; frame arrays may be NULL where sbc_host_needs allowed it.
- * Returns the sbc_event; on SBC_EVENT_INCREMENT and SBC_EVENT_FINISHED the
- * result row has been written to the CSV. On SBC_EVENT_FAILED the message is
- * in sbc_host_message. */
+ * Returns the sbc_event. The row of SBC_EVENT_INCREMENT and
+ * SBC_EVENT_FINISHED goes to the CSV once sbc_host_confined passes it (or at
+ * the next sbc_host_step, or sbc_host_free, for a host that does not check).
+ * On SBC_EVENT_FAILED the message is in sbc_host_message. */
 int sbc_host_step(sbc_host *h, double ek, double ep, double overlap_sum, long contact_count, double rotation_sum,
                   long particle_count, const double *x, const double *theta, const double *force,
                   const double *torque);
 const char *sbc_host_message(const sbc_host *h);
+
+/* confine.h for n interior particles (ids [n] for the message, centres xy
+ * [2n] in m, velocities vxy [2n] in m/s) against the frame's present centres
+ * frame_x [2Q] (frame order). Call it after SBC_EVENT_INCREMENT and
+ * SBC_EVENT_FINISHED (it then writes the pending row), after
+ * SBC_EVENT_FAILED (an escape explains a stalled servo) and every
+ * SBC_CONFINE_EVERY steps. Returns 0, or 1 with the message in
+ * sbc_host_message and the pending row dropped. */
+int sbc_host_confined(sbc_host *h, const double *frame_x, int n, const long *ids, const double *xy,
+                      const double *vxy);
 
 /* The commands in force: target positions [2Q] (m), rotations [Q] (rad),
  * free-rotation flags [Q]; valid until the next sbc_host_step. */

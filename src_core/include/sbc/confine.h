@@ -1,0 +1,31 @@
+/* servo_bc: is the packing still held by its frame? One check, shared by the
+ * embedded runner and every host, so that all of them stop alike.
+ *
+ * An interior particle whose centre has left the polygon of the frame's
+ * centres has slipped through a gap between frame particles: nothing confines
+ * it any more, and no later increment can be trusted (the mixed layer of
+ * Sect. 5.3 near increment 80, docs/cross-host.md). No generated packing or
+ * lattice starts with such a particle. The runner and the hosts check every
+ * 10^4 steps, at every converged increment (before its row is kept) and when
+ * the servo fails: an escaped particle explains a stalled servo better than
+ * its residuals do. */
+#ifndef SBC_CONFINE_H
+#define SBC_CONFINE_H
+
+#include "sbc/frame.h"
+
+/* Steps between two checks during a relaxation. */
+#define SBC_CONFINE_EVERY 10000
+
+/* One interior particle, numbered id by the host (for the message), at x [2]
+ * (m) with velocity v [2] (m/s), against the frame f whose centres are now
+ * fx [2Q] (m, frame order). increment: the increment under way, whose
+ * results are not kept when the check fails. Returns SBC_OK, or fails with
+ *   SBC_ERR_NUMERIC   a non-finite position, or a moving particle more than
+ *                     the frame's width beyond it (the packing blew up);
+ *   SBC_ERR_GEOMETRY  a particle that slipped out through a gap.
+ * O(Q). */
+sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment, long id, const double x[2],
+                             const double v[2], sbc_error *err);
+
+#endif
