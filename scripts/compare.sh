@@ -50,9 +50,11 @@ run() {
   (cd "$out" && "$@" > "$engine.log" 2>&1)
   rc=$?
   t1=$(date +%s.%N)
+  # the wall time of every run that left results, finished or stopped
+  [ -s "$out/$engine.csv" ] &&
+    echo "$engine $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')" >> "$out/times.txt"
   if [ $rc -eq 0 ] && [ -s "$out/$engine.csv" ]; then
     engines+=("$engine")
-    echo "$engine $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')" >> "$out/times.txt"
   else
     failed=1
     echo "compare: $engine failed (exit $rc): $(grep -a -m1 'ERROR' "$out/$engine.log" || tail -n 1 "$out/$engine.log")"
@@ -152,7 +154,7 @@ done
   echo "| engine | increments | wall time (s) | DEM steps | ns per particle-step | servo iterations | max Δσ̄ before the peak | max Δσ̄, whole path |"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
   for e in "${engines[@]}"; do
-    wall=$(awk -v e="$e" '$1 == e { print $2 }' "$out/times.txt")
+    wall=$(awk -v e="$e" '$1 == e { print $2 }' "$out/times.txt" 2>/dev/null)
     diffs=$(awk -F'|' '$3 ~ /σ̄/ { if ($4 + 0 > b) b = $4 + 0; if ($6 + 0 > w) w = $6 + 0; n++ }
       END { if (n) printf "%.3g|%.3g", b, w; else printf "|" }' "$out/diff_$e.md" 2>/dev/null || echo "|")
     awk -F, -v e="$e" -v wall="${wall:-nan}" -v n="$particles" -v d="${diffs:-|}" 'NR > 1 { inc++; steps += $17; it += $16 }
