@@ -56,8 +56,12 @@ static void run_lattice(const char *words, double ks, final_state *out)
     out->mass = malloc(sizeof(double) * (size_t)out->frame.n);
     sbc_engine_frame_masses(e, out->mass);
     c = sbc_controller_create(&out->frame, &s, out->mass, def.dt, &err);
-    CHECK(c != NULL);
     out->status = SBC_ERR_INPUT;
+    if (!c) { /* refused before the run: the status and message of the refusal */
+        out->status = err.status;
+        snprintf(out->message, sizeof out->message, "%s", err.message);
+    }
+    CHECK(c != NULL || (out->status == SBC_ERR_INPUT && out->message[0]));
     for (; c;) {
         sbc_event ev;
         sbc_commands cmd;

@@ -146,8 +146,6 @@ static sbc_status cmd_snapshots(int nw, char **w, int *every_out, char *prefix, 
     return SBC_OK;
 }
 
-/* 1 when point p lies inside the polygon of the frame particles' centres x,
- * taken in frame order (crossing number). */
 /* confine.h on every particle the frame does not move (their own index is
  * their id); a non-finite position anywhere is named first */
 static sbc_status check_confined(const sbc_frame *frame, const sbc_engine *engine, double *fx, int increment,
