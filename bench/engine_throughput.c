@@ -62,7 +62,7 @@ int main(int argc, char **argv)
         sbc_engine_frame_masses(e, mass);
         s.F[0] = s.F[3] = 0.999;
         s.increments = 1000000;
-        ctl = sbc_controller_create(&frame, &s, mass, def.dt, &err);
+        ctl = sbc_controller_create(&frame, &s, mass, def.dt, def.law.kn, &err);
     }
     t0 = now();
     for (k = 0; k < steps; ++k) {

@@ -2,7 +2,7 @@
 #ifndef SBC_TEST_CSV_READ_H
 #define SBC_TEST_CSV_READ_H
 
-#define CSV_COLS 20
+#define CSV_COLS 23
 
 /* Reads up to max rows of CSV_COLS numbers after the header; returns the
  * row count, -1 when the file is missing or a field is not a finite number. */

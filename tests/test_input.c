@@ -80,7 +80,7 @@ static const bad_case cases[] = {
      "density 2e3\ntimestep 1e-2\nservo_bc D\nrun\n",
      {"bad:7:", "timestep 0.01", "critical step"}},
     {HEAD "servo_bc D F 0.99 0 0 0.99 damping none max_relax_steps 500\nrun\n",
-     {"bad:7:", "increment 1", "did not reach Ek/Ep"}},
+     {"bad:7:", "increment 1", "did not reach force balance 1e-05"}},
     {"read_packing /nonexistent/packing.txt\n", {"bad:1:", "read_packing", "cannot open"}},
 };
 

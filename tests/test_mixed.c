@@ -119,7 +119,7 @@ void test_mixed(void)
     X0 = malloc(sizeof(double) * 2 * (size_t)f.n);
     memcpy(X0, f.X, sizeof(double) * 2 * (size_t)f.n);
     sbc_engine_frame_masses(e, mass);
-    c = sbc_controller_create(&f, &s, mass, DT, &err);
+    c = sbc_controller_create(&f, &s, mass, DT, d.law.kn, &err);
     CHECK(c != NULL);
     if (!c) return;
     sbc_engine_step(e, &err);

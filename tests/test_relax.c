@@ -11,53 +11,108 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+/* one step of the energy criterion (eq. 11) */
+static int upd(sbc_relax *r, double ek, double ep)
+{
+    sbc_relax_sample s = {ek, ep, 0.0, 0, 0.0, 0};
+    return sbc_relax_update(r, &s);
+}
+
+static void start_energy(sbc_relax *r, double tol, int window, int at_rest)
+{
+    sbc_relax_floor(r, 0.0, 0.0);
+    sbc_relax_start(r, SBC_CRITERION_ENERGY, tol, window, at_rest);
+}
+
+/* the force criterion (relax.h (a), (b)) on made-up samples */
+static void force_alone(void)
+{
+    sbc_relax r;
+    int k, done = 0;
+    sbc_relax_floor(&r, 1e-9, 1e-15);
+    sbc_relax_start(&r, SBC_CRITERION_FORCE, 1e-4, 5, 0);
+    {
+        /* one vibration mode of amplitude 100 tol: the net force passes zero
+           every half period (here 200 steps) while the kinetic energy peaks;
+           (a) alone would hold for ~13 steps around each zero, (b) refuses */
+        for (k = 0; k < 2000 && !done; ++k) {
+            double ph = 3.14159265358979323846 * k / 200.0, a = 1e-2;
+            sbc_relax_sample s = {0.5 * a * a * cos(ph) * cos(ph), 1.0, 10.0 * a * fabs(sin(ph)), 10, 10.0, 10};
+            done = sbc_relax_update(&r, &s);
+        }
+        CHECK(!done);
+    }
+    /* balanced (U = 5e-5, Ek/Ep = 1e-9 <= tol^2 / 2): after the window */
+    sbc_relax_start(&r, SBC_CRITERION_FORCE, 1e-4, 5, 0);
+    for (k = 0, done = 0; k < 5; ++k) {
+        sbc_relax_sample s = {1e-9, 1.0, 5e-4, 10, 10.0, 10};
+        done = sbc_relax_update(&r, &s);
+        CHECK(done == (k == 4));
+    }
+    CHECK(fabs(r.unbalanced - 5e-5) < 1e-18);
+    /* unmeasured contact sums never count */
+    sbc_relax_start(&r, SBC_CRITERION_FORCE, 1e-4, 1, 0);
+    {
+        sbc_relax_sample s = {0.0, SBC_RELAX_EP_UNMEASURED, 0.0, 10, 0.0, 0};
+        CHECK(!sbc_relax_update(&r, &s));
+    }
+    /* a stress-free packing: forces of 1e-16 N against contact forces of
+       1e-16 N (U = 1) relax on the floor 1e-9 N */
+    sbc_relax_start(&r, SBC_CRITERION_FORCE, 1e-4, 5, 0);
+    for (k = 0, done = 0; k < 5; ++k) {
+        sbc_relax_sample s = {1e-40, 1e-35, 1e-15, 10, 1e-15, 10};
+        done = sbc_relax_update(&r, &s);
+    }
+    CHECK(done);
+}
+
 static void criterion_alone(void)
 {
     sbc_relax r;
     int k, done = 0;
     /* Ek rising from rest with a tiny ratio: no relaxation accepted */
-    sbc_relax_start(&r, 1e-3, 20, 0);
+    start_energy(&r, 1e-3, 20, 0);
     for (k = 1; k <= 200 && !done; ++k)
-        done = sbc_relax_update(&r, 1e-12 * k * k, 1.0);
+        done = upd(&r, 1e-12 * k * k, 1.0);
     CHECK(!done);
     /* after the maximum: exactly `window` steps below tolerance are needed */
     for (k = 0; k < 19; ++k)
-        CHECK(!sbc_relax_update(&r, 1e-9 / (k + 1.0), 1.0));
-    CHECK(sbc_relax_update(&r, 1e-10, 1.0));
+        CHECK(!upd(&r, 1e-9 / (k + 1.0), 1.0));
+    CHECK(upd(&r, 1e-10, 1.0));
     /* a step above the tolerance resets the count */
-    sbc_relax_start(&r, 1e-3, 3, 0);
-    sbc_relax_update(&r, 1e-4, 1.0);
-    sbc_relax_update(&r, 2e-4, 1.0);
-    CHECK(!sbc_relax_update(&r, 1e-4, 1.0)); /* past the peak: 1 */
-    CHECK(!sbc_relax_update(&r, 2e-3, 1.0)); /* above tolerance: reset */
-    CHECK(!sbc_relax_update(&r, 1e-4, 1.0)); /* 1 */
-    CHECK(!sbc_relax_update(&r, 1e-5, 1.0)); /* 2 */
-    CHECK(sbc_relax_update(&r, 1e-6, 1.0));  /* 3 */
+    start_energy(&r, 1e-3, 3, 0);
+    upd(&r, 1e-4, 1.0);
+    upd(&r, 2e-4, 1.0);
+    CHECK(!upd(&r, 1e-4, 1.0)); /* past the peak: 1 */
+    CHECK(!upd(&r, 2e-3, 1.0)); /* above tolerance: reset */
+    CHECK(!upd(&r, 1e-4, 1.0)); /* 1 */
+    CHECK(!upd(&r, 1e-5, 1.0)); /* 2 */
+    CHECK(upd(&r, 1e-6, 1.0));  /* 3 */
     /* no motion at all: accepted after `window` steps */
-    sbc_relax_start(&r, 1e-3, 5, 0);
+    start_energy(&r, 1e-3, 5, 0);
     for (k = 0; k < 4; ++k)
-        CHECK(!sbc_relax_update(&r, 0.0, 1.0));
-    CHECK(sbc_relax_update(&r, 0.0, 1.0));
+        CHECK(!upd(&r, 0.0, 1.0));
+    CHECK(upd(&r, 0.0, 1.0));
     /* Ep = 0 with motion (free flight) is never relaxed */
-    sbc_relax_start(&r, 1e-3, 2, 0);
+    start_energy(&r, 1e-3, 2, 0);
     for (k = 0, done = 0; k < 100; ++k)
-        done |= sbc_relax_update(&r, 1.0 + (k % 2), 0.0);
+        done |= upd(&r, 1.0 + (k % 2), 0.0);
     CHECK(!done);
     /* at rest (frame not moved), Ek rising at round-off (Ek/Ep = 1e-30 k^2):
      * the floor counts without a maximum, from the first step */
-    sbc_relax_start(&r, 1e-3, 20, 1);
+    start_energy(&r, 1e-3, 20, 1);
     for (k = 1, done = 0; k <= 200 && !done; ++k)
-        done = sbc_relax_update(&r, 1e-30 * k * k, 1.0);
+        done = upd(&r, 1e-30 * k * k, 1.0);
     CHECK(done && k - 1 == 20);
     /* ... but not above the floor (1e-19 k^2 > 1e-20), and never above tolE
      * when tolE is below the floor */
-    sbc_relax_start(&r, 1e-3, 20, 1);
+    start_energy(&r, 1e-3, 20, 1);
     for (k = 1, done = 0; k <= 200 && !done; ++k)
-        done = sbc_relax_update(&r, 1e-19 * k * k, 1.0);
+        done = upd(&r, 1e-19 * k * k, 1.0);
     CHECK(!done);
-    sbc_relax_start(&r, 1e-22, 20, 1);
+    start_energy(&r, 1e-22, 20, 1);
     for (k = 1, done = 0; k <= 200 && !done; ++k)
-        done = sbc_relax_update(&r, 1e-21, 1.0);
+        done = upd(&r, 1e-21, 1.0);
     CHECK(!done);
 }
 
@@ -104,8 +159,8 @@ static void perturbed_packing(double tol, double dt, double offset, long *stop_o
     ratio = malloc(sizeof(double) * (size_t)maxsteps);
     /* the frame is not moved: the round-off floor applies, and must not end
        the relaxation of this unbalanced packing early */
-    sbc_relax_start(&r, tol, WINDOW, 1);
-    sbc_relax_start(&lazy, tol, WINDOW, 1);
+    start_energy(&r, tol, WINDOW, 1);
+    start_energy(&lazy, tol, WINDOW, 1);
     for (k = 0; k < maxsteps; ++k) {
         int done, need;
         sbc_engine_step(e, &err);
@@ -113,11 +168,14 @@ static void perturbed_packing(double tol, double dt, double offset, long *stop_o
         ratio[k] = snap.kinetic_energy / snap.potential_energy;
         run = ratio[k] <= tol ? run + 1 : 0;
         if (literal < 0 && run >= WINDOW) literal = k;
-        need = sbc_relax_needs_potential(&lazy, snap.kinetic_energy);
-        measured += need;
-        done = sbc_relax_update(&r, snap.kinetic_energy, snap.potential_energy);
-        same &= done == sbc_relax_update(&lazy, snap.kinetic_energy,
-                                         need ? snap.potential_energy : SBC_RELAX_EP_UNMEASURED);
+        {
+            sbc_relax_sample full = {snap.kinetic_energy, snap.potential_energy, 0.0, 0, 0.0, 0}, part = full;
+            part.ep = SBC_RELAX_EP_UNMEASURED;
+            need = sbc_relax_needs_contacts(&lazy, &part);
+            measured += need;
+            done = sbc_relax_update(&r, &full);
+            same &= done == sbc_relax_update(&lazy, need ? &full : &part);
+        }
         if (done) {
             stop = k;
             break;
@@ -154,6 +212,7 @@ void test_relax(void)
     long stop, literal;
     double fmax, measured;
     criterion_alone();
+    force_alone();
     /* the paper's tolE and dt, 30 um offset: the literal criterion stops at
      * step 19 (nothing relaxed); ours waits for the first Ek maximum */
     perturbed_packing(1e-3, 1e-6, 30e-6, &stop, &literal, &fmax, &measured);

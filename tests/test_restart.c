@@ -48,7 +48,7 @@ void test_restart(void)
     e = sbc_engine_create(&def, &err);
     sbc_engine_set_frame(e, &f);
     sbc_engine_frame_masses(e, mass);
-    a = sbc_controller_create(&f, &s, mass, def.dt, &err);
+    a = sbc_controller_create(&f, &s, mass, def.dt, def.law.kn, &err);
     /* run into the middle of increment 1's servo iterations */
     for (step = 0; step < 200000 && !done; ++step) {
         sbc_snapshot snap;
@@ -75,7 +75,7 @@ void test_restart(void)
     n = sbc_controller_state_size(a);
     state = malloc(sizeof(double) * n);
     sbc_controller_save(a, state);
-    b = sbc_controller_create(&g, &s, mass, def.dt, &err);
+    b = sbc_controller_create(&g, &s, mass, def.dt, def.law.kn, &err);
     CHECK(sbc_controller_load(b, state, n, &err) == SBC_OK);
     for (done = 0; step < 2000000 && !done; ++step) {
         sbc_snapshot snap;
@@ -98,19 +98,19 @@ void test_restart(void)
     /* settings that contradict the saved path are refused, by name */
     parse(&bad, "P F 0.99 -0.03 -0.02 0.99 increments 3");
     sbc_controller_free(b);
-    b = sbc_controller_create(&g, &bad, mass, def.dt, &err);
+    b = sbc_controller_create(&g, &bad, mass, def.dt, def.law.kn, &err);
     CHECK(sbc_controller_load(b, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "keyword 'F': F12"));
     sbc_controller_free(b);
     parse(&bad, "T F 0.99 -0.02 -0.02 0.99 increments 3");
-    b = sbc_controller_create(&g, &bad, mass, def.dt, &err);
+    b = sbc_controller_create(&g, &bad, mass, def.dt, def.law.kn, &err);
     CHECK(sbc_controller_load(b, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "contradicts the saved P"));
     sbc_controller_free(b);
     parse(&bad, "P F 0.99 -0.02 -0.02 0.99 increments 4");
-    b = sbc_controller_create(&g, &bad, mass, def.dt, &err);
+    b = sbc_controller_create(&g, &bad, mass, def.dt, def.law.kn, &err);
     CHECK(sbc_controller_load(b, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "'increments': 4"));
     sbc_controller_free(b);
     /* another time step: other gains (eq. 37), refused */
-    b = sbc_controller_create(&g, &s, mass, 0.5 * def.dt, &err);
+    b = sbc_controller_create(&g, &s, mass, 0.5 * def.dt, def.law.kn, &err);
     CHECK(sbc_controller_load(b, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "time step"));
     sbc_controller_free(b);
     free(state);

@@ -55,7 +55,7 @@ static void run_lattice(const char *words, double ks, final_state *out)
     sbc_engine_set_frame(e, &out->frame);
     out->mass = malloc(sizeof(double) * (size_t)out->frame.n);
     sbc_engine_frame_masses(e, out->mass);
-    c = sbc_controller_create(&out->frame, &s, out->mass, def.dt, &err);
+    c = sbc_controller_create(&out->frame, &s, out->mass, def.dt, def.law.kn, &err);
     out->status = SBC_ERR_INPUT;
     if (!c) { /* refused before the run: the status and message of the refusal */
         out->status = err.status;
@@ -341,7 +341,7 @@ static void divergence(void)
     char csv[512], script[1024];
     static double rows[8][CSV_COLS];
     sbc_error err;
-    run_lattice("P F 0.99 -0.02 -0.02 0.99 increments 2 tol_force 1e-14 gain_force 1e9", 2e3, &f);
+    run_lattice("P F 0.99 -0.02 -0.02 0.99 increments 2 tol_force 1e-14 gain_force 1e9 update fixed", 2e3, &f);
     CHECK(f.status == SBC_ERR_DIVERGED);
     CHECK(strstr(f.message, "servo_bc P: increment 1, iteration 0") && strstr(f.message, "half its radius") &&
           strstr(f.message, "r_force =") && strstr(f.message, "lower gain_force"));
@@ -362,23 +362,29 @@ static void divergence(void)
     CHECK(csv_read(csv, rows, 8) >= 0); /* header at least, every field finite */
 }
 
-/* An increment whose first step would move a frame particle by more than
- * half a radius is refused, with the jump in radii and how many more
+/* With the frame moved in one step (speed 0, accuracy paper), an increment
+ * whose first step would move a frame particle by more than half a radius is
+ * refused, with the jump in radii and how many more
  * increments it takes. F12 = 0.3 in one increment moves the top frame
  * particles of the 5 x 5 lattice (X2 = 8 mm) by 0.3 * 8 / 1.02 = 2.353 radii:
  * five times as many increments (0.471 radii each) pass. */
 static void first_step_jump(void)
 {
     final_state f;
-    run_lattice("D F 1 0.3 0 1 increments 1", 2e3, &f);
+    run_lattice("D F 1 0.3 0 1 increments 1 speed 0", 2e3, &f);
     CHECK(f.status == SBC_ERR_INPUT);
     CHECK(strstr(f.message, "servo_bc D: increment 1: its first step moves frame particle") &&
           strstr(f.message, "by 2.35 radii") && strstr(f.message, "take at least 5 times as many increments"));
     final_free(&f);
-    run_lattice("P F 1 0.3 0 1 increments 4", 2e3, &f); /* 0.588 radii */
+    run_lattice("P F 1 0.3 0 1 increments 4 accuracy paper", 2e3, &f); /* 0.588 radii */
     CHECK(f.status == SBC_ERR_INPUT && strstr(f.message, "by 0.588 radii") && strstr(f.message, "at least 2 times"));
     final_free(&f);
-    run_lattice("D F 1 0.3 0 1 increments 5", 2e3, &f);
+    run_lattice("D F 1 0.3 0 1 increments 5 speed 0", 2e3, &f);
+    CHECK(f.status == SBC_OK && fabs(f.F[1] - 0.3) < 1e-15);
+    final_free(&f);
+    /* a frame that travels (speed > 0, the presets) does not jump: the same
+       2.35 radii in one increment converge */
+    run_lattice("D F 1 0.3 0 1 increments 1", 2e3, &f);
     CHECK(f.status == SBC_OK && fabs(f.F[1] - 0.3) < 1e-15);
     final_free(&f);
 }

@@ -5,6 +5,7 @@
 
 #include "sbc/homogenize.h"
 #include "sbc/relax.h"
+#include "motion.h"
 #include "servo.h"
 
 #include <float.h>
@@ -21,6 +22,8 @@ struct sbc_controller {
     unsigned char P_fixed[4]; /* mixed: 1 where P_star holds (prescribed, or 0 in the stress stage) */
     sbc_settings s;
     double dt;           /* s */
+    double kn;           /* the host's normal contact stiffness, N/m (0: unknown) */
+    sbc_motion motion;   /* the frame's travel to the commands (motion.h) */
     double *mass;        /* [Q] kg */
     int increment;       /* 0 .. i_tot */
     sbc_relax relax;
@@ -89,6 +92,11 @@ static void mixed_stress_targets(sbc_controller *c)
     }
 }
 
+static double relax_tol(const sbc_settings *s)
+{
+    return s->criterion == SBC_CRITERION_FORCE ? s->tol_balance : s->tol_E;
+}
+
 /* Step 1.1 of Tables 1-3 (2.1 of Table 2): the frame commands that open an
  * increment. (D), (P): x_q = F X_q and Q_q = I; (T): x_q = F X_q with free
  * rotations. With prediction (n_f > 0, increments >= 1), the edge particles
@@ -119,8 +127,23 @@ static void start_classic(sbc_controller *c)
     }
 }
 
+/* The frame travels from the commands saved in c->motion to those in
+ * x_cmd, theta_cmd (motion.h); the relaxation starts once it is there. */
+static void begin_move(sbc_controller *c, int at_rest)
+{
+    sbc_motion_begin(&c->motion, c->frame, c->mass, c->kn, c->dt, c->s.speed, c->x_cmd, c->theta_cmd);
+    sbc_relax_start(&c->relax, c->s.criterion, relax_tol(&c->s), c->s.window, at_rest);
+}
+
+static void save_commands(sbc_controller *c)
+{
+    memcpy(c->motion.x_from, c->x_cmd, sizeof(double) * 2 * (size_t)c->frame->n);
+    memcpy(c->motion.th_from, c->theta_cmd, sizeof(double) * (size_t)c->frame->n);
+}
+
 static void start_increment(sbc_controller *c)
 {
+    save_commands(c);
     if (c->s.bc == SBC_BC_MIXED) {
         start_mixed(c);
         mixed_stress_targets(c);
@@ -134,7 +157,7 @@ static void start_increment(sbc_controller *c)
     c->win_min = c->prev_min = DBL_MAX;
     c->steps = 0;
     memset(&c->norms, 0, sizeof c->norms);
-    sbc_relax_start(&c->relax, c->s.tol_E, c->s.window, c->increment == 0);
+    begin_move(c, c->increment == 0);
 }
 
 /* Modes of each frame position from the edge modes of the settings. Corners
@@ -184,7 +207,7 @@ static int increments_too_coarse(const sbc_controller *c, sbc_error *err)
             worst = q;
         }
     }
-    if (jump <= 0.5)
+    if (jump <= 0.5 || (c->s.speed > 0.0 && c->kn > 0.0)) /* a travelling frame does not jump */
         return 0;
     sbc_fail(err, SBC_ERR_INPUT,
              "servo_bc %s: increment %d: its first step moves frame particle %d (position %d of the frame) by %.3g "
@@ -194,13 +217,34 @@ static int increments_too_coarse(const sbc_controller *c, sbc_error *err)
     return 1;
 }
 
+/* The absolute floors of the force criterion (relax.h): a force of the
+ * stiffness kn times 1e-12 of the sample's size plus a radius, which is
+ * about 1e4 times the round-off of a position, and the energy of such forces
+ * on every particle (the interior estimated from the frame, ~(Q/4)^2). */
+static void set_floors(sbc_controller *c)
+{
+    const sbc_frame *f = c->frame;
+    double size = 0.0, R = 0.0, force, n = 1.0 + (double)f->n * (double)f->n / 16.0;
+    int q;
+    for (q = 0; q < f->n; ++q) {
+        size = fmax(size, fmax(fabs(f->X[2 * q]), fabs(f->X[2 * q + 1])));
+        R += f->R[q] / f->n;
+    }
+    force = 1e-12 * c->kn * (size + R);
+    sbc_relax_floor(&c->relax, force, c->kn > 0.0 ? n * force * force / (2.0 * c->kn) : 0.0);
+}
+
 sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings *settings, const double *mass,
-                                      double dt, sbc_error *err)
+                                      double dt, double kn, sbc_error *err)
 {
     sbc_controller *c;
     size_t q = (size_t)frame->n;
     if (!(dt > 0.0) || !isfinite(dt)) {
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc: time step %g s is not positive", dt);
+        return NULL;
+    }
+    if (!(kn >= 0.0) || !isfinite(kn)) {
+        sbc_fail(err, SBC_ERR_INPUT, "servo_bc: contact stiffness kn = %g N/m is not >= 0", kn);
         return NULL;
     }
     c = calloc(1, sizeof *c);
@@ -210,6 +254,7 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     }
     c->s = *settings;
     c->dt = dt;
+    c->kn = kn;
     c->total = sbc_settings_total_increments(settings);
     {
         /* a deep copy through the restart layout */
@@ -240,13 +285,15 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     c->dtheta = calloc(q, sizeof(double));
     c->d_prev = calloc(3 * q, sizeof(double));
     c->lambda = 1.0;
-    if (!c->d_prev || !c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du ||
+    if (!sbc_motion_alloc(&c->motion, frame->n) || !c->d_prev || !c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du ||
         !c->dtheta || !c->mode) {
         sbc_controller_free(c);
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
         return NULL;
     }
     memcpy(c->mass, mass, sizeof(double) * q);
+    memcpy(c->x_cmd, c->frame->X, sizeof(double) * 2 * q); /* where the frame stands before increment 0 */
+    set_floors(c);
     if (c->s.bc == SBC_BC_MIXED)
         assign_modes(c);
     if (c->s.bc == SBC_BC_P || c->s.bc == SBC_BC_MIXED) {
@@ -289,6 +336,7 @@ void sbc_controller_free(sbc_controller *c)
     free(c->du);
     free(c->dtheta);
     free(c->d_prev);
+    sbc_motion_free(&c->motion);
     free(c);
 }
 
@@ -340,23 +388,38 @@ static int frame_finite(const sbc_frame *f, const sbc_snapshot *s, const char **
     return 1;
 }
 
-static int potential_needed(const sbc_controller *c, double ek)
+static sbc_relax_sample sample_of(const sbc_snapshot *s)
 {
-    return sbc_relax_needs_potential(&c->relax, ek) || c->relax.steps + 1 >= c->s.max_relax_steps;
+    sbc_relax_sample r;
+    r.ek = s->kinetic_energy;
+    r.ep = s->potential_energy;
+    r.net_sum = s->unbalanced_sum;
+    r.net_count = s->unbalanced_count;
+    r.contact_sum = s->contact_force_sum;
+    r.contact_count = s->contact_count;
+    return r;
 }
 
-unsigned sbc_controller_needs(const sbc_controller *c, double ek, double ep)
+static int contacts_needed(const sbc_controller *c, const sbc_relax_sample *s)
+{
+    return sbc_relax_needs_contacts(&c->relax, s) || c->relax.steps + 1 >= c->s.max_relax_steps;
+}
+
+unsigned sbc_controller_needs(const sbc_controller *c, const sbc_snapshot *snap)
 {
     sbc_relax next = c->relax;
+    sbc_relax_sample s = sample_of(snap);
     unsigned need = 0;
-    if (!isfinite(ek) || c->increment > c->total)
-        return SBC_NEED_POTENTIAL | SBC_NEED_FRAME; /* step reports it */
-    if (potential_needed(c, ek)) {
-        need |= SBC_NEED_POTENTIAL;
-        if (!(ep >= 0.0))
+    if (!isfinite(s.ek) || !isfinite(s.net_sum) || c->increment > c->total)
+        return SBC_NEED_CONTACTS | SBC_NEED_FRAME; /* step reports it */
+    if (c->motion.done < c->motion.steps)
+        return 0; /* the frame is travelling: nothing is read */
+    if (contacts_needed(c, &s)) {
+        need |= SBC_NEED_CONTACTS;
+        if (!(s.ep >= 0.0))
             return need;
     }
-    if (sbc_relax_update(&next, ek, ep))
+    if (sbc_relax_update(&next, &s))
         need |= SBC_NEED_FRAME;
     return need;
 }
@@ -386,6 +449,8 @@ static sbc_status measure(sbc_controller *c, const sbc_snapshot *snap, sbc_error
     r->r_force = c->norms.r_force;
     r->r_moment = c->norms.r_moment;
     r->r_deformation = c->norms.r_deformation;
+    r->unbalanced = c->relax.unbalanced;
+    r->frame_residual = c->s.bc == SBC_BC_D ? 0.0 : c->norms.relative_force;
     return SBC_OK;
 }
 
@@ -494,6 +559,48 @@ static int correction_moves_frame(const sbc_controller *c)
     return 0;
 }
 
+/* (T): after a force correction, the frame is put back on the imposed F
+ * (eq. 15) exactly, by the smallest change of the commands in the metric of
+ * the area vectors:
+ *   x_q += M S^-1 A_q,  M = F G - sum_r x_r (x) A_r,  S = sum_r A_r (x) A_r,
+ * G = sum_r X_r (x) A_r (eq. 15 normalized as sbc_homogenize_F does), since
+ * sum_q (M S^-1 A_q) (x) A_q = M. The force correction then only moves the
+ * frame within the set of positions that keep F, and the deformation
+ * residual of eq. 35 stays at round-off instead of being won back at
+ * g_F per iteration (the stall near F12 = 0.2 of the irregular packing). */
+static void restore_eq15(sbc_controller *c)
+{
+    const sbc_frame *f = c->frame;
+    const double *F = c->F_now;
+    double S[4] = {0.0, 0.0, 0.0, 0.0}, G[4] = {0.0, 0.0, 0.0, 0.0}, X[4] = {0.0, 0.0, 0.0, 0.0}, M[4], Si[4], det;
+    int q, i, j;
+    for (q = 0; q < f->n; ++q) {
+        const double *A = &f->A[2 * q];
+        for (i = 0; i < 2; ++i)
+            for (j = 0; j < 2; ++j) {
+                S[2 * i + j] += A[i] * A[j];
+                G[2 * i + j] += f->X[2 * q + i] * A[j];
+                X[2 * i + j] += c->x_cmd[2 * q + i] * A[j];
+            }
+    }
+    det = sbc_det2(S);
+    if (!(fabs(det) > 0.0))
+        return;
+    Si[0] = S[3] / det;
+    Si[1] = -S[1] / det;
+    Si[2] = -S[2] / det;
+    Si[3] = S[0] / det;
+    for (i = 0; i < 2; ++i)
+        for (j = 0; j < 2; ++j)
+            M[2 * i + j] = F[2 * i] * G[j] + F[2 * i + 1] * G[2 + j] - X[2 * i + j];
+    for (q = 0; q < f->n; ++q) {
+        const double *A = &f->A[2 * q];
+        const double b0 = Si[0] * A[0] + Si[1] * A[1], b1 = Si[2] * A[0] + Si[3] * A[1];
+        c->x_cmd[2 * q] += M[0] * b0 + M[1] * b1;
+        c->x_cmd[2 * q + 1] += M[2] * b0 + M[3] * b1;
+    }
+}
+
 /* update secant: the largest correction of one frame particle, in radii.
  * Larger corrections cost fewer iterations but move the frame back and forth
  * through frictional contacts, which then slip along another path: on the
@@ -549,6 +656,7 @@ static void secant_scale(sbc_controller *c, sbc_servo_norms *n)
 sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
 {
     const char *what = NULL;
+    const sbc_relax_sample sample = sample_of(snap);
     if (c->increment > c->total) {
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: the loading path is already finished", sbc_bc_name(c->s.bc));
         return SBC_EVENT_FAILED;
@@ -561,20 +669,42 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
                  isfinite(snap->kinetic_energy) ? "potential energy" : "kinetic energy");
         return SBC_EVENT_FAILED;
     }
-    if (snap->potential_energy < 0.0 && potential_needed(c, snap->kinetic_energy)) {
+    if (sbc_motion_advance(&c->motion, c->frame->n, c->x_cmd, c->theta_cmd)) {
+        c->steps++;
+        return SBC_EVENT_CORRECTED; /* the frame travels on (motion.h) */
+    }
+    if (!isfinite(snap->unbalanced_sum) || snap->unbalanced_sum < 0.0 || snap->unbalanced_count < 0 ||
+        snap->contact_count < 0 || !(snap->contact_force_sum >= 0.0 || snap->potential_energy < 0.0)) {
+        sbc_fail(err, SBC_ERR_NUMERIC,
+                 "servo_bc %s: increment %d, relaxation step %ld: the host passed invalid force sums (net %g N over "
+                 "%ld particles, contacts %g N over %ld)",
+                 sbc_bc_name(c->s.bc), c->increment, c->relax.steps + 1, snap->unbalanced_sum, snap->unbalanced_count,
+                 snap->contact_force_sum, snap->contact_count);
+        return SBC_EVENT_FAILED;
+    }
+    if (snap->potential_energy < 0.0 && contacts_needed(c, &sample)) {
         sbc_fail(err, SBC_ERR_INPUT,
                  "servo_bc %s: increment %d, relaxation step %ld: the host left Ep unmeasured although "
                  "sbc_controller_needs asked for it",
                  sbc_bc_name(c->s.bc), c->increment, c->relax.steps + 1);
         return SBC_EVENT_FAILED;
     }
-    if (!sbc_relax_update(&c->relax, snap->kinetic_energy, snap->potential_energy)) {
+    if (!sbc_relax_update(&c->relax, &sample)) {
         if (c->relax.steps >= c->s.max_relax_steps) {
-            sbc_fail(err, SBC_ERR_DIVERGED,
-                     "servo_bc %s: increment %d: relaxation did not reach Ek/Ep <= %g for %d steps within %ld "
-                     "steps (Ek = %g J, Ep = %g J); check damping and time step, or raise max_relax_steps",
-                     sbc_bc_name(c->s.bc), c->increment, c->s.tol_E, c->s.window, c->relax.steps,
-                     snap->kinetic_energy, snap->potential_energy);
+            if (c->s.criterion == SBC_CRITERION_FORCE)
+                sbc_fail(err, SBC_ERR_DIVERGED,
+                         "servo_bc %s: increment %d, iteration %d: relaxation did not reach force balance %g for %d "
+                         "steps within %ld steps (unbalanced force ratio %.3g, Ek = %g J, Ep = %g J); check damping "
+                         "and time step, loosen 'balance' or raise max_relax_steps",
+                         sbc_bc_name(c->s.bc), c->increment, c->iteration, c->s.tol_balance, c->s.window,
+                         c->relax.steps, c->relax.unbalanced, snap->kinetic_energy, snap->potential_energy);
+            else
+                sbc_fail(err, SBC_ERR_DIVERGED,
+                         "servo_bc %s: increment %d, iteration %d: relaxation did not reach Ek/Ep <= %g for %d steps "
+                         "within %ld steps (Ek = %g J, Ep = %g J); check damping and time step, or raise "
+                         "max_relax_steps",
+                         sbc_bc_name(c->s.bc), c->increment, c->iteration, c->s.tol_E, c->s.window, c->relax.steps,
+                         snap->kinetic_energy, snap->potential_energy);
             return SBC_EVENT_FAILED;
         }
         return SBC_EVENT_RELAXING;
@@ -644,20 +774,23 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
         }
         if (c->s.update == SBC_UPDATE_SECANT)
             secant_scale(c, &nrm);
-        if (nrm.max_step > 0.5) {
+        if (nrm.max_step > 0.5) { /* fixed gains only: the secant update caps its steps */
             diverged(c, &nrm, "a correction moved a frame particle by more than half its radius", 0, err);
             return SBC_EVENT_FAILED;
         }
         {
             const int moved = correction_moves_frame(c);
             int k;
+            save_commands(c);
             for (k = 0; k < 2 * c->frame->n; ++k)
                 c->x_cmd[k] += c->du[k];
             for (k = 0; k < c->frame->n; ++k)
                 c->theta_cmd[k] += c->dtheta[k];
             c->servo = 1;
             c->iteration++;
-            sbc_relax_start(&c->relax, c->s.tol_E, c->s.window, !moved);
+            if (c->s.bc == SBC_BC_T && c->s.update != SBC_UPDATE_FIXED)
+                restore_eq15(c);
+            begin_move(c, !moved);
         }
         return SBC_EVENT_CORRECTED;
     }
@@ -666,16 +799,18 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
 
 /* Restart layout (doubles): version, Q, bc, increments, F (4), dt | increment, servo,
  * iteration, r_first, steps, norms (4), relax (steps, count, rising, past_peak,
- * ek_prev, at_rest), lambda, have_prev, win_min, prev_min, F_prev (4), F_now (4) | result (21) | x_cmd (2Q),
- * theta_cmd (Q), free_rot (Q), x_prev (2Q), reference X (2Q), d_prev (3Q). */
-#define STATE_VERSION 5.0
+ * ek_prev, at_rest), lambda, have_prev, win_min, prev_min, F_prev (4), F_now (4), relax (known_step, ep_known,
+ * ek_known, fc_known, unbalanced), motion (steps, done) | result (23) | x_cmd (2Q),
+ * theta_cmd (Q), free_rot (Q), x_prev (2Q), reference X (2Q), d_prev (3Q), motion (x_from, x_goal 4Q,
+ * th_from, th_goal 2Q). */
+#define STATE_VERSION 6.0
 #define STATE_HEAD 9
-#define STATE_SCALARS 27
-#define STATE_RESULT 21
+#define STATE_SCALARS 34
+#define STATE_RESULT 23
 
 size_t sbc_controller_state_size(const sbc_controller *c)
 {
-    return STATE_HEAD + STATE_SCALARS + STATE_RESULT + 11 * (size_t)c->frame->n;
+    return STATE_HEAD + STATE_SCALARS + STATE_RESULT + 17 * (size_t)c->frame->n;
 }
 
 static double *put_result(const sbc_result *r, double *o)
@@ -693,6 +828,8 @@ static double *put_result(const sbc_result *r, double *o)
     *o++ = r->r_moment;
     *o++ = r->r_deformation;
     *o++ = r->hill_mandel;
+    *o++ = r->unbalanced;
+    *o++ = r->frame_residual;
     return o;
 }
 
@@ -711,6 +848,8 @@ static const double *get_result(sbc_result *r, const double *in)
     r->r_moment = *in++;
     r->r_deformation = *in++;
     r->hill_mandel = *in++;
+    r->unbalanced = *in++;
+    r->frame_residual = *in++;
     return in;
 }
 
@@ -744,6 +883,13 @@ void sbc_controller_save(const sbc_controller *c, double *o)
     *o++ = c->prev_min;
     for (k = 0; k < 4; ++k) *o++ = c->F_prev[k];
     for (k = 0; k < 4; ++k) *o++ = c->F_now[k];
+    *o++ = (double)c->relax.known_step;
+    *o++ = c->relax.ep_known;
+    *o++ = c->relax.ek_known;
+    *o++ = c->relax.fc_known;
+    *o++ = c->relax.unbalanced;
+    *o++ = (double)c->motion.steps;
+    *o++ = (double)c->motion.done;
     o = put_result(&c->result, o);
     for (k = 0; k < 2 * q; ++k) *o++ = c->x_cmd[k];
     for (k = 0; k < q; ++k) *o++ = c->theta_cmd[k];
@@ -751,6 +897,10 @@ void sbc_controller_save(const sbc_controller *c, double *o)
     for (k = 0; k < 2 * q; ++k) *o++ = c->x_prev[k];
     for (k = 0; k < 2 * q; ++k) *o++ = c->ref.X[k];
     for (k = 0; k < 3 * q; ++k) *o++ = c->d_prev[k];
+    for (k = 0; k < 2 * q; ++k) *o++ = c->motion.x_from[k];
+    for (k = 0; k < 2 * q; ++k) *o++ = c->motion.x_goal[k];
+    for (k = 0; k < q; ++k) *o++ = c->motion.th_from[k];
+    for (k = 0; k < q; ++k) *o++ = c->motion.th_goal[k];
 }
 
 sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err)
@@ -786,7 +936,8 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     c->norms.r_moment = *in++;
     c->norms.r_deformation = *in++;
     c->norms.max_step = *in++;
-    c->relax.tol_E = c->s.tol_E;
+    c->relax.criterion = c->s.criterion;
+    c->relax.tol = relax_tol(&c->s);
     c->relax.window = c->s.window;
     c->relax.steps = (long)*in++;
     c->relax.count = (int)*in++;
@@ -800,6 +951,13 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     c->prev_min = *in++;
     for (k = 0; k < 4; ++k) c->F_prev[k] = *in++;
     for (k = 0; k < 4; ++k) c->F_now[k] = *in++;
+    c->relax.known_step = (long)*in++;
+    c->relax.ep_known = *in++;
+    c->relax.ek_known = *in++;
+    c->relax.fc_known = *in++;
+    c->relax.unbalanced = *in++;
+    c->motion.steps = (long)*in++;
+    c->motion.done = (long)*in++;
     in = get_result(&c->result, in);
     for (k = 0; k < 2 * q; ++k) c->x_cmd[k] = *in++;
     for (k = 0; k < q; ++k) c->theta_cmd[k] = *in++;
@@ -808,6 +966,10 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     new_reference(c, in);
     in += 2 * q;
     for (k = 0; k < 3 * q; ++k) c->d_prev[k] = *in++;
+    for (k = 0; k < 2 * q; ++k) c->motion.x_from[k] = *in++;
+    for (k = 0; k < 2 * q; ++k) c->motion.x_goal[k] = *in++;
+    for (k = 0; k < q; ++k) c->motion.th_from[k] = *in++;
+    for (k = 0; k < q; ++k) c->motion.th_goal[k] = *in++;
     if (c->s.bc == SBC_BC_MIXED)
         mixed_stress_targets(c);
     return SBC_OK;

@@ -30,7 +30,8 @@ struct sbc_engine {
     const sbc_frame *frame;
     /* per-step measures */
     double ek, ep, overlap_sum, rotation_sum;
-    long contact_count, step;
+    double net_sum, contact_force_sum; /* sum |net force| over the interior that carries force, sum |f_c|, N */
+    long net_count, contact_count, step;
     /* frame-ordered snapshot buffers */
     double *snap_x, *snap_theta, *snap_f, *snap_tq;
 };
@@ -187,7 +188,7 @@ static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
     const int *restrict start = e->pairs.start, *restrict pj = e->pairs.j;
     double *restrict f = e->f, *restrict tq = e->tq, *restrict fsv = e->pairs.fs, *restrict mv = e->pairs.m;
     unsigned char *restrict bond = e->pairs.bond;
-    double ep = 0.0, ov = 0.0;
+    double ep = 0.0, ov = 0.0, fc = 0.0;
     long nc = 0;
     int broken = 0;
     int i, k, n = e->n;
@@ -251,6 +252,7 @@ static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
             f[2 * j] -= fx;
             f[2 * j + 1] -= fy;
             ep += 0.5 * fn * dn; /* eq. 12, normal part */
+            fc += sqrt(fn * fn + fs * fs);
             ov += dn / rs;       /* eq. 39 sums dn / Rbar_c = 2 dn / rs: the 2 is applied below */
             ++nc;
         }
@@ -259,6 +261,7 @@ static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
         tq[i] += tqi;
     }
     e->ep = ep;
+    e->contact_force_sum = fc;
     e->overlap_sum = 2.0 * ov;
     e->contact_count = nc;
     e->bond_count -= broken;
@@ -279,7 +282,8 @@ static inline void integrate_interior(sbc_engine *e, const int damped)
     const double *restrict inv_m = e->inv_m, *restrict inv_I = e->inv_I, *restrict mass = e->mass;
     const double *restrict r = e->r;
     const unsigned char *restrict kin = e->kinematic;
-    double ek = 0.0, rot = 0.0, moved = 0.0;
+    double ek = 0.0, rot = 0.0, moved = 0.0, net = 0.0;
+    long nnet = 0;
     int k;
     for (k = 0; k < e->n; ++k) {
         double fx = f[2 * k], fy = f[2 * k + 1], m = tq[k], vx, vy, w, ddx, ddy;
@@ -288,6 +292,10 @@ static inline void integrate_interior(sbc_engine *e, const int damped)
         vx = v[2 * k];
         vy = v[2 * k + 1];
         w = om[k];
+        if (fx != 0.0 || fy != 0.0 || m != 0.0) { /* relax.h: the net force of a particle that carries one */
+            net += sqrt(fx * fx + fy * fy);
+            ++nnet;
+        }
         if (damped) {
             fx -= a * fabs(fx) * ((vx > 0.0) - (vx < 0.0));
             fy -= a * fabs(fy) * ((vy > 0.0) - (vy < 0.0));
@@ -314,6 +322,8 @@ static inline void integrate_interior(sbc_engine *e, const int damped)
             moved = ddx * ddx + ddy * ddy;
     }
     e->ek = ek;
+    e->net_sum = net;
+    e->net_count = nnet;
     e->rotation_sum = rot;
     if (moved > lim)
         e->stale = 1;
@@ -363,6 +373,9 @@ void sbc_engine_snapshot(sbc_engine *e, sbc_snapshot *s)
     s->torque = e->snap_tq;
     s->kinetic_energy = e->ek;
     s->potential_energy = e->ep;
+    s->unbalanced_sum = e->net_sum;
+    s->unbalanced_count = e->net_count;
+    s->contact_force_sum = e->contact_force_sum;
     s->overlap_sum = e->overlap_sum;
     s->contact_count = e->contact_count;
     s->rotation_sum = e->rotation_sum;

@@ -36,7 +36,7 @@ static sbc_host *fail_create(sbc_host *h, const sbc_error *err, char *msg, size_
 }
 
 sbc_host *sbc_host_create(const char *words, int n, const double *xy, const double *r, const double *m, int nlist,
-                          const int *list, double dt, char *msg, size_t cap)
+                          const int *list, double dt, double kn, char *msg, size_t cap)
 {
     sbc_host *h = calloc(1, sizeof *h);
     sbc_error err;
@@ -95,7 +95,7 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
     }
     for (q = 0; q < h->frame.n; ++q)
         frame_mass[q] = m[h->frame.particle[q]];
-    h->ctl = sbc_controller_create(&h->frame, &h->settings, frame_mass, dt, &err);
+    h->ctl = sbc_controller_create(&h->frame, &h->settings, frame_mass, dt, kn, &err);
     free(frame_mass);
     if (!h->ctl)
         return fail_create(h, &err, msg, cap);
@@ -128,24 +128,38 @@ int sbc_host_frame_size(const sbc_host *h) { return h->frame.n; }
 
 const int *sbc_host_frame_particles(const sbc_host *h) { return h->frame.particle; }
 
-unsigned sbc_host_needs(const sbc_host *h, double ek, double ep) { return sbc_controller_needs(h->ctl, ek, ep); }
-
-int sbc_host_step(sbc_host *h, double ek, double ep, double overlap_sum, long contact_count, double rotation_sum,
-                  long particle_count, const double *x, const double *theta, const double *force,
-                  const double *torque)
+/* the snapshot of the measures (no frame arrays) */
+static sbc_snapshot measures(const double *m)
 {
     sbc_snapshot s;
+    memset(&s, 0, sizeof s);
+    s.kinetic_energy = m[SBC_HOST_EK];
+    s.unbalanced_sum = m[SBC_HOST_NET_SUM];
+    s.unbalanced_count = (long)m[SBC_HOST_NET_COUNT];
+    s.potential_energy = m[SBC_HOST_EP];
+    s.contact_force_sum = m[SBC_HOST_CONTACT_SUM];
+    s.contact_count = (long)m[SBC_HOST_CONTACT_COUNT];
+    s.overlap_sum = m[SBC_HOST_OVERLAP_SUM];
+    s.rotation_sum = m[SBC_HOST_ROTATION_SUM];
+    s.particle_count = (long)m[SBC_HOST_PARTICLE_COUNT];
+    return s;
+}
+
+unsigned sbc_host_needs(const sbc_host *h, const double *m)
+{
+    const sbc_snapshot s = measures(m);
+    return sbc_controller_needs(h->ctl, &s);
+}
+
+int sbc_host_step(sbc_host *h, const double *m, const double *x, const double *theta, const double *force,
+                  const double *torque)
+{
+    sbc_snapshot s = measures(m);
     sbc_event ev;
     s.x = x;
     s.theta = theta;
     s.force = force;
     s.torque = torque;
-    s.kinetic_energy = ek;
-    s.potential_energy = ep;
-    s.overlap_sum = overlap_sum;
-    s.contact_count = contact_count;
-    s.rotation_sum = rotation_sum;
-    s.particle_count = particle_count;
     if (write_pending(h))
         return SBC_EVENT_FAILED;
     ev = sbc_controller_step(h->ctl, &s, &h->err);
@@ -193,5 +207,7 @@ void sbc_host_result(const sbc_host *h, double *row)
     row[at++] = r->r_force;
     row[at++] = r->r_moment;
     row[at++] = r->r_deformation;
+    row[at++] = r->unbalanced;
+    row[at++] = r->frame_residual;
     row[at] = r->hill_mandel; /* at = SBC_HOST_ROW - 1 */
 }

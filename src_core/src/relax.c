@@ -1,11 +1,13 @@
+/* When a relaxation is over: force balance, or eq. 11 (see relax.h). */
 #include "sbc/relax.h"
 
 #include <math.h>
 
-void sbc_relax_start(sbc_relax *r, double tol_E, int window, int at_rest)
+void sbc_relax_start(sbc_relax *r, sbc_criterion criterion, double tol, int window, int at_rest)
 {
+    r->criterion = criterion;
     r->at_rest = at_rest;
-    r->tol_E = tol_E;
+    r->tol = tol;
     r->window = window;
     r->steps = 0;
     r->count = 0;
@@ -15,51 +17,93 @@ void sbc_relax_start(sbc_relax *r, double tol_E, int window, int at_rest)
     r->known_step = 0;
     r->ep_known = 0.0;
     r->ek_known = 0.0;
+    r->fc_known = 0.0;
+    r->unbalanced = 0.0;
 }
+
+void sbc_relax_floor(sbc_relax *r, double floor_force, double floor_energy)
+{
+    r->floor_force = floor_force;
+    r->floor_energy = floor_energy;
+}
+
+/* ---- force balance: (a) and (b) of relax.h ---- */
+
+static double mean_net(const sbc_relax_sample *s)
+{
+    return s->net_count > 0 ? s->net_sum / (double)s->net_count : 0.0;
+}
+
+/* the mean contact force that scales U, with the floor, N */
+static double contact_scale(const sbc_relax *r, const sbc_relax_sample *s)
+{
+    const double fc = s->contact_count > 0 ? s->contact_sum / (double)s->contact_count : 0.0;
+    return fmax(fc, r->floor_force);
+}
+
+static int force_counts(const sbc_relax *r, const sbc_relax_sample *s)
+{
+    const double fc = contact_scale(r, s);
+    return mean_net(s) <= r->tol * fc && s->ek <= 0.5 * r->tol * r->tol * fmax(s->ep, r->floor_energy);
+}
+
+/* ---- energy: eq. 11 past the kinetic-energy maximum ---- */
 
 /* the ratio Ek/Ep below which this step may count: eq. 11 past the maximum,
  * before it the round-off floor at rest, else none */
 static double counting_limit(const sbc_relax *r, int past_peak)
 {
     if (past_peak)
-        return r->tol_E;
-    return r->at_rest ? fmin(r->tol_E, SBC_RELAX_ROUNDOFF) : 0.0;
+        return r->tol;
+    return r->at_rest ? fmin(r->tol, SBC_RELAX_ROUNDOFF) : 0.0;
 }
 
-int sbc_relax_needs_potential(const sbc_relax *r, double ek)
+static int energy_counts(const sbc_relax *r, const sbc_relax_sample *s)
 {
+    if (s->ek == 0.0)
+        return 1;
+    return s->ep > 0.0 && s->ek <= counting_limit(r, r->past_peak) * s->ep;
+}
+
+int sbc_relax_needs_contacts(const sbc_relax *r, const sbc_relax_sample *s)
+{
+    const double ek = s->ek;
     double bound;
-    const int past_peak = r->past_peak || (r->steps > 0 && r->rising && ek <= r->ek_prev);
-    if (ek == 0.0 || counting_limit(r, past_peak) == 0.0)
-        return 0;
     if (r->known_step == 0 || r->steps + 1 - r->known_step >= SBC_RELAX_EP_REFRESH)
         return 1;
-    bound = r->ep_known + r->ek_known - ek;
-    return bound <= 0.0 || ek <= 2.0 * counting_limit(r, past_peak) * bound;
+    if (r->criterion == SBC_CRITERION_FORCE)
+        return mean_net(s) <= 2.0 * r->tol * fmax(r->fc_known, r->floor_force);
+    {
+        const int past_peak = r->past_peak || (r->steps > 0 && r->rising && ek <= r->ek_prev);
+        if (ek == 0.0 || counting_limit(r, past_peak) == 0.0)
+            return 0;
+        bound = r->ep_known + r->ek_known - ek;
+        return bound <= 0.0 || ek <= 2.0 * counting_limit(r, past_peak) * bound;
+    }
 }
 
-/* eq. 11: Ek/Ep <= tolE, held for r->window consecutive steps after a
- * kinetic-energy maximum or at the round-off floor (see relax.h). */
-int sbc_relax_update(sbc_relax *r, double ek, double ep)
+int sbc_relax_update(sbc_relax *r, const sbc_relax_sample *s)
 {
     int ok;
     if (r->steps > 0) {
-        if (ek > r->ek_prev)
+        if (s->ek > r->ek_prev)
             r->rising = 1;
         else if (r->rising)
             r->past_peak = 1;
     }
-    r->ek_prev = ek;
+    r->ek_prev = s->ek;
     r->steps++;
-    if (ep >= 0.0) {
+    if (s->ep >= 0.0) {
         r->known_step = r->steps;
-        r->ep_known = ep;
-        r->ek_known = ek;
+        r->ep_known = s->ep;
+        r->ek_known = s->ek;
+        r->fc_known = s->contact_count > 0 ? s->contact_sum / (double)s->contact_count : 0.0;
+        r->unbalanced = contact_scale(r, s) > 0.0 ? mean_net(s) / contact_scale(r, s) : 0.0;
     }
-    if (ek == 0.0)
-        ok = 1;
+    if (r->criterion == SBC_CRITERION_FORCE)
+        ok = s->ep >= 0.0 && force_counts(r, s);
     else
-        ok = ep > 0.0 && ek <= counting_limit(r, r->past_peak) * ep;
+        ok = energy_counts(r, s);
     r->count = ok ? r->count + 1 : 0;
     return r->count >= r->window;
 }

@@ -324,7 +324,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         return sbc_fail(err, SBC_ERR_NOMEM, "run: out of memory");
     }
     sbc_engine_frame_masses(r.engine, r.mass);
-    if (!(r.ctl = sbc_controller_create(&r.frame, &s->settings, r.mass, s->dt, err))) {
+    if (!(r.ctl = sbc_controller_create(&r.frame, &s->settings, r.mass, s->dt, s->law.kn, err))) {
         run_free(&r);
         return err->status;
     }

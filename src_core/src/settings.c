@@ -16,8 +16,6 @@ sbc_settings sbc_settings_default(void)
     s.bc = SBC_BC_D;
     s.F[0] = s.F[3] = 1.0;
     s.increments = 1;
-    s.tol_E = 1.0e-3;
-    s.window = 20;
     s.max_relax_steps = 10000000L;
     s.damping = 1;
     s.alpha = s.beta = 0.7;
@@ -26,54 +24,77 @@ sbc_settings sbc_settings_default(void)
     s.gain_deformation = 2.0e-5;
     s.tol_force = 1.0e-6;
     s.tol_moment = 1.0e-6;
-    s.tol_deformation = 1.0e-2;
     s.predict = 0.0;
     s.max_iterations = 10000;
     sbc_mixed_default(&s);
+    sbc_settings_preset(&s, "balanced");
     return s;
 }
 
-/* The presets, measured on the four cases of bench/speed_accuracy/
- * (docs/speed-accuracy.md). paper: Table 4 with the paper's fixed gains; the
- * others converge on residuals relative to the frame's forces with the secant
- * update, whose steps do not depend on the gains' scale. */
+/* The presets (docs/servo_bc.md, Accuracy). paper: Table 4 as printed, the
+ * Ek/Ep criterion of eq. 11, fixed gains, the frame moved in one step. The
+ * others: force balance (relax.h) to tol_balance, frame residuals relative
+ * to the frame's own forces below tol_relative, the secant update, and the
+ * frame moved at `speed` radii per critical step; each guarantees the
+ * relative stress error `accuracy` at a converged increment, measured on
+ * the closed-form lattices and the sweep cases (docs/servo_bc.md). */
 typedef struct preset {
     const char *name;
-    double tol_E;
+    double accuracy;
+    sbc_criterion criterion;
+    double tol; /* tol_balance or tol_E */
     int window;
-    double tol_relative, tol_deformation;
+    double tol_relative, tol_deformation, speed;
     sbc_update update;
 } preset;
 
 static const preset presets[] = {
-    {"paper", 1.0e-3, 20, 0.0, 1.0e-2, SBC_UPDATE_FIXED},
-    {"fast", 1.0e-3, 20, 1.0e-2, 1.0e-2, SBC_UPDATE_SECANT},
-    {"balanced", 1.0e-4, 20, 1.0e-2, 1.0e-2, SBC_UPDATE_SECANT},
-    {"tight", 1.0e-5, 20, 3.0e-3, 1.0e-2, SBC_UPDATE_SECANT},
+    {"paper", 0.0, SBC_CRITERION_ENERGY, 1.0e-3, 20, 0.0, 1.0e-2, 0.0, SBC_UPDATE_FIXED},
+    {"fast", 1.0e-2, SBC_CRITERION_FORCE, 1.0e-3, 20, 1.0e-3, 1.0e-2, 0.1, SBC_UPDATE_SECANT},
+    {"balanced", 1.0e-4, SBC_CRITERION_FORCE, 1.0e-5, 20, 1.0e-5, 1.0e-2, 0.03, SBC_UPDATE_SECANT},
+    {"tight", 1.0e-6, SBC_CRITERION_FORCE, 1.0e-8, 20, 1.0e-8, 1.0e-2, 0.003, SBC_UPDATE_SECANT},
 };
+
+static const preset *find_preset(const char *name)
+{
+    size_t k;
+    for (k = 0; k < sizeof presets / sizeof presets[0]; ++k)
+        if (strcmp(name, presets[k].name) == 0)
+            return &presets[k];
+    return NULL;
+}
+
+double sbc_settings_preset_accuracy(const char *name)
+{
+    const preset *p = find_preset(name);
+    return p ? p->accuracy : -1.0;
+}
 
 int sbc_settings_preset(sbc_settings *s, const char *name)
 {
-    const sbc_settings d = sbc_settings_default();
-    size_t k;
-    for (k = 0; k < sizeof presets / sizeof presets[0]; ++k) {
-        const preset *p = &presets[k];
-        if (strcmp(name, p->name) != 0)
-            continue;
-        s->tol_E = p->tol_E;
-        s->window = p->window;
-        s->gain_force = d.gain_force; /* Table 4 */
-        s->gain_moment = d.gain_moment;
-        s->gain_deformation = d.gain_deformation;
-        s->tol_force = d.tol_force;
-        s->tol_moment = d.tol_moment;
-        s->tol_deformation = p->tol_deformation;
-        s->tol_relative = p->tol_relative;
-        s->update = p->update;
-        snprintf(s->accuracy, sizeof s->accuracy, "%s", p->name);
-        return 1;
+    const preset *p = find_preset(name);
+    if (!p)
+        return 0;
+    s->criterion = p->criterion;
+    if (p->criterion == SBC_CRITERION_FORCE) {
+        s->tol_balance = p->tol;
+        s->tol_E = 1.0e-3; /* Table 4; read only by the energy criterion */
+    } else {
+        s->tol_E = p->tol;
+        s->tol_balance = 0.0;
     }
-    return 0;
+    s->window = p->window;
+    s->gain_force = 1.0e2; /* Table 4 */
+    s->gain_moment = 2.0e2;
+    s->gain_deformation = 2.0e-5;
+    s->tol_force = 1.0e-6;
+    s->tol_moment = 1.0e-6;
+    s->tol_deformation = p->tol_deformation;
+    s->tol_relative = p->tol_relative;
+    s->update = p->update;
+    s->speed = p->speed;
+    snprintf(s->accuracy, sizeof s->accuracy, "%s", p->name);
+    return 1;
 }
 
 const char *sbc_bc_name(sbc_bc bc)
@@ -194,6 +215,17 @@ static sbc_status read_name(cursor *c, const char *what, char *dst)
 static const char *const gain_keys[] = {"gain_force", "gain_moment", "gain_deformation"};
 static const char *const tol_keys[] = {"tol_force", "tol_moment", "tol_deformation"};
 
+/* whether keyword key stands among the words (at a keyword's place or a
+ * value's: no keyword is a valid value of another) */
+static int given(const char *const *words, int n, const char *key)
+{
+    int k;
+    for (k = 1; k < n; ++k)
+        if (strcmp(words[k], key) == 0)
+            return 1;
+    return 0;
+}
+
 sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *words, sbc_error *err)
 {
     cursor c;
@@ -219,10 +251,10 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
     c.w = words;
     c.err = err;
     /* a preset first, so that the keywords given with it win wherever they stand */
-    for (k = 1; k + 1 < nwords; ++k) {
+    for (k = 1, iv = 0; k + 1 < nwords; ++k) {
         if (strcmp(words[k], "accuracy") != 0)
             continue;
-        if (s->accuracy[0])
+        if (iv++)
             return sbc_fail(err, SBC_ERR_INPUT, "keyword 'accuracy' given twice ('%s' and '%s')", s->accuracy,
                             words[k + 1]);
         if (!sbc_settings_preset(s, words[k + 1]))
@@ -251,11 +283,18 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
         } else if (strcmp(key, "increments") == 0) {
             st = read_int(&c, "N", 1, 100000000L, &iv);
             s->increments = (int)iv;
-        } else if (strcmp(key, "relax") == 0) {
-            st = read_real(&c, "tolE", 0.0, 1, HUGE_VAL, "a real > 0", &s->tol_E);
+        } else if (strcmp(key, "relax") == 0 || strcmp(key, "balance") == 0) {
+            const int energy = key[0] == 'r';
+            s->criterion = energy ? SBC_CRITERION_ENERGY : SBC_CRITERION_FORCE;
+            st = read_real(&c, energy ? "tolE" : "tol", 0.0, 1, energy ? HUGE_VAL : 1.0,
+                           energy ? "a real > 0" : "a real in (0, 1]", energy ? &s->tol_E : &s->tol_balance);
             if (st == SBC_OK)
                 st = read_int(&c, "window", 1, 1000000000L, &iv);
-            s->window = (int)iv;
+            if (st == SBC_OK)
+                s->window = (int)iv;
+        } else if (strcmp(key, "speed") == 0) {
+            st = read_real(&c, "v", 0.0, 0, 1.0e6, "a real >= 0, radii per critical time step (0: in one step)",
+                           &s->speed);
         } else if (strcmp(key, "max_relax_steps") == 0) {
             st = read_int(&c, "steps", 1, 2000000000L, &s->max_relax_steps);
         } else if (strcmp(key, "damping") == 0) {
@@ -320,12 +359,16 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
             }
             if (!found)
                 st = sbc_fail(err, SBC_ERR_INPUT,
-                              "unknown keyword '%s' (expected F, increments, relax, max_relax_steps, damping, "
+                              "unknown keyword '%s' (expected F, increments, balance, relax, speed, max_relax_steps, damping, "
                               "gain_force, gain_moment, gain_deformation, tol_force, tol_moment, tol_deformation, "
                               "predict, update, accuracy, tol_relative, stress, bottom, right, top, left, max_iterations, frame or file)",
                               key);
         }
     }
+    /* absolute tolerances given without tol_relative are meant absolute */
+    if (st == SBC_OK && !given(words, nwords, "tol_relative") &&
+        (given(words, nwords, "tol_force") || given(words, nwords, "tol_moment")))
+        s->tol_relative = 0.0;
     if (st == SBC_OK && s->bc == SBC_BC_MIXED)
         st = sbc_mixed_validate(s, err);
     return st;

@@ -30,8 +30,12 @@ typedef struct sbc_snapshot {
     const double *theta;     /* [Q] frame rotations, rad */
     const double *force;     /* [2Q] resultant contact force on each frame particle, N */
     const double *torque;    /* [Q] resultant contact moment on each frame particle, N m */
-    double kinetic_energy;   /* Ek of the interior particles, eq. 12, J */
-    double potential_energy; /* Ep of all contacts, eq. 12, J */
+    double kinetic_energy;   /* Ek of the interior particles that carry a force, eq. 12, J */
+    double unbalanced_sum;   /* sum of |net force| (contact forces only, before damping) over the
+                                interior particles that carry a force, N */
+    long unbalanced_count;   /* ... how many such particles */
+    double potential_energy; /* Ep of all contacts, eq. 12, J (the contact sums: measured together) */
+    double contact_force_sum; /* sum over contacts of |contact force| (normal and tangential), N */
     double overlap_sum;      /* sum over contacts of dn_c / Rbar_c (eq. 39), - */
     long contact_count;      /* N_c, contacts with dn > 0 */
     double rotation_sum;     /* sum over particles of |theta_i| (eq. 41), rad */
@@ -57,15 +61,21 @@ typedef struct sbc_result {
     long relax_steps;     /* host steps spent on this increment */
     double r_force, r_moment, r_deformation; /* final residual norms (0 for D) */
     double hill_mandel;   /* eq. 30 relative to sbc_homogenize_work_scale */
+    double unbalanced;    /* mean |net force| / mean |contact force| of the interior when accepted (relax.h) */
+    double frame_residual; /* frame force residual relative to the frame's forces (servo.h), 0 for D */
 } sbc_result;
 
 typedef struct sbc_controller sbc_controller;
 
 /* Creates a controller for a frame (which must outlive it). mass is [Q]
  * frame-particle masses in kg and dt the host's time step in s (both enter
- * the servo gains of eq. 37). Returns NULL and sets err on failure. */
+ * the servo gains of eq. 37); kn (N/m) the normal stiffness of the host's
+ * contact law, which sets the frame's travel speed (motion.h), the first
+ * secant correction and the round-off floor of the force criterion; 0 when
+ * unknown (the frame then jumps, as in the paper). Returns NULL and sets err
+ * on failure. */
 sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings *settings,
-                                      const double *mass, double dt, sbc_error *err);
+                                      const double *mass, double dt, double kn, sbc_error *err);
 void sbc_controller_free(sbc_controller *c);
 
 /* Frame commands in force now (valid until the next step call). */
@@ -77,15 +87,18 @@ sbc_commands sbc_controller_commands(const sbc_controller *c);
 sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err);
 
 /* What sbc_controller_step will read of this step's snapshot, for hosts
- * that measure lazily (a contact sum and an MPI reduction saved on most
- * steps). Call with the interior's Ek and ep = SBC_RELAX_EP_UNMEASURED
- * (relax.h); if the answer has SBC_NEED_POTENTIAL, measure Ep and call again
- * with it. SBC_NEED_FRAME: the relaxation ends on this step, so pass the
- * frame arrays and the contact statistics. What is not needed may be left
- * NULL (frame arrays) or SBC_RELAX_EP_UNMEASURED (Ep); the decisions are
- * those of a fully measured snapshot. */
-enum { SBC_NEED_POTENTIAL = 1u, SBC_NEED_FRAME = 2u };
-unsigned sbc_controller_needs(const sbc_controller *c, double ek, double ep);
+ * that measure lazily (a contact pass and an MPI reduction saved on most
+ * steps). Call with the interior's sums (kinetic_energy, unbalanced_sum,
+ * unbalanced_count) and potential_energy = SBC_RELAX_EP_UNMEASURED (relax.h);
+ * if the answer has SBC_NEED_CONTACTS, measure the contact sums
+ * (potential_energy, contact_force_sum, contact_count, overlap_sum) and call
+ * again with them. SBC_NEED_FRAME: the relaxation ends on this step, so pass
+ * the frame arrays and rotation_sum, particle_count. What is not needed may
+ * be left NULL (frame arrays) or unmeasured; the decisions are those of a
+ * fully measured snapshot. While the frame travels to new commands
+ * (motion.h) nothing is needed. */
+enum { SBC_NEED_CONTACTS = 1u, SBC_NEED_FRAME = 2u };
+unsigned sbc_controller_needs(const sbc_controller *c, const sbc_snapshot *snap);
 
 /* The result of the last accepted increment. */
 const sbc_result *sbc_controller_result(const sbc_controller *c);

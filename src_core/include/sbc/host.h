@@ -20,10 +20,11 @@ typedef struct sbc_host sbc_host;
  * The frame: when the words name one (`frame NAME`), the host resolves NAME
  * to the indices list [nlist] (any order; the core orders them); otherwise
  * list must be empty and the frame is detected from the centres. dt: the
- * host's time step (s). Returns NULL on failure with the message in msg (cap
+ * host's time step (s), kn the normal stiffness of its contact law (N/m; 0 if
+ * unknown, see sbc_controller_create). Returns NULL on failure with the message in msg (cap
  * bytes, which may be 0). */
 sbc_host *sbc_host_create(const char *words, int n, const double *xy, const double *r, const double *m, int nlist,
-                          const int *list, double dt, char *msg, size_t cap);
+                          const int *list, double dt, double kn, char *msg, size_t cap);
 void sbc_host_free(sbc_host *h);
 
 /* The damping of eq. 10, which a host applies itself: returns 1 and sets
@@ -35,17 +36,32 @@ int sbc_host_damping(const sbc_host *h, double *alpha, double *beta);
 int sbc_host_frame_size(const sbc_host *h);
 const int *sbc_host_frame_particles(const sbc_host *h);
 
-/* sbc_controller_needs. */
-unsigned sbc_host_needs(const sbc_host *h, double ek, double ep);
+/* The measures of one host step (sbc_snapshot's scalars), as an array of
+ * SBC_HOST_MEASURES doubles indexed so; unmeasured contact sums: Ep =
+ * SBC_RELAX_EP_UNMEASURED (controller.h, sbc_controller_needs). */
+enum {
+    SBC_HOST_EK = 0,          /* J */
+    SBC_HOST_NET_SUM,         /* sum |net force| over the interior carrying force, N */
+    SBC_HOST_NET_COUNT,       /* ... how many */
+    SBC_HOST_EP,              /* J */
+    SBC_HOST_CONTACT_SUM,     /* sum |contact force|, N */
+    SBC_HOST_CONTACT_COUNT,
+    SBC_HOST_OVERLAP_SUM,     /* eq. 39 */
+    SBC_HOST_ROTATION_SUM,    /* eq. 41, rad */
+    SBC_HOST_PARTICLE_COUNT,
+    SBC_HOST_MEASURES
+};
 
-/* One host step (sbc_controller_step) with the snapshot's fields as
- * arguments; frame arrays may be NULL where sbc_host_needs allowed it.
+/* sbc_controller_needs. */
+unsigned sbc_host_needs(const sbc_host *h, const double *measures);
+
+/* One host step (sbc_controller_step) with the measures above; frame
+ * arrays may be NULL where sbc_host_needs allowed it.
  * Returns the sbc_event. The row of SBC_EVENT_INCREMENT and
  * SBC_EVENT_FINISHED goes to the CSV once sbc_host_confined passes it (or at
  * the next sbc_host_step, or sbc_host_free, for a host that does not check).
  * On SBC_EVENT_FAILED the message is in sbc_host_message. */
-int sbc_host_step(sbc_host *h, double ek, double ep, double overlap_sum, long contact_count, double rotation_sum,
-                  long particle_count, const double *x, const double *theta, const double *force,
+int sbc_host_step(sbc_host *h, const double *measures, const double *x, const double *theta, const double *force,
                   const double *torque);
 const char *sbc_host_message(const sbc_host *h);
 
@@ -66,8 +82,8 @@ const double *sbc_host_command_theta(const sbc_host *h);
 const unsigned char *sbc_host_command_free(const sbc_host *h);
 
 /* The last accepted increment as SBC_HOST_ROW doubles, in the columns of
- * sbc_csv_header (results.h), followed by the Hill-Mandel residual. */
-#define SBC_HOST_ROW 21
+ * sbc_csv_header (results.h). */
+#define SBC_HOST_ROW 23
 void sbc_host_result(const sbc_host *h, double *row);
 
 #endif

@@ -1,5 +1,8 @@
-/* servo_bc: the results file (DESIGN.md column order), one row per converged
- * increment, flushed at once so that nothing is lost if a run stops. */
+/* servo_bc: the results file (docs/servo_bc.md, Output), one row per
+ * converged increment, flushed at once so that nothing is lost if a run
+ * stops. After the contract's 20 columns come the accuracy measures of the
+ * row: unbalanced (relax.h), frame_residual (servo.h) and hill_mandel
+ * (eq. 30, relative); new columns are only ever appended. */
 #ifndef SBC_RESULTS_H
 #define SBC_RESULTS_H
 

@@ -7,6 +7,7 @@
 #ifndef SBC_SETTINGS_H
 #define SBC_SETTINGS_H
 
+#include "sbc/relax.h"
 #include "sbc/status.h"
 
 typedef enum sbc_bc { SBC_BC_D = 0, SBC_BC_P, SBC_BC_T, SBC_BC_MIXED } sbc_bc;
@@ -35,8 +36,14 @@ typedef struct sbc_settings {
     sbc_bc bc;
     double F[4];             /* final macroscopic F, row-major; F ramps from I; default I */
     int increments;          /* loading increments i_tot; default 1 */
-    double tol_E;            /* relaxation: Ek/Ep <= tol_E (eq. 11); 1e-3 */
+    sbc_criterion criterion; /* when a relaxation is over (relax.h): force balance (keyword balance) or
+                                Ek/Ep (keyword relax); force */
+    double tol_balance;      /* force balance: mean |net force| / mean |contact force| <= this; preset */
+    double tol_E;            /* energy: Ek/Ep <= tol_E (eq. 11); 1e-3 */
     int window;              /* ... held for this many consecutive steps; 20 */
+    double speed;            /* largest frame speed while the frame moves to new commands, in radii per
+                                critical time step 2 sqrt(M_q / (2 kn)); 0: in one time step (the paper's
+                                literal algorithm); preset */
     long max_relax_steps;    /* a relaxation longer than this stops the run; 1e7 */
     int damping;             /* 1: local non-viscous damping of eq. 10 on interior particles */
     double alpha, beta;      /* translational, rotational damping of eq. 10; 0.7, 0.7 */
@@ -51,7 +58,7 @@ typedef struct sbc_settings {
     double predict;          /* inheritance factor n_f in [0, 1]; 0 = no prediction */
     int max_iterations;      /* servo iterations per increment; 10000 */
     sbc_update update;       /* fixed (the paper's) or secant; fixed */
-    char accuracy[16];       /* preset named by keyword accuracy, "" = none */
+    char accuracy[16];       /* preset in force (keyword accuracy; balanced by default) */
     /* mixed only: edge_mode[edge][component] (SBC_EDGE_*, 0 = x, 1 = y); the
        default is the paper's layer: bottom D D, right P P, top D T, left P P */
     unsigned char edge_mode[4][2];
@@ -62,13 +69,20 @@ typedef struct sbc_settings {
     char file[SBC_NAME_LEN];        /* CSV path; "" = none */
 } sbc_settings;
 
-/* The defaults listed above (paper Table 4 where it gives a value). */
+/* The defaults listed above: the `balanced` preset, and paper Table 4 for
+ * what no preset sets. */
 sbc_settings sbc_settings_default(void);
 
-/* Presets of keyword `accuracy` (docs/speed-accuracy.md): each sets relax,
- * the tolerances, tol_relative and update; keywords given with it win,
- * wherever they stand. Returns 0 for an unknown name. */
+/* Presets of keyword `accuracy` (docs/servo_bc.md, Accuracy): each sets the
+ * relaxation criterion and its tolerance, the tolerances, tol_relative,
+ * update and speed; keywords given with it win, wherever they stand. Returns
+ * 0 for an unknown name. */
 int sbc_settings_preset(sbc_settings *s, const char *name);
+
+/* The relative stress error a preset guarantees at a converged increment
+ * (docs/servo_bc.md), 0 for `paper`, which guarantees none; -1 for an
+ * unknown name. */
+double sbc_settings_preset_accuracy(const char *name);
 
 /* Parses words[0] = BC and the keyword/value pairs after it into *s, which
  * is first reset to the defaults. On error the message names the keyword,
