@@ -17,13 +17,13 @@ def scene(servo_words):
     O.reset()
     ids, frame = servo_bc.load_packing(packing, 2e3, 1e4, 2e3, 0.4)
     if servo_words:
-        servo = servo_bc.ServoBC(servo_words, ids, 1e-6)
+        servo = servo_bc.ServoBC(servo_words, ids, 1e-6, 1e4)
     else:
         class Held(object):   # the frame held: blocked, nothing driving it
             engine = servo_bc.PyRunner(command='pass', iterPeriod=10 ** 9)
             damping = 0.7
         servo = Held
-        for i in servo_bc.ServoBC('D', ids, 1e-6).frame:
+        for i in servo_bc.ServoBC('D', ids, 1e-6, 1e4).frame:
             O.bodies[i].state.blockedDOFs = 'xyzXYZ'
     O.engines = servo_bc.engines(servo, 1e4, 2e3)
     O.dt = 1e-6

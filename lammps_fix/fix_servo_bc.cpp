@@ -190,7 +190,7 @@ void FixServoBC::init()
 
   if (!ctl) {
     sbc_error err;
-    ctl = sbc_controller_create(&frame, &settings, frame_mass.data(), update->dt, &err);
+    ctl = sbc_controller_create(&frame, &settings, frame_mass.data(), update->dt, law.kn, &err);
     if (!ctl) fail(err.message);
     if (!saved_state.empty() && sbc_controller_load(ctl, saved_state.data(), saved_state.size(), &err) != SBC_OK)
       fail(err.message);
@@ -238,9 +238,11 @@ void FixServoBC::initial_integrate(int)
   }
 }
 
-/* local damping (eq. 10) on the interior, its rotations and its Ek (J); again:
-   the setup of a later run revisits the last step, whose rotation is counted */
-double FixServoBC::interior_pass(bool again)
+/* local damping (eq. 10) on the interior, its rotations; out: its Ek (J), the
+   sum of |net contact force| before damping (N) and how many atoms carry one
+   (relax.h); again: the setup of a later run revisits the last step, whose
+   rotation is counted */
+void FixServoBC::interior_pass(bool again, double out[3])
 {
   const int nlocal = atom->nlocal, *mask = atom->mask;
   // flat views of the contiguous per-atom arrays
@@ -249,12 +251,17 @@ double FixServoBC::interior_pass(bool again)
   const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
   const double alpha = settings.damping ? settings.alpha : 0.0, beta = settings.damping ? settings.beta : 0.0;
   const double inertia = servo_bc_host::inertia, turn = again ? 0.0 : dt;
-  double ek = 0.0;
-  if (nlocal == 0) return 0.0;    // the per-atom arrays may not exist yet
+  double ek = 0.0, net = 0.0, nnet = 0.0;
+  out[0] = out[1] = out[2] = 0.0;
+  if (nlocal == 0) return;    // the per-atom arrays may not exist yet
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & interior_bit)) continue;
     double *fi = &f[3 * i], *ti = &torque[3 * i];
     const double vx0 = v[3 * i], vy0 = v[3 * i + 1], w0 = omega[3 * i + 2];
+    if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) {
+      net += std::sqrt(fi[0] * fi[0] + fi[1] * fi[1]);
+      nnet += 1.0;
+    }
     // eq. 10, with the half-step velocities (no damping at v = 0)
     fi[0] -= vx0 != 0.0 ? std::copysign(alpha * std::fabs(fi[0]), vx0) : 0.0;
     fi[1] -= vy0 != 0.0 ? std::copysign(alpha * std::fabs(fi[1]), vy0) : 0.0;
@@ -268,15 +275,17 @@ double FixServoBC::interior_pass(bool again)
     // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
     if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) ek += 0.5 * m * (vx * vx + vy * vy) + 0.5 * I * w * w;
   }
-  return ek;
+  out[0] = ek;
+  out[1] = net;
+  out[2] = nnet;
 }
 
 /* eq. 12 over the pair style's own half list and its shear history: per
    contact kn dn^2/2 + kt |shear|^2/2 (the stored shear is the elastic one,
-   rescaled at the Coulomb limit); also sum dn / Rbar and the contact count
-   (eq. 39). Each contact once: with newton pair off an owned-ghost pair stands
+   rescaled at the Coulomb limit); also sum dn / Rbar, the contact count
+   (eq. 39) and the sum of |contact force| = |(kn dn, kt shear)| (relax.h). Each contact once: with newton pair off an owned-ghost pair stands
    on both ranks, and the lower tag counts it. */
-void FixServoBC::contact_pass(double out[3])
+void FixServoBC::contact_pass(double out[4])
 {
   const int nlocal = atom->nlocal, *mask = atom->mask, newton = force->newton_pair;
   const tagint *tag = atom->tag;
@@ -285,7 +294,7 @@ void FixServoBC::contact_pass(double out[3])
   NeighList *list = law.list();
   double **history = law.history();
   const double kn = law.kn, kt = law.kt;
-  double ep = 0.0, ov = 0.0, nc = 0.0;
+  double ep = 0.0, ov = 0.0, nc = 0.0, fc = 0.0;
   for (int ii = 0; ii < list->inum; ii++) {
     int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
@@ -299,11 +308,13 @@ void FixServoBC::contact_pass(double out[3])
       double d2 = dx * dx + dy * dy;
       if (d2 >= rs * rs) continue;
       double dn = rs - std::sqrt(d2);
-      ep += 0.5 * kn * dn * dn;
+      double s2 = 0.0;
       if (shear_i) {
         const double *sh = &shear_i[law.stride * jj + law.offset];
-        ep += 0.5 * kt * (sh[0] * sh[0] + sh[1] * sh[1] + sh[2] * sh[2]);
+        s2 = sh[0] * sh[0] + sh[1] * sh[1] + sh[2] * sh[2];
       }
+      ep += 0.5 * kn * dn * dn + 0.5 * kt * s2;
+      fc += std::sqrt(kn * kn * dn * dn + kt * kt * s2);
       ov += dn / (0.5 * rs);
       nc += 1.0;
     }
@@ -311,6 +322,7 @@ void FixServoBC::contact_pass(double out[3])
   out[0] = ep;
   out[1] = ov;
   out[2] = nc;
+  out[3] = fc;
 }
 
 /* frame positions, reactions and rotations in frame order, plus sum |theta|
@@ -376,24 +388,29 @@ void FixServoBC::post_force(int)
   // the setup of a later run (or of a restarted one) sees the configuration of
   // the last step again: the controller has already taken it
   const bool again = update->ntimestep == last_step;
-  double ek_local = interior_pass(again), ek = 0.0;
-  MPI_Allreduce(&ek_local, &ek, 1, MPI_DOUBLE, MPI_SUM, world);
+  double interior_local[3], interior[3];
+  interior_pass(again, interior_local);
+  MPI_Allreduce(interior_local, interior, 3, MPI_DOUBLE, MPI_SUM, world);
   if (again) return;
   last_step = update->ntimestep;
 
-  double contacts[3] = {SBC_RELAX_EP_UNMEASURED, 0.0, 0.0}, local[3];
-  unsigned need = sbc_controller_needs(ctl, ek, SBC_RELAX_EP_UNMEASURED);
-  if (need) {
-    contact_pass(local);
-    MPI_Allreduce(local, contacts, 3, MPI_DOUBLE, MPI_SUM, world);
-    need = sbc_controller_needs(ctl, ek, contacts[0]);
-  }
   sbc_snapshot snap;
   std::memset(&snap, 0, sizeof snap);
-  snap.kinetic_energy = ek;
-  snap.potential_energy = contacts[0];
-  snap.overlap_sum = contacts[1];
-  snap.contact_count = (long) contacts[2];
+  snap.kinetic_energy = interior[0];
+  snap.unbalanced_sum = interior[1];
+  snap.unbalanced_count = (long) interior[2];
+  snap.potential_energy = SBC_RELAX_EP_UNMEASURED;
+  unsigned need = sbc_controller_needs(ctl, &snap);
+  if (need) {
+    double local[4], contacts[4];
+    contact_pass(local);
+    MPI_Allreduce(local, contacts, 4, MPI_DOUBLE, MPI_SUM, world);
+    snap.potential_energy = contacts[0];
+    snap.overlap_sum = contacts[1];
+    snap.contact_count = (long) contacts[2];
+    snap.contact_force_sum = contacts[3];
+    need = sbc_controller_needs(ctl, &snap);
+  }
   if (need & SBC_NEED_FRAME) {
     frame_pass();
     MPI_Allreduce(buf.data(), sum.data(), (int) buf.size(), MPI_DOUBLE, MPI_SUM, world);

@@ -117,8 +117,8 @@ series=()
 for e in "${engines[@]}"; do
   [ "$e" = embedded ] && continue
   paste -d, "$out/embedded.csv" "$out/$e.csv" | awk -F, -v s="$scale" '
-    NR == 1 { print "increment,dsigma11,dsigma12,dsigma21,dsigma22"; next }
-    $1 != "" && $21 != "" { printf "%s", $1; for (c = 10; c <= 13; c++) printf ",%.6g", 100 * ($(c + 20) - $c) / (s > 0 ? s : 1); print "" }' \
+    NR == 1 { w = NF / 2; print "increment,dsigma11,dsigma12,dsigma21,dsigma22"; next }
+    $1 != "" && $(w + 1) != "" { printf "%s", $1; for (c = 10; c <= 13; c++) printf ",%.6g", 100 * ($(c + w) - $c) / (s > 0 ? s : 1); print "" }' \
     > "$out/difference_$e.csv"
   series+=("$out/difference_$e.csv" "$e")
 done
@@ -133,8 +133,8 @@ done
   printf 'increment'
   for e in "${engines[@]}"; do printf ',%s_iterations,%s_relax_steps' "$e" "$e"; done
   echo
-  paste -d, $(for e in "${engines[@]}"; do echo "$out/$e.csv"; done) | awk -F, -v n=${#engines[@]} 'NR > 1 {
-    printf "%s", $1; for (k = 0; k < n; k++) printf ",%s,%s", $(16 + 20 * k), $(17 + 20 * k); print "" }'
+  paste -d, $(for e in "${engines[@]}"; do echo "$out/$e.csv"; done) | awk -F, -v n=${#engines[@]} 'NR == 1 { w = NF / n }
+    NR > 1 { printf "%s", $1; for (k = 0; k < n; k++) printf ",%s,%s", $(16 + w * k), $(17 + w * k); print "" }'
 } > "$out/steps.csv"
 
 # report.md

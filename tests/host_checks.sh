@@ -49,8 +49,8 @@ closed_form() {
 same_csvs() {
   local label=$1 want=$2 res
   shift 2
-  res=$(paste -d, "$@" | awk -F, '
-    NR > 1 { n++; for (c = 2; c <= 14; c++) for (k = 0; k <= 2; k++) v[n, c, k] = $(c + 20 * k)
+  res=$(paste -d, "$@" | awk -F, -v files=$# '
+    NR > 1 { n++; w = NF / files; for (c = 2; c <= 14; c++) for (k = 0; k <= 2; k++) v[n, c, k] = $(c + w * k)
              for (c = 2; c <= 14; c++) { g = (c <= 5 ? 1 : c <= 9 ? 2 : c <= 13 ? 3 : 4); a = $c < 0 ? -$c : $c; if (a > S[g]) S[g] = a } }
     END { for (r = 1; r <= n; r++) for (c = 2; c <= 14; c++) {
             g = (c <= 5 ? 1 : c <= 9 ? 2 : c <= 13 ? 3 : 4)

@@ -88,8 +88,8 @@ for host in lammps liggghts; do
   csv=$tmp/lmp.csv
   [ $host = liggghts ] && csv=$tmp/liggghts.csv
   # stage 1 (increments 1-3) and the shear increments (4-5), each against its bound
-  res=$(paste -d, "$tmp/emb.csv" "$csv" | awk -F, 'NR > 1 {
-      for (c = 10; c <= 13; c++) { a = $c < 0 ? -$c : $c; if (a > s) s = a; d = $c - $(c + 20); if (d < 0) d = -d
+  res=$(paste -d, "$tmp/emb.csv" "$csv" | awk -F, 'NR == 1 { w = NF / 2 } NR > 1 {
+      for (c = 10; c <= 13; c++) { a = $c < 0 ? -$c : $c; if (a > s) s = a; d = $c - $(c + w); if (d < 0) d = -d
         if ($1 <= 3 && d > m1) m1 = d; if ($1 > 3 && d > m2) m2 = d }
       n++ }
     END { printf "%d %.4g %.4g", n, (s > 0 ? 100 * m1 / s : 100), (s > 0 ? 100 * m2 / s : 100) }')

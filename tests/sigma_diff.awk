@@ -5,10 +5,11 @@
 # -v b=J compare the I-th and J-th (from 1) and -v scale_from=K takes the scale
 # from the K-th.
 BEGIN { if (!a) a = 1; if (!b) b = 2; if (!scale_from) scale_from = a }
-NR > 1 {
+NR == 1 { for (i = 1; i <= NF; i++) if ($i == "increment") files++; w = NF / files; next } # columns per file
+{
   for (c = 10; c <= 13; c++) {
-    v = $(c + 20 * (scale_from - 1)); v = v < 0 ? -v : v; if (v > s) s = v
-    d = $(c + 20 * (b - 1)) - $(c + 20 * (a - 1)); if (d < 0) d = -d; if (d > m) m = d
+    v = $(c + w * (scale_from - 1)); v = v < 0 ? -v : v; if (v > s) s = v
+    d = $(c + w * (b - 1)) - $(c + w * (a - 1)); if (d < 0) d = -d; if (d > m) m = d
   }
   n++
 }

@@ -12,7 +12,7 @@ Usage (2D: spheres in z = 0 with blockedDOFs 'zXY'):
 
     import servo_bc
     ids, frame = servo_bc.load_packing('packing.yade', density=2e3, kn=1e4, ks=2e3, mu=0.4)
-    servo = servo_bc.ServoBC('P F 1 0.1 0 1 increments 10 file out.csv', ids, dt=1e-6)
+    servo = servo_bc.ServoBC('P F 1 0.1 0 1 increments 10 file out.csv', ids, dt=1e-6, kn=1e4)
     O.engines = servo_bc.engines(servo, kn=1e4, ks=2e3)
     servo.run()          # returns when the path is finished; raises ServoBCError otherwise
 """
@@ -29,13 +29,15 @@ from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb,
 
 __all__ = ['ServoBCError', 'ServoBC', 'load_packing', 'engines', 'run_case', 'COLUMNS', 'FRAME_MASK']
 
-# the CSV columns of DESIGN.md (sbc_csv_header), then the Hill-Mandel residual
+# the CSV columns (sbc_csv_header, docs/servo_bc.md)
 COLUMNS = ('increment', 'F11', 'F12', 'F21', 'F22', 'P11', 'P12', 'P21', 'P22', 'sigma11', 'sigma12',
            'sigma21', 'sigma22', 'overlap_mean', 'rotation_mean', 'iterations', 'relax_steps', 'r_force',
-           'r_moment', 'r_deformation', 'hill_mandel')
+           'r_moment', 'r_deformation', 'unbalanced', 'frame_residual', 'hill_mandel')
 ROW = len(COLUMNS)                      # SBC_HOST_ROW
 EP_UNMEASURED = -1.0                    # SBC_RELAX_EP_UNMEASURED
-NEED_POTENTIAL, NEED_FRAME = 1, 2       # SBC_NEED_*
+NEED_CONTACTS, NEED_FRAME = 1, 2        # SBC_NEED_*
+# the measures of one step (SBC_HOST_EK ... SBC_HOST_PARTICLE_COUNT, host.h)
+EK, NET_SUM, NET_COUNT, EP, CONTACT_SUM, CONTACT_COUNT, OVERLAP_SUM, ROTATION_SUM, PARTICLE_COUNT, MEASURES = range(10)
 RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED = range(5)   # sbc_event
 RATTLER_SCAN = 1000                     # steps between full scans for contact-free bodies
 CONFINE_EVERY = 10000                   # SBC_CONFINE_EVERY: steps between confinement checks
@@ -59,12 +61,12 @@ def _library():
     D, I, L, P = ctypes.c_double, ctypes.c_int, ctypes.c_long, ctypes.c_void_p
     pd, pi = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_int)
     sig = {
-        'sbc_host_create': (P, [ctypes.c_char_p, I, pd, pd, pd, I, pi, D, ctypes.c_char_p, ctypes.c_size_t]),
+        'sbc_host_create': (P, [ctypes.c_char_p, I, pd, pd, pd, I, pi, D, D, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_host_free': (None, [P]),
         'sbc_host_frame_size': (I, [P]),
         'sbc_host_frame_particles': (pi, [P]),
-        'sbc_host_needs': (ctypes.c_uint, [P, D, D]),
-        'sbc_host_step': (I, [P, D, D, D, L, D, L, pd, pd, pd, pd]),
+        'sbc_host_needs': (ctypes.c_uint, [P, pd]),
+        'sbc_host_step': (I, [P, pd, pd, pd, pd, pd]),
         'sbc_host_message': (ctypes.c_char_p, [P]),
         'sbc_host_command_x': (pd, [P]),
         'sbc_host_command_theta': (pd, [P]),
@@ -143,7 +145,7 @@ def run_case(packing, words, density, kn, ks, mu, dt, max_steps=None):
     Returns the ServoBC object (rows, plot_data); raises ServoBCError on failure."""
     O.reset()
     ids, _ = load_packing(packing, density, kn, ks, mu)
-    servo = ServoBC(words, ids, dt)
+    servo = ServoBC(words, ids, dt, kn)
     O.engines = engines(servo, kn, ks)
     servo.run(max_steps)
     return servo
@@ -172,12 +174,14 @@ _instances = []
 
 class ServoBC(object):
     """The servo_bc engine. words: the servo_bc words (BC first), the grammar of every host;
-    or the words as keyword arguments (ServoBC('P', F=(1, .1, 0, 1), increments=10)).
+    or the words as keyword arguments (ServoBC('P', ids, dt, kn, F=(1, .1, 0, 1), increments=10)).
     bodies: the specimen's body ids. A `frame MASK` word takes the frame from the bodies
     whose groupMask shares a bit with MASK; otherwise the core detects it. dt: O.dt (s).
+    kn: the normal contact stiffness of engines() (N/m), which sets how fast the frame
+    travels to new positions and the round-off floor of the force balance (relax.h).
     done: called with this object when the path finishes or fails."""
 
-    def __init__(self, words, bodies, dt, done=None, **keywords):
+    def __init__(self, words, bodies, dt, kn, done=None, **keywords):
         lib = _core()
         for key, value in keywords.items():
             values = value if isinstance(value, (tuple, list)) else (value,)
@@ -185,6 +189,7 @@ class ServoBC(object):
         self.words = words
         self.bodies = list(bodies)
         self.dt = float(dt)
+        self.kn = float(kn)
         self.done = done
         self.rows = []            # one dict per converged increment (yade.plot: see plot_data)
         self.error = None
@@ -202,7 +207,7 @@ class ServoBC(object):
         msg = ctypes.create_string_buffer(512)
         lst = (ctypes.c_int * max(1, len(frame_list)))(*frame_list)
         self._h = lib.sbc_host_create(words.encode(), n, _doubles(xy), _doubles(r), _doubles(m), len(frame_list),
-                                      lst, self.dt, msg, 512)
+                                      lst, self.dt, self.kn, msg, 512)
         if not self._h:
             text = msg.value.decode()
             raise ServoBCError(text if text.startswith('servo_bc') else 'servo_bc: ' + text)
@@ -228,6 +233,7 @@ class ServoBC(object):
         self._buffers = [(ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)(),
                          (ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)()]
         self._row = (ctypes.c_double * ROW)()
+        self._m = (ctypes.c_double * MEASURES)()
         _instances.append(self)
         # the PyRunner's command runs in __main__: a bound method placed there
         # costs a name lookup per step instead of an import and an index
@@ -313,12 +319,26 @@ class ServoBC(object):
         return ep
 
     def _contact_sums(self):
-        ov, nc = 0.0, 0
+        """eq. 39's sum, the contact count and the sum of |contact force| (relax.h)."""
+        ov, nc, fc = 0.0, 0, 0.0
         for I in O.interactions:
             if I.isReal and I.geom.penetrationDepth > 0.0:
                 ov += I.geom.penetrationDepth / (0.5 * (I.geom.refR1 + I.geom.refR2))
+                fc += (I.phys.normalForce + I.phys.shearForce).norm()
                 nc += 1
-        return ov, nc
+        return ov, nc, fc
+
+    def _net_forces(self):
+        """Sum of |net contact force| over the interior bodies that carry a force, and how
+        many (relax.h); YADE's forces are the contact forces, damping is applied later by
+        NewtonIntegrator."""
+        total, count = 0.0, 0
+        for i in self.interior:
+            f = O.forces.f(i)
+            if f.squaredNorm() > 0.0 or O.forces.t(i)[2] != 0.0:
+                total += math.hypot(f[0], f[1])
+                count += 1
+        return total, count
 
     def step(self):
         """Called by the PyRunner each step, after the forces and before NewtonIntegrator."""
@@ -331,12 +351,15 @@ class ServoBC(object):
 
     def _step(self):
         lib = _core()
-        ek = self._kinetic_energy()
-        ep = EP_UNMEASURED
-        need = lib.sbc_host_needs(self._h, ek, EP_UNMEASURED)
-        if need & NEED_POTENTIAL:
-            ep = self._potential_energy()
-            need = lib.sbc_host_needs(self._h, ek, ep)
+        m = self._m
+        m[EK] = self._kinetic_energy()
+        m[NET_SUM], m[NET_COUNT] = self._net_forces()
+        m[EP] = EP_UNMEASURED
+        need = lib.sbc_host_needs(self._h, m)
+        if need & NEED_CONTACTS:
+            m[EP] = self._potential_energy()
+            m[OVERLAP_SUM], m[CONTACT_COUNT], m[CONTACT_SUM] = self._contact_sums()
+            need = lib.sbc_host_needs(self._h, m)
         if need & NEED_FRAME:
             x, theta, force, torque = self._buffers
             for q, i in enumerate(self.frame):
@@ -346,11 +369,11 @@ class ServoBC(object):
                 force[2 * q], force[2 * q + 1] = f[0], f[1]
                 torque[q] = t[2]
                 theta[q] = self._frame_theta(q, s)
-            ov, nc = self._contact_sums()
-            rot = sum(abs(O.bodies[i].state.rot()[2]) for i in self.interior) + sum(abs(v) for v in theta)
-            ev = lib.sbc_host_step(self._h, ek, ep, ov, nc, rot, len(self.bodies), x, theta, force, torque)
+            m[ROTATION_SUM] = sum(abs(O.bodies[i].state.rot()[2]) for i in self.interior) + sum(abs(v) for v in theta)
+            m[PARTICLE_COUNT] = len(self.bodies)
+            ev = lib.sbc_host_step(self._h, m, x, theta, force, torque)
         else:
-            ev = lib.sbc_host_step(self._h, ek, ep, 0.0, 0, 0.0, 0, None, None, None, None)
+            ev = lib.sbc_host_step(self._h, m, None, None, None, None)
         self.steps += 1
         self._since_check += 1
         converged = ev in (INCREMENT, FINISHED)

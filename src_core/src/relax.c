@@ -44,7 +44,7 @@ static double contact_scale(const sbc_relax *r, const sbc_relax_sample *s)
 static int force_counts(const sbc_relax *r, const sbc_relax_sample *s)
 {
     const double fc = contact_scale(r, s);
-    return mean_net(s) <= r->tol * fc && s->ek <= 0.5 * r->tol * r->tol * fmax(s->ep, r->floor_energy);
+    return mean_net(s) <= r->tol * fc && s->ek <= fmax(0.5 * r->tol * r->tol * s->ep, r->floor_energy);
 }
 
 /* ---- energy: eq. 11 past the kinetic-energy maximum ---- */

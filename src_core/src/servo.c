@@ -21,25 +21,39 @@
  * residual ((N m)^2), moment scale sum (|a_q| R_q)^2. */
 typedef struct raw_sums {
     double fr, fs, mr, ms;
+    double floor;        /* force floor, N (the force criterion's, relax.h) */
+    double fs_lo, ms_lo; /* the scales' floors: floor^2 and (floor R)^2 summed like fs, ms */
 } raw_sums;
+
+static raw_sums no_sums(double floor)
+{
+    raw_sums w = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    w.floor = floor;
+    return w;
+}
 
 static void add_scale(raw_sums *w, const double *a, double R)
 {
     double a2 = a[0] * a[0] + a[1] * a[1];
     w->fs += a2;
     w->ms += a2 * R * R;
+    w->fs_lo += w->floor * w->floor;
+    w->ms_lo += w->floor * w->floor * R * R;
 }
 
 /* The force residual relative to the frame's own forces, and with
  * tol_relative r_force and r_moment so: 0 when there is neither residual nor
- * force. */
+ * force. Frame forces below the floor count as the floor: a packing that has
+ * come apart (no stress to be relative to) is converged once its residual
+ * forces are below the floor too. */
 static void relative_norms(const sbc_settings *s, const raw_sums *w, sbc_servo_norms *o)
 {
-    o->relative_force = w->fr > 0.0 ? (w->fs > 0.0 ? sqrt(w->fr / w->fs) : 1.0) : 0.0;
+    const double fs = fmax(w->fs, w->fs_lo), ms = fmax(w->ms, w->ms_lo);
+    o->relative_force = w->fr > 0.0 ? (fs > 0.0 ? sqrt(w->fr / fs) : 1.0) : 0.0;
     if (!(s->tol_relative > 0.0))
         return;
     o->r_force = o->relative_force;
-    o->r_moment = w->mr > 0.0 ? (w->ms > 0.0 ? sqrt(w->mr / w->ms) : 1.0) : 0.0;
+    o->r_moment = w->mr > 0.0 ? (ms > 0.0 ? sqrt(w->mr / ms) : 1.0) : 0.0;
 }
 
 /* One +/- pair (q, p) of (P): corrections on both partners alike; adds the
@@ -69,11 +83,11 @@ static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const doubl
     if (step > o->max_step) o->max_step = step;
 }
 
-static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
+static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double floor,
                            const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double sf = 0.0, sm = 0.0, dmc = 0.0, mc = 0.0, rc = 0.0;
-    raw_sums w = {0.0, 0.0, 0.0, 0.0};
+    raw_sums w = no_sums(floor);
     int q, c;
     for (q = 0; q < f->n; ++q)
         if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT) /* each pair once */
@@ -113,12 +127,12 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
  * imposed F. Gains: g_a = G_a dt^2 / M_q, g_F = G_F / R_q^2; normalizations of
  * eq. 37: a~ = M R / dt^2, F~ = R^3. O(Q^2) for the sum over r; the frame
  * is O(sqrt N) particles, so this stays far below the cost of a DEM step. */
-static void servo_traction(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
+static void servo_traction(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double floor,
                            const double F[4], const double *a, const double *x, double *du, double *dtheta,
                            sbc_servo_norms *o)
 {
     double P[4], sf = 0.0, sd = 0.0;
-    raw_sums w = {0.0, 0.0, 0.0, 0.0};
+    raw_sums w = no_sums(floor);
     int q, r;
     /* eq. 23 */
     for (q = 0; q < 4; ++q)
@@ -168,14 +182,14 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
 }
 
 void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                         const double F[4], const double *a, const double *m, const double *x, double *du,
-                         double *dtheta, sbc_servo_norms *out)
+                         double floor, const double F[4], const double *a, const double *m, const double *x,
+                         double *du, double *dtheta, sbc_servo_norms *out)
 {
     out->max_step = 0.0;
     if (bc == SBC_BC_P)
-        servo_periodic(f, s, mass, dt, a, m, du, dtheta, out);
+        servo_periodic(f, s, mass, dt, floor, a, m, du, dtheta, out);
     else
-        servo_traction(f, s, mass, dt, F, a, x, du, dtheta, out);
+        servo_traction(f, s, mass, dt, floor, F, a, x, du, dtheta, out);
 }
 
 /* Mixed, Table 5 with the modes as data (mode[2q + c] = sbc_mode):
@@ -187,11 +201,11 @@ void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, c
  * r_force gathers the force residuals of P pairs and T components (r_a^p and
  * r_a^t of Table 5, one tolerance); r_moment those of the P pairs. */
 void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_settings *s, const double *mass,
-                     double dt, const double P_star[4], const unsigned char P_fixed[4], const double *a,
-                     const double *m, double *du, double *dtheta, sbc_servo_norms *o)
+                     double dt, double floor, const double P_star[4], const unsigned char P_fixed[4],
+                     const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double P[4] = {0.0, 0.0, 0.0, 0.0}, sf = 0.0, sm = 0.0;
-    raw_sums w = {0.0, 0.0, 0.0, 0.0};
+    raw_sums w = no_sums(floor);
     int q, k;
     o->max_step = 0.0;
     for (q = 0; q < f->n; ++q) { /* eq. 23 */
@@ -223,6 +237,7 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
             sf += da * da / (at * at);
             w.fr += da * da;
             w.fs += a[2 * q + c] * a[2 * q + c] + (da + a[2 * q + c]) * (da + a[2 * q + c]); /* measured and target */
+            w.fs_lo += 2.0 * floor * floor;
             du[2 * q + c] = ga * da;
             step = fabs(ga * da) / R;
             if (step > o->max_step) o->max_step = step;

@@ -65,7 +65,7 @@ def refused(words, expect, **keywords):
     servo_bc.O.reset()
     ids, _ = servo_bc.load_packing(packing, 2e3, 1e4, 2e3, 0.4)
     try:
-        servo_bc.ServoBC(words, ids, 1e-5, **keywords)
+        servo_bc.ServoBC(words, ids, 1e-5, 1e4, **keywords)
         check(False, "refuses '%s' (accepted)" % words)
     except servo_bc.ServoBCError as e:
         check(expect in str(e), "refuses '%s': %s" % (words, e))
@@ -82,7 +82,7 @@ refused('D frame 64', "keyword 'frame': '64' names no particle")
 # a diverging controller stops the run with the core's message, no NaN
 servo_bc.O.reset()
 try:
-    servo_bc.run_case(packing, 'P F 0.99 -0.02 -0.02 0.99 increments 2 tol_force 1e-14 gain_force 1e9', 2e3, 1e4,
+    servo_bc.run_case(packing, 'P F 0.99 -0.02 -0.02 0.99 increments 2 tol_force 1e-14 gain_force 1e9 update fixed', 2e3, 1e4,
                       2e3, 0.4, 1e-5)
     check(False, 'divergence: no error')
 except servo_bc.ServoBCError as e:
@@ -93,7 +93,7 @@ except servo_bc.ServoBCError as e:
 servo_bc.O.reset()
 ids, _ = servo_bc.load_packing(packing, 2e3, 1e4, 0.0, 0.4)
 escape_csv = os.path.join(os.path.dirname(os.path.abspath(packing)), 'escape.csv')
-servo = servo_bc.ServoBC('D F 1.002 0 0 0.997 increments 2 relax 1e-22 20 file %s' % escape_csv, ids, 1e-5)
+servo = servo_bc.ServoBC('D F 1.002 0 0 0.997 increments 2 relax 1e-22 20 file %s' % escape_csv, ids, 1e-5, 1e4)
 servo_bc.O.engines = servo_bc.engines(servo, kn=1e4, ks=0.0)
 centre = [i for i in servo.interior if abs(servo_bc.O.bodies[i].state.pos[0] - 4e-3) < 1e-9
           and abs(servo_bc.O.bodies[i].state.pos[1] - 4e-3) < 1e-9][0]

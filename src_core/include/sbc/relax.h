@@ -17,9 +17,11 @@
  * Ek at the balanced position is u^2/2 of Ep, so (a) and (b) hold together
  * only when the amplitude itself is below tol. Neither depends on the time
  * step. Absolute floor: a mean contact force below floor_force (N) counts as
- * floor_force, and Ep as at least floor_energy (J): a stress-free packing
- * (touching discs, overlaps of round-off size) relaxes once its forces fall
- * to round-off instead of chasing a ratio of two round-off numbers.
+ * floor_force, and an Ek below floor_energy (J, the energy of vibrations of
+ * force amplitude floor_force on every particle) counts as rest: a
+ * stress-free packing (touching discs, overlaps of round-off size) or one
+ * that has come apart in tension relaxes once its forces fall to round-off
+ * instead of chasing a ratio of two round-off numbers.
  *
  * Energy (the paper's eq. 11, kept as an alternative): Ek/Ep <= tol_E held
  * for `window` consecutive steps. Our reading, stated because the paper does
