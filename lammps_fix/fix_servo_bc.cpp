@@ -238,11 +238,10 @@ void FixServoBC::initial_integrate(int)
   }
 }
 
-/* local damping (eq. 10) on the interior, its rotations; out: its Ek (J), the
-   sum of |net contact force| before damping (N) and how many atoms carry one
-   (relax.h); again: the setup of a later run revisits the last step, whose
-   rotation is counted */
-void FixServoBC::interior_pass(bool again, double out[3])
+/* local damping (eq. 10) on the interior, its rotations; out: its Ek (J) and
+   the largest |net contact force| before damping (N, relax.h); again: the
+   setup of a later run revisits the last step, whose rotation is counted */
+void FixServoBC::interior_pass(bool again, double out[2])
 {
   const int nlocal = atom->nlocal, *mask = atom->mask;
   // flat views of the contiguous per-atom arrays
@@ -251,17 +250,14 @@ void FixServoBC::interior_pass(bool again, double out[3])
   const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
   const double alpha = settings.damping ? settings.alpha : 0.0, beta = settings.damping ? settings.beta : 0.0;
   const double inertia = servo_bc_host::inertia, turn = again ? 0.0 : dt;
-  double ek = 0.0, net = 0.0, nnet = 0.0;
-  out[0] = out[1] = out[2] = 0.0;
+  double ek = 0.0, net = 0.0;
+  out[0] = out[1] = 0.0;
   if (nlocal == 0) return;    // the per-atom arrays may not exist yet
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & interior_bit)) continue;
     double *fi = &f[3 * i], *ti = &torque[3 * i];
     const double vx0 = v[3 * i], vy0 = v[3 * i + 1], w0 = omega[3 * i + 2];
-    if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) {
-      net += std::sqrt(fi[0] * fi[0] + fi[1] * fi[1]);
-      nnet += 1.0;
-    }
+    net = std::max(net, fi[0] * fi[0] + fi[1] * fi[1]);
     // eq. 10, with the half-step velocities (no damping at v = 0)
     fi[0] -= vx0 != 0.0 ? std::copysign(alpha * std::fabs(fi[0]), vx0) : 0.0;
     fi[1] -= vy0 != 0.0 ? std::copysign(alpha * std::fabs(fi[1]), vy0) : 0.0;
@@ -276,8 +272,7 @@ void FixServoBC::interior_pass(bool again, double out[3])
     if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) ek += 0.5 * m * (vx * vx + vy * vy) + 0.5 * I * w * w;
   }
   out[0] = ek;
-  out[1] = net;
-  out[2] = nnet;
+  out[1] = std::sqrt(net);
 }
 
 /* eq. 12 over the pair style's own half list and its shear history: per
@@ -388,17 +383,17 @@ void FixServoBC::post_force(int)
   // the setup of a later run (or of a restarted one) sees the configuration of
   // the last step again: the controller has already taken it
   const bool again = update->ntimestep == last_step;
-  double interior_local[3], interior[3];
+  double interior_local[2], interior[2];
   interior_pass(again, interior_local);
-  MPI_Allreduce(interior_local, interior, 3, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&interior_local[0], &interior[0], 1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&interior_local[1], &interior[1], 1, MPI_DOUBLE, MPI_MAX, world);
   if (again) return;
   last_step = update->ntimestep;
 
   sbc_snapshot snap;
   std::memset(&snap, 0, sizeof snap);
   snap.kinetic_energy = interior[0];
-  snap.unbalanced_sum = interior[1];
-  snap.unbalanced_count = (long) interior[2];
+  snap.unbalanced_max = interior[1];
   snap.potential_energy = SBC_RELAX_EP_UNMEASURED;
   unsigned need = sbc_controller_needs(ctl, &snap);
   if (need) {

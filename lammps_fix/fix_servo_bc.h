@@ -81,7 +81,7 @@ class FixServoBC : public Fix {
   int any_free;                      // some frame rotation is free ((T)): integrated every step
   int since_check;                   // steps since the last confinement check (confine.h)
 
-  void interior_pass(bool again, double out[3]);
+  void interior_pass(bool again, double out[2]);
   void contact_pass(double out[4]);
   void frame_pass();
   void check_confined(int increment);

@@ -4,11 +4,12 @@
 # scale (max |sigma| of the embedded run), up to the first peak of |sigma12| of
 # the embedded run (scripts/first_peak.awk) and over the whole path; increments missing from either
 # run are left out and counted.
+NR == 1 { w = NF / 2 } # columns per file
 NR > 1 && $1 != "" {
   n++
   for (c = 10; c <= 13; c++) {
     a[n, c] = $c; v = $c < 0 ? -$c : $c; if (v > scale) scale = v
-    have[n] = $21 != ""; b[n, c] = $(c + 20)
+    have[n] = $(w + 1) != ""; b[n, c] = $(c + w)
   }
 }
 END {

@@ -80,8 +80,7 @@ static int lazy_rows(double rows[][CSV_COLS], const char *csv, double *measured,
                 break;
             sbc_engine_snapshot(e, &s);
             m[SBC_HOST_EK] = s.kinetic_energy;
-            m[SBC_HOST_NET_SUM] = s.unbalanced_sum;
-            m[SBC_HOST_NET_COUNT] = (double)s.unbalanced_count;
+            m[SBC_HOST_NET_MAX] = s.unbalanced_max;
             m[SBC_HOST_EP] = SBC_RELAX_EP_UNMEASURED;
             need = sbc_host_needs(h, m);
             if (need & SBC_NEED_CONTACTS) {

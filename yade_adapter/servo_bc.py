@@ -37,7 +37,7 @@ ROW = len(COLUMNS)                      # SBC_HOST_ROW
 EP_UNMEASURED = -1.0                    # SBC_RELAX_EP_UNMEASURED
 NEED_CONTACTS, NEED_FRAME = 1, 2        # SBC_NEED_*
 # the measures of one step (SBC_HOST_EK ... SBC_HOST_PARTICLE_COUNT, host.h)
-EK, NET_SUM, NET_COUNT, EP, CONTACT_SUM, CONTACT_COUNT, OVERLAP_SUM, ROTATION_SUM, PARTICLE_COUNT, MEASURES = range(10)
+EK, NET_MAX, EP, CONTACT_SUM, CONTACT_COUNT, OVERLAP_SUM, ROTATION_SUM, PARTICLE_COUNT, MEASURES = range(9)
 RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED = range(5)   # sbc_event
 RATTLER_SCAN = 1000                     # steps between full scans for contact-free bodies
 CONFINE_EVERY = 10000                   # SBC_CONFINE_EVERY: steps between confinement checks
@@ -328,17 +328,10 @@ class ServoBC(object):
                 nc += 1
         return ov, nc, fc
 
-    def _net_forces(self):
-        """Sum of |net contact force| over the interior bodies that carry a force, and how
-        many (relax.h); YADE's forces are the contact forces, damping is applied later by
-        NewtonIntegrator."""
-        total, count = 0.0, 0
-        for i in self.interior:
-            f = O.forces.f(i)
-            if f.squaredNorm() > 0.0 or O.forces.t(i)[2] != 0.0:
-                total += math.hypot(f[0], f[1])
-                count += 1
-        return total, count
+    def _net_force_max(self):
+        """The largest |net contact force| on an interior body (relax.h); YADE's forces are
+        the contact forces here, damping is applied later by NewtonIntegrator."""
+        return math.sqrt(max([v[0] * v[0] + v[1] * v[1] for v in map(O.forces.f, self.interior)] or [0.0]))
 
     def step(self):
         """Called by the PyRunner each step, after the forces and before NewtonIntegrator."""
@@ -353,7 +346,7 @@ class ServoBC(object):
         lib = _core()
         m = self._m
         m[EK] = self._kinetic_energy()
-        m[NET_SUM], m[NET_COUNT] = self._net_forces()
+        m[NET_MAX] = self._net_force_max()
         m[EP] = EP_UNMEASURED
         need = lib.sbc_host_needs(self._h, m)
         if need & NEED_CONTACTS:

@@ -30,8 +30,8 @@ struct sbc_engine {
     const sbc_frame *frame;
     /* per-step measures */
     double ek, ep, overlap_sum, rotation_sum;
-    double net_sum, contact_force_sum; /* sum |net force| over the interior that carries force, sum |f_c|, N */
-    long net_count, contact_count, step;
+    double net_max, contact_force_sum; /* max |net force| on the interior, sum |f_c|, N */
+    long contact_count, step;
     /* frame-ordered snapshot buffers */
     double *snap_x, *snap_theta, *snap_f, *snap_tq;
 };
@@ -283,7 +283,6 @@ static inline void integrate_interior(sbc_engine *e, const int damped)
     const double *restrict r = e->r;
     const unsigned char *restrict kin = e->kinematic;
     double ek = 0.0, rot = 0.0, moved = 0.0, net = 0.0;
-    long nnet = 0;
     int k;
     for (k = 0; k < e->n; ++k) {
         double fx = f[2 * k], fy = f[2 * k + 1], m = tq[k], vx, vy, w, ddx, ddy;
@@ -292,10 +291,7 @@ static inline void integrate_interior(sbc_engine *e, const int damped)
         vx = v[2 * k];
         vy = v[2 * k + 1];
         w = om[k];
-        if (fx != 0.0 || fy != 0.0 || m != 0.0) { /* relax.h: the net force of a particle that carries one */
-            net += sqrt(fx * fx + fy * fy);
-            ++nnet;
-        }
+        net = fmax(net, fx * fx + fy * fy); /* relax.h: the largest net force, squared */
         if (damped) {
             fx -= a * fabs(fx) * ((vx > 0.0) - (vx < 0.0));
             fy -= a * fabs(fy) * ((vy > 0.0) - (vy < 0.0));
@@ -322,8 +318,7 @@ static inline void integrate_interior(sbc_engine *e, const int damped)
             moved = ddx * ddx + ddy * ddy;
     }
     e->ek = ek;
-    e->net_sum = net;
-    e->net_count = nnet;
+    e->net_max = sqrt(net);
     e->rotation_sum = rot;
     if (moved > lim)
         e->stale = 1;
@@ -373,8 +368,7 @@ void sbc_engine_snapshot(sbc_engine *e, sbc_snapshot *s)
     s->torque = e->snap_tq;
     s->kinetic_energy = e->ek;
     s->potential_energy = e->ep;
-    s->unbalanced_sum = e->net_sum;
-    s->unbalanced_count = e->net_count;
+    s->unbalanced_max = e->net_max;
     s->contact_force_sum = e->contact_force_sum;
     s->overlap_sum = e->overlap_sum;
     s->contact_count = e->contact_count;

@@ -134,8 +134,7 @@ static sbc_snapshot measures(const double *m)
     sbc_snapshot s;
     memset(&s, 0, sizeof s);
     s.kinetic_energy = m[SBC_HOST_EK];
-    s.unbalanced_sum = m[SBC_HOST_NET_SUM];
-    s.unbalanced_count = (long)m[SBC_HOST_NET_COUNT];
+    s.unbalanced_max = m[SBC_HOST_NET_MAX];
     s.potential_energy = m[SBC_HOST_EP];
     s.contact_force_sum = m[SBC_HOST_CONTACT_SUM];
     s.contact_count = (long)m[SBC_HOST_CONTACT_COUNT];

@@ -29,11 +29,6 @@ void sbc_relax_floor(sbc_relax *r, double floor_force, double floor_energy)
 
 /* ---- force balance: (a) and (b) of relax.h ---- */
 
-static double mean_net(const sbc_relax_sample *s)
-{
-    return s->net_count > 0 ? s->net_sum / (double)s->net_count : 0.0;
-}
-
 /* the mean contact force that scales U, with the floor, N */
 static double contact_scale(const sbc_relax *r, const sbc_relax_sample *s)
 {
@@ -44,7 +39,7 @@ static double contact_scale(const sbc_relax *r, const sbc_relax_sample *s)
 static int force_counts(const sbc_relax *r, const sbc_relax_sample *s)
 {
     const double fc = contact_scale(r, s);
-    return mean_net(s) <= r->tol * fc && s->ek <= fmax(0.5 * r->tol * r->tol * s->ep, r->floor_energy);
+    return s->net_max <= r->tol * fc && s->ek <= fmax(0.5 * r->tol * r->tol * s->ep, r->floor_energy);
 }
 
 /* ---- energy: eq. 11 past the kinetic-energy maximum ---- */
@@ -72,7 +67,7 @@ int sbc_relax_needs_contacts(const sbc_relax *r, const sbc_relax_sample *s)
     if (r->known_step == 0 || r->steps + 1 - r->known_step >= SBC_RELAX_EP_REFRESH)
         return 1;
     if (r->criterion == SBC_CRITERION_FORCE)
-        return mean_net(s) <= 2.0 * r->tol * fmax(r->fc_known, r->floor_force);
+        return s->net_max <= 2.0 * r->tol * fmax(r->fc_known, r->floor_force);
     {
         const int past_peak = r->past_peak || (r->steps > 0 && r->rising && ek <= r->ek_prev);
         if (ek == 0.0 || counting_limit(r, past_peak) == 0.0)
@@ -98,7 +93,7 @@ int sbc_relax_update(sbc_relax *r, const sbc_relax_sample *s)
         r->ep_known = s->ep;
         r->ek_known = s->ek;
         r->fc_known = s->contact_count > 0 ? s->contact_sum / (double)s->contact_count : 0.0;
-        r->unbalanced = contact_scale(r, s) > 0.0 ? mean_net(s) / contact_scale(r, s) : 0.0;
+        r->unbalanced = contact_scale(r, s) > 0.0 ? s->net_max / contact_scale(r, s) : 0.0;
     }
     if (r->criterion == SBC_CRITERION_FORCE)
         ok = s->ep >= 0.0 && force_counts(r, s);

@@ -21,15 +21,40 @@
  * residual ((N m)^2), moment scale sum (|a_q| R_q)^2. */
 typedef struct raw_sums {
     double fr, fs, mr, ms;
+    double kn;           /* the host's contact stiffness, N/m (0: unknown) */
     double floor;        /* force floor, N (the force criterion's, relax.h) */
     double fs_lo, ms_lo; /* the scales' floors: floor^2 and (floor R)^2 summed like fs, ms */
 } raw_sums;
 
-static raw_sums no_sums(double floor)
+static raw_sums no_sums(double kn, double floor)
 {
-    raw_sums w = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    raw_sums w = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    w.kn = kn;
     w.floor = floor;
     return w;
+}
+
+/* The gains. update fixed: the paper's, from the dimensionless values of
+ * Table 4, g_a = G_a dt^2 / M and g_m = G_m dt^2 / (M R^2) (eq. 37), which
+ * hold one time step only (Table 4's values act at 1/1143 of the critical
+ * step and throw the frame at 1/10). update secant with kn known: scale-free
+ * first steps that the secant factor then adapts, g_a = share / kn (m/N; a
+ * frame particle held by about one contact of stiffness kn on each side of a
+ * pair: share 1/4 for a +/- pair, whose two partners move together, 1/2 for
+ * one particle) and g_m = 1 / (4 kn R^2) (rad/(N m)). */
+static int physical(const sbc_settings *s, const raw_sums *w)
+{
+    return s->update == SBC_UPDATE_SECANT && w->kn > 0.0;
+}
+
+static double gain_force(const sbc_settings *s, const raw_sums *w, double dt, double M, double share)
+{
+    return physical(s, w) ? share / w->kn : s->gain_force * dt * dt / M;
+}
+
+static double gain_moment(const sbc_settings *s, const raw_sums *w, double dt, double M, double R)
+{
+    return physical(s, w) ? 0.25 / (w->kn * R * R) : s->gain_moment * dt * dt / (M * R * R);
 }
 
 static void add_scale(raw_sums *w, const double *a, double R)
@@ -66,7 +91,7 @@ static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const doubl
     double at = M * R / (dt * dt);     /* a~ of eq. 37, N */
     double mt = M * R * R / (dt * dt); /* m~ of eq. 37, N m */
     double da0 = a[2 * q] + a[2 * p], da1 = a[2 * q + 1] + a[2 * p + 1], dm = m[q] + m[p];
-    double ga = s->gain_force * dt * dt / M, gm = s->gain_moment * dt * dt / (M * R * R);
+    double ga = gain_force(s, w, dt, M, 0.25), gm = gain_moment(s, w, dt, M, R);
     double u0 = -ga * da0, u1 = -ga * da1, step;
     *sf += (da0 * da0 + da1 * da1) / (at * at);
     *sm += dm * dm / (mt * mt);
@@ -83,11 +108,11 @@ static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const doubl
     if (step > o->max_step) o->max_step = step;
 }
 
-static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double floor,
+static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double kn, double floor,
                            const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double sf = 0.0, sm = 0.0, dmc = 0.0, mc = 0.0, rc = 0.0;
-    raw_sums w = no_sums(floor);
+    raw_sums w = no_sums(kn, floor);
     int q, c;
     for (q = 0; q < f->n; ++q)
         if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT) /* each pair once */
@@ -102,7 +127,7 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
     w.mr += dmc * dmc;
     {
         double mt = mc * rc * rc / (dt * dt);
-        double gm = s->gain_moment * dt * dt / (mc * rc * rc);
+        double gm = gain_moment(s, &w, dt, mc, rc);
         sm += dmc * dmc / (mt * mt);
         for (c = 0; c < 4; ++c) {
             int qc = f->corner[c];
@@ -127,12 +152,12 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
  * imposed F. Gains: g_a = G_a dt^2 / M_q, g_F = G_F / R_q^2; normalizations of
  * eq. 37: a~ = M R / dt^2, F~ = R^3. O(Q^2) for the sum over r; the frame
  * is O(sqrt N) particles, so this stays far below the cost of a DEM step. */
-static void servo_traction(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double floor,
+static void servo_traction(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double kn, double floor,
                            const double F[4], const double *a, const double *x, double *du, double *dtheta,
                            sbc_servo_norms *o)
 {
     double P[4], sf = 0.0, sd = 0.0;
-    raw_sums w = no_sums(floor);
+    raw_sums w = no_sums(kn, floor);
     int q, r;
     /* eq. 23 */
     for (q = 0; q < 4; ++q)
@@ -166,7 +191,7 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
             add_scale(&w, t, R);
         }
         {
-            double ga = s->gain_force * dt * dt / M, gF = s->gain_deformation / (R * R);
+            double ga = gain_force(s, &w, dt, M, 0.5), gF = s->gain_deformation / (R * R);
             double u0 = ga * da0 + gF * dF0, u1 = ga * da1 + gF * dF1, step;
             du[2 * q] = u0;
             du[2 * q + 1] = u1;
@@ -182,14 +207,14 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
 }
 
 void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                         double floor, const double F[4], const double *a, const double *m, const double *x,
+                         double kn, double floor, const double F[4], const double *a, const double *m, const double *x,
                          double *du, double *dtheta, sbc_servo_norms *out)
 {
     out->max_step = 0.0;
     if (bc == SBC_BC_P)
-        servo_periodic(f, s, mass, dt, floor, a, m, du, dtheta, out);
+        servo_periodic(f, s, mass, dt, kn, floor, a, m, du, dtheta, out);
     else
-        servo_traction(f, s, mass, dt, floor, F, a, x, du, dtheta, out);
+        servo_traction(f, s, mass, dt, kn, floor, F, a, x, du, dtheta, out);
 }
 
 /* Mixed, Table 5 with the modes as data (mode[2q + c] = sbc_mode):
@@ -201,11 +226,11 @@ void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, c
  * r_force gathers the force residuals of P pairs and T components (r_a^p and
  * r_a^t of Table 5, one tolerance); r_moment those of the P pairs. */
 void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_settings *s, const double *mass,
-                     double dt, double floor, const double P_star[4], const unsigned char P_fixed[4],
+                     double dt, double kn, double floor, const double P_star[4], const unsigned char P_fixed[4],
                      const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double P[4] = {0.0, 0.0, 0.0, 0.0}, sf = 0.0, sm = 0.0;
-    raw_sums w = no_sums(floor);
+    raw_sums w = no_sums(kn, floor);
     int q, k;
     o->max_step = 0.0;
     for (q = 0; q < f->n; ++q) { /* eq. 23 */
@@ -222,7 +247,7 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
     }
     for (q = 0; q < f->n; ++q) {
         const double *A = &f->A[2 * q];
-        double R = f->R[q], at = mass[q] * R / (dt * dt), ga = s->gain_force * dt * dt / mass[q];
+        double R = f->R[q], at = mass[q] * R / (dt * dt), ga = gain_force(s, &w, dt, mass[q], 0.5);
         int c;
         if (mode[2 * q] == SBC_MODE_P) {
             if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)

@@ -20,16 +20,17 @@ typedef struct sbc_servo_norms {
 /* Residual norms of the state (a [2Q] boundary forces, m [Q] boundary
  * moments, x [2Q] positions) and the corrections (eqs. 33-34 for P, 36 for
  * T) written to du [2Q] (m) and dtheta [Q] (rad). F is the imposed
- * macroscopic deformation gradient, mass [Q] in kg, dt in s; floor (N): frame
+ * macroscopic deformation gradient, mass [Q] in kg, dt in s; kn (N/m) the
+ * host's contact stiffness (0: unknown), for the secant update's gains; floor (N): frame
  * forces below it count as it in the relative norms (relax.h). */
 void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                         double floor, const double F[4], const double *a, const double *m, const double *x,
+                         double kn, double floor, const double F[4], const double *a, const double *m, const double *x,
                          double *du, double *dtheta, sbc_servo_norms *out);
 
 /* Mixed (D)-(P)-(T), Table 5 and eq. 48, with the modes per frame component
  * (mode [2Q], sbc_mode) and the stress targets P_star where P_fixed. */
 void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_settings *s, const double *mass,
-                     double dt, double floor, const double P_star[4], const unsigned char P_fixed[4],
+                     double dt, double kn, double floor, const double P_star[4], const unsigned char P_fixed[4],
                      const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o);
 
 #endif

@@ -31,9 +31,8 @@ typedef struct sbc_snapshot {
     const double *force;     /* [2Q] resultant contact force on each frame particle, N */
     const double *torque;    /* [Q] resultant contact moment on each frame particle, N m */
     double kinetic_energy;   /* Ek of the interior particles that carry a force, eq. 12, J */
-    double unbalanced_sum;   /* sum of |net force| (contact forces only, before damping) over the
-                                interior particles that carry a force, N */
-    long unbalanced_count;   /* ... how many such particles */
+    double unbalanced_max;   /* largest |net force| (contact forces only, before damping) on an
+                                interior particle, N */
     double potential_energy; /* Ep of all contacts, eq. 12, J (the contact sums: measured together) */
     double contact_force_sum; /* sum over contacts of |contact force| (normal and tangential), N */
     double overlap_sum;      /* sum over contacts of dn_c / Rbar_c (eq. 39), - */
@@ -61,7 +60,7 @@ typedef struct sbc_result {
     long relax_steps;     /* host steps spent on this increment */
     double r_force, r_moment, r_deformation; /* final residual norms (0 for D) */
     double hill_mandel;   /* eq. 30 relative to sbc_homogenize_work_scale */
-    double unbalanced;    /* mean |net force| / mean |contact force| of the interior when accepted (relax.h) */
+    double unbalanced;    /* max |net force| / mean |contact force| of the interior when accepted (relax.h) */
     double frame_residual; /* frame force residual relative to the frame's forces (servo.h), 0 for D */
 } sbc_result;
 
@@ -88,8 +87,8 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
 
 /* What sbc_controller_step will read of this step's snapshot, for hosts
  * that measure lazily (a contact pass and an MPI reduction saved on most
- * steps). Call with the interior's sums (kinetic_energy, unbalanced_sum,
- * unbalanced_count) and potential_energy = SBC_RELAX_EP_UNMEASURED (relax.h);
+ * steps). Call with the interior's measures (kinetic_energy, unbalanced_max)
+ * and potential_energy = SBC_RELAX_EP_UNMEASURED (relax.h);
  * if the answer has SBC_NEED_CONTACTS, measure the contact sums
  * (potential_energy, contact_force_sum, contact_count, overlap_sum) and call
  * again with them. SBC_NEED_FRAME: the relaxation ends on this step, so pass

@@ -41,8 +41,7 @@ const int *sbc_host_frame_particles(const sbc_host *h);
  * SBC_RELAX_EP_UNMEASURED (controller.h, sbc_controller_needs). */
 enum {
     SBC_HOST_EK = 0,          /* J */
-    SBC_HOST_NET_SUM,         /* sum |net force| over the interior carrying force, N */
-    SBC_HOST_NET_COUNT,       /* ... how many */
+    SBC_HOST_NET_MAX,         /* largest |net contact force| on an interior particle, N */
     SBC_HOST_EP,              /* J */
     SBC_HOST_CONTACT_SUM,     /* sum |contact force|, N */
     SBC_HOST_CONTACT_COUNT,
