@@ -43,6 +43,45 @@ closed_form() {
   fi
 }
 
+# frictional_tight LABEL CSV: the frictional lattice (ks = kn/5, mu 0.4) under
+# F = diag(0.99, 0.995) in 4 increments at accuracy tight (tests/test_accuracy.c):
+# the affine closed form of closed_form to 1e-6 relative, P12, P21 to 1e-6 of P11
+frictional_tight() {
+  local out
+  out=$(awk -F, 'NR > 1 {
+      t = $1 / 4; f11 = 1 - t * 0.01; f22 = 1 - t * 0.005;
+      p11 = -5 * 1e4 * (2.04e-3 - 2e-3 * f11) / (4 * 2e-3);
+      p22 = -5 * 1e4 * (2.04e-3 - 2e-3 * f22) / (4 * 2e-3);
+      e = ($6 - p11) / p11; if (e < 0) e = -e; if (e > m) m = e;
+      e = ($9 - p22) / p22; if (e < 0) e = -e; if (e > m) m = e;
+      e = ($7 < 0 ? -$7 : $7) / -p11; if (e > m) m = e;
+      e = ($8 < 0 ? -$8 : $8) / -p11; if (e > m) m = e;
+      n++ }
+    END { printf "%d %.3g", n, m }' "$2" 2>/dev/null)
+  set -- "$1" $out
+  if [ "${2:-0}" = 5 ] && awk -v m="$3" 'BEGIN { exit !(m <= 1e-6) }'; then
+    ok "$1: 5 increments, max relative error $3"
+  else
+    no "$1: increments ${2:-0}, max relative error ${3:-?}"
+  fi
+}
+
+# frictional_checks FRICTION-SED: the frictional lattice at accuracy tight, (D)
+# on 1 and 2 ranks and (P) serially; FRICTION-SED turns the deck's ks = 0 into 2e3
+frictional_checks() {
+  local bc np
+  for bc in D P; do
+    deck_with "$1; s/servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20/servo_bc $bc F 0.99 0 0 0.995 increments 4 accuracy tight/" \
+      "$TMP/friction_$bc.in"
+    for np in 1 2; do
+      [ $bc = P ] && [ $np = 2 ] && continue
+      run_deck $np "friction_$bc.in" "$TMP/friction_${bc}_$np.csv" "$TMP/friction_${bc}_$np.log" \
+        || { echo "$HOST frictional ($bc) -np $np failed:"; tail -3 "$TMP/friction_${bc}_$np.log"; }
+      frictional_tight "$np rank(s) ($bc) frictional lattice, accuracy tight" "$TMP/friction_${bc}_$np.csv"
+    done
+  done
+}
+
 # same_csvs LABEL INCREMENTS A.csv B.csv C.csv: B and C equal A to 1e-8 of each
 # quantity's scale in the run (F, P and sigma by their largest component, the
 # overlap by itself: a near-zero shear component is not compared with itself)

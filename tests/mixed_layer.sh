@@ -4,19 +4,15 @@
 # frictional physics): fix servo_bc in LAMMPS and in LIGGGHTS (frame = the
 # type-2 atoms of the data files the core writes) against the embedded engine
 # reading the same packing. Stage 1: P22* = -1.05e6 N/m in 3 increments; stage 2: F12 = 0.004
-# in 2 increments. Every sigma component of every converged increment of the
-# stress stage within 0.5 % of the stress scale (max |sigma| of the run), of the
-# shear increments within 1 %. Prints "N passed, N failed".
-# Why 1 % once the layer shears: frictional contacts start to slide, and the
-# two engines reach the sliding state along different relaxation trajectories
-# (LAMMPS integrates by velocity Verlet and projects its 3D shear history on the
-# new tangent plane each step; the engine integrates eq. 9 and keeps a scalar
-# spring, eq. 6), so the frictional history parts: measured 0.02 % in the stress
-# stage, 0.59 % after the second shear increment, and it does not shrink with the
-# relaxation tolerance (0.70 % at tolE 1e-4, 0.59 % at 1e-5, 0.52 % at 1e-6).
-# Relaxation tolerance 1e-5 (not the paper's 1e-3) keeps both closer to rest.
-# LIGGGHTS keeps the sphere inertia (2/5 m r^2): other relaxation trajectories
-# again, within the same bounds.
+# in 2 increments; the default words (accuracy balanced, docs/servo_bc.md).
+# Every sigma component of every converged increment within 0.5 % of the
+# stress scale (max |sigma| of the run). Measured: LAMMPS 0.065 % in the stress
+# stage, 0.20 % once sheared; LIGGGHTS (sphere inertia 2/5 m r^2) 0.14 %, 0.23 %.
+# Under the paper's settings (Ek/Ep 1e-3) they were 0.02 % and 0.59 %: once
+# frictional contacts slide, the engines reach the sliding state along
+# different relaxation trajectories (LAMMPS integrates by velocity Verlet and
+# projects its 3D shear history on the new tangent plane each step; the engine
+# integrates eq. 9 and keeps a scalar spring, eq. 6).
 # Usage: mixed_layer.sh SERVO_BC LMP_SERVO LIGGGHTS_SERVO
 set -u
 usage="usage: mixed_layer.sh SERVO_BC LMP_SERVO LIGGGHTS_SERVO"
@@ -25,7 +21,7 @@ emb=$(abs "${1:?$usage}") lmp=$(abs "${2:?$usage}") lig=$(abs "${3:?$usage}")
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 pass=0 fail=0
-SERVO="F 1 0.004 0 1 increments 2 stress P22 -1.05e6 3 relax 1e-5 20 damping 0.7 0.7 gain_force 1 gain_moment 1 tol_force 1e-6 tol_moment 1e-6 max_iterations 100000"
+SERVO="F 1 0.004 0 1 increments 2 stress P22 -1.05e6 3"
 cat > "$tmp/layer.sbc" <<SBC
 dimension 2
 generate periodic n0 25 rmin 0.8e-3 polydispersity 1.5 seed 1
@@ -94,12 +90,12 @@ for host in lammps liggghts; do
       n++ }
     END { printf "%d %.4g %.4g", n, (s > 0 ? 100 * m1 / s : 100), (s > 0 ? 100 * m2 / s : 100) }')
   set -- $res
-  if [ "${1:-0}" = 6 ] && awk -v a="${2:-100}" -v b="${3:-100}" 'BEGIN { exit !(a <= 0.5 && b <= 1.0) }'; then
+  if [ "${1:-0}" = 6 ] && awk -v a="${2:-100}" -v b="${3:-100}" 'BEGIN { exit !(a <= 0.5 && b <= 0.5) }'; then
     pass=$((pass + 1))
     echo "cross-host (mixed layer), 37 particles: max |sigma_${host} - sigma_embedded| = $2 % of the stress scale in the stress stage, $3 % once sheared"
   else
     fail=$((fail + 1))
-    echo "FAIL cross-host (mixed layer) $host: ${1:-0} increments (expected 6), max difference ${2:-?} % (limit 0.5 %) in the stress stage, ${3:-?} % (limit 1 %) once sheared"
+    echo "FAIL cross-host (mixed layer) $host: ${1:-0} increments (expected 6), max difference ${2:-?} % (limit 0.5 %) in the stress stage, ${3:-?} % (limit 0.5 %) once sheared"
   fi
 done
 echo "$pass passed, $fail failed"

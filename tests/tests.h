@@ -18,4 +18,5 @@ void test_mixed(void);
 void test_host(void);
 void test_decks(void);
 void test_bpm(void);
+void test_accuracy(void);
 #endif

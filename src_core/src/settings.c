@@ -51,8 +51,8 @@ typedef struct preset {
 static const preset presets[] = {
     {"paper", 0.0, SBC_CRITERION_ENERGY, 1.0e-3, 20, 0.0, 1.0e-2, 0.0, SBC_UPDATE_FIXED},
     {"fast", 1.0e-2, SBC_CRITERION_FORCE, 1.0e-3, 20, 1.0e-2, 1.0e-2, 0.1, SBC_UPDATE_SECANT},
-    {"balanced", 1.0e-4, SBC_CRITERION_FORCE, 1.0e-5, 20, 1.0e-4, 1.0e-2, 0.03, SBC_UPDATE_SECANT},
-    {"tight", 1.0e-6, SBC_CRITERION_FORCE, 1.0e-8, 20, 1.0e-7, 1.0e-2, 0.003, SBC_UPDATE_SECANT},
+    {"balanced", 1.0e-4, SBC_CRITERION_FORCE, 1.0e-5, 20, 1.0e-4, 1.0e-2, 0.01, SBC_UPDATE_SECANT},
+    {"tight", 1.0e-6, SBC_CRITERION_FORCE, 1.0e-8, 20, 1.0e-7, 1.0e-2, 0.001, SBC_UPDATE_SECANT},
 };
 
 static const preset *find_preset(const char *name)

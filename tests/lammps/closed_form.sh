@@ -12,6 +12,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 HOST=lammps DECK=$here/lattice.in TMP=$(mktemp -d)
 . "$here/../host_checks.sh"
 lattice_checks
+frictional_checks 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 2e3 0 0 0.4 0/'
 refuses "a 3d box" 's/^dimension       2/dimension 3/; s/lattice         sq/lattice sc/; /enforce2d/d; s/nve\/sphere disc/nve\/sphere/' \
   "the box is 3d"
 cat > "$TMP/restart_head.in" <<LMP

@@ -41,6 +41,28 @@ def closed_form(bc, extra):
 closed_form('D', '')
 closed_form('P', 'tol_force 1e-14 tol_moment 1e-14 gain_force 1e3 gain_moment 1e3')
 
+
+def frictional_tight(bc):
+    """The frictional lattice (ks = kn/5, mu 0.4), F = diag(0.99, 0.995) in 4 increments at
+    accuracy tight: the affine closed form to 1e-6 (tests/test_accuracy.c)."""
+    servo_bc.O.reset()
+    servo = servo_bc.run_case(packing, '%s F 0.99 0 0 0.995 increments 4 accuracy tight' % bc, density=2e3, kn=1e4,
+                              ks=2e3, mu=0.4, dt=1e-5)
+    worst = 0.0
+    for row in servo.rows[1:]:
+        f11, f22 = row['F11'], row['F22']
+        p11 = -5 * 1e4 * (2.04e-3 - 2e-3 * f11) / (4 * 2e-3)
+        p22 = -5 * 1e4 * (2.04e-3 - 2e-3 * f22) / (4 * 2e-3)
+        worst = max(worst, abs(row['P11'] - p11) / -p11, abs(row['P22'] - p22) / -p22,
+                    abs(row['P12']) / -p11, abs(row['P21']) / -p11)
+    check(len(servo.rows) == 5 and worst <= 1e-6,
+          '(%s) frictional lattice, accuracy tight: %d increments, max relative error %.3g'
+          % (bc, len(servo.rows), worst))
+
+
+frictional_tight('D')
+frictional_tight('P')
+
 # kn, ks hold exactly on every contact, for unequal radii too (Ip2 MatchMakers)
 servo_bc.O.reset()
 mat = servo_bc.O.materials.append(servo_bc.FrictMat(young=1e7, poisson=0.3, frictionAngle=0.4))
