@@ -12,12 +12,15 @@
 CC      ?= cc
 CSTD     = -std=c11 -Wall -Wextra -pedantic -Werror
 OPT     ?= -O2 -g
-CFLAGS  += $(CSTD) $(OPT) -fPIC -Isrc_core/include
+CFLAGS  += $(CSTD) $(OPT) -fPIC -Isrc_core/include -Isrc_core/src
 LDLIBS   = -lm
 B        = build
 
-CORE_SRC = $(wildcard src_core/src/*.c)
-CORE_HDR = $(wildcard src_core/include/sbc/*.h src_core/src/*.h)
+# the core by layer: servo (controller, frame, homogenization, grammar, host
+# handle), engines (the embedded 2D and 3D engines, packings), io (results,
+# VTK, plots), runner (the script language of servo-bc)
+CORE_SRC = $(wildcard src_core/src/*/*.c)
+CORE_HDR = $(wildcard src_core/include/sbc/*.h src_core/src/*/*.h)
 CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 TEST_HDR = $(wildcard tests/*.h)

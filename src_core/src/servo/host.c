@@ -3,7 +3,7 @@
 
 #include "sbc/confine.h"
 #include "sbc/results.h"
-#include "words.h"
+#include "io/words.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -13,7 +13,7 @@
 #include "sbc/settings.h"
 #include "sbc/vtk.h"
 #include "script_state.h"
-#include "words.h"
+#include "io/words.h"
 
 #include <math.h>
 #include <stdlib.h>

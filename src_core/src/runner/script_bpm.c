@@ -12,7 +12,7 @@
  *   run */
 #define _POSIX_C_SOURCE 200809L
 #include "script_state.h"
-#include "words.h"
+#include "io/words.h"
 
 #include "sbc/bpm.h"
 #include "sbc/bpm_loading.h"
