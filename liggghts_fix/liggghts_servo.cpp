@@ -39,7 +39,7 @@ int main(int argc, char **argv)
 {
   MPI_Init(&argc, &argv);
   // LIGGGHTS prints an error to stdout and calls MPI_Abort: on a pipe, a
-  // block-buffered stdout would lose the message (HOSTS.md)
+  // block-buffered stdout lost the message (LIGGGHTS 3.8, tried)
   setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   LAMMPS *lmp = new LAMMPS(argc, argv, MPI_COMM_WORLD);
   (*(lmp->modify->*member(FixMap())))["servo_bc"] = &create_servo_bc;

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Headers to compile against the Debian LAMMPS package (HOSTS.md): Debian's
+# Headers to compile against the Debian LAMMPS package (docs/lammps/README.md): Debian's
 # liblammps-dev lacks fmt/ (the library carries its own fmt 7 as fmt::v7_lmp)
 # and the neighbour-request header; both come from the Debian source package
 # of the same version. Usage: scripts/lammps-headers.sh DEST  (DEST/fmt/, DEST/*.h)

@@ -48,7 +48,7 @@ typedef struct sbc_commands {
     const unsigned char *free_rotation; /* [Q] 1: the host integrates this rotation freely */
 } sbc_commands;
 
-/* One converged increment: the CSV row of DESIGN.md plus the Hill-Mandel residual. */
+/* One converged increment: the CSV row (results.h), with the accuracy measures. */
 typedef struct sbc_result {
     int increment;
     double F[4];          /* eq. 15, - */

@@ -7,7 +7,7 @@
  *   contact frictional kn KN ks KS mu MU            (N/m, N/m, -)
  *   density RHO                                     (mass per area, kg/m^2)
  *   timestep DT                                     (s)
- *   servo_bc BC keyword value ...                   (DESIGN.md grammar)
+ *   servo_bc BC keyword value ...                   (docs/servo_bc.md)
  *   vtk EVERY PREFIX                                (snapshot every EVERY increments and the last)
  *   plot FILE.svg                                   (sigma~11, sigma~12 against F12 at the end)
  *   run

@@ -1,4 +1,4 @@
-/* servo_bc: the keyword grammar shared by every host (DESIGN.md).
+/* servo_bc: the keyword grammar shared by every host (docs/servo_bc.md).
  *
  *   servo_bc BC keyword value ...        BC = D | P | T | mixed
  *
