@@ -74,18 +74,19 @@ dt_keep() { # dt: words of the paper's physical gains and tolerances at that dt
     printf "gain_force %.6g gain_moment %.6g tol_force %.6g tol_moment %.6g", 1e2 * s, 2e2 * s, 1e-6 / s, 1e-6 / s }'
 }
 
-# gains 0.01x to 100x the paper's (1e2, 2e2, 2e-5), servo-active tolerances, and far beyond
-# (too weak a gain cannot reach servo-active tolerances within max_iterations)
+# fixed gains (update fixed) 0.01x to 100x the paper's (1e2, 2e2, 2e-5), servo-active
+# tolerances, and far beyond (too weak a gain cannot reach servo-active tolerances
+# within max_iterations; the presets' secant update does not depend on them)
 for g in 0.01 1 100; do
   gf=$(frac "$g" 1e2) gm=$(frac "$g" 2e2) gd=$(frac "$g" 2e-5)
   tier=fast expect_p=ok expect_t=ok
   [ "$g" = 0.01 ] && tier=full expect_p="max_iterations reached" expect_t="max_iterations reached"
   [ "$g" = 1 ] && expect_t="max_iterations reached"
   cell $tier "gains_${g}x_P" "$expect_p" "$L5" 1e4 2e3 1e-6 \
-    "P $PATH_F gain_force $gf gain_moment $gm tol_force 1e-8 tol_moment 1e-8 max_iterations 3000"
+    "P $PATH_F gain_force $gf gain_moment $gm tol_force 1e-8 tol_moment 1e-8 max_iterations 3000 update fixed"
   [ "$g" = 1 ] && tier=full
   cell $tier "gains_${g}x_T" "$expect_t" "$L5" 1e4 2e3 1e-6 \
-    "T $PATH_F gain_force $gf gain_deformation $gd tol_force 1e-8 max_iterations 3000"
+    "T $PATH_F gain_force $gf gain_deformation $gd tol_force 1e-8 max_iterations 3000 update fixed"
 done
 # fixed gains far too large stop with the step check; the secant update of
 # the presets scales its first step from kn and ignores the gains' scale
