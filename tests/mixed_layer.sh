@@ -6,8 +6,8 @@
 # reading the same packing. Stage 1: P22* = -1.05e6 N/m in 3 increments; stage 2: F12 = 0.004
 # in 2 increments; the default words (accuracy balanced, docs/servo_bc.md).
 # Every sigma component of every converged increment within 0.5 % of the
-# stress scale (max |sigma| of the run). Measured: LAMMPS 0.065 % in the stress
-# stage, 0.20 % once sheared; LIGGGHTS (sphere inertia 2/5 m r^2) 0.14 %, 0.23 %.
+# stress scale (max |sigma| of the run). Measured: LAMMPS 0.17 % in the stress
+# stage, 0.22 % once sheared; LIGGGHTS (sphere inertia 2/5 m r^2) 0.23 %, 0.26 %.
 # Under the paper's settings (Ek/Ep 1e-3) they were 0.02 % and 0.59 %: once
 # frictional contacts slide, the engines reach the sliding state along
 # different relaxation trajectories (LAMMPS integrates by velocity Verlet and
