@@ -35,7 +35,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-enum { VEC_SIZE = 18 };
+enum { VEC_SIZE = 21 };
 enum { CALLBACK_GROW = 0, CALLBACK_RESTART = 1 };    // Atom::GROW, Atom::RESTART in LAMMPS
 }    // namespace
 
@@ -431,9 +431,10 @@ void FixServoBC::post_force(int)
     last = *sbc_controller_result(ctl);
     if (comm->me == 0 && csv && sbc_csv_write(csv, &last, &err) != SBC_OK)
       fail_here(err.message);
-    log("servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %ld iterations %d\n",
+    log("servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %ld iterations %d "
+        "unbalanced %.2g\n",
         sbc_bc_name(settings.bc), last.increment, sbc_settings_total_increments(&settings), last.F[1],
-        last.sigma[0], last.sigma[1], (long) last.relax_steps, last.iterations);
+        last.sigma[0], last.sigma[1], (long) last.relax_steps, last.iterations, last.unbalanced);
   }
   if (ev == SBC_EVENT_FINISHED) {
     finished = 1;
@@ -453,7 +454,11 @@ double FixServoBC::compute_vector(int n)
   sbc_controller_progress(ctl, &iteration, &r[0], &r[1], &r[2]);
   if (n <= 15) return r[n - 13];
   if (n == 16) return iteration;
-  return finished;
+  if (n == 17) return finished;
+  // 18-20: the accuracy the last converged increment was accepted at
+  if (n == 18) return last.unbalanced;
+  if (n == 19) return last.frame_residual;
+  return last.hill_mandel;
 }
 
 /* global restart data, written by rank 0: frame, atom IDs, masses, controller
