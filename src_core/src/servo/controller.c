@@ -736,7 +736,7 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
                          "servo_bc %s: increment %d, iteration %d: relaxation did not reach force balance %g for %d "
                          "steps within %ld steps (unbalanced force ratio %.3g, Ek = %g J, Ep = %g J); check damping "
                          "and time step, loosen 'balance' or raise max_relax_steps",
-                         sbc_bc_name(c->s.bc), c->increment, c->iteration, c->s.tol_balance, c->s.window,
+                         sbc_bc_name(c->s.bc), c->increment, c->iteration, c->relax.tol, c->s.window,
                          c->relax.steps, c->relax.unbalanced, snap->kinetic_energy, snap->potential_energy);
             else
                 sbc_fail(err, SBC_ERR_DIVERGED,
