@@ -234,6 +234,7 @@ class ServoBC(object):
                          (ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)()]
         self._row = (ctypes.c_double * ROW)()
         self._m = (ctypes.c_double * MEASURES)()
+        self._fc_mean = 0.0       # the last measured mean |contact force|, N
         _instances.append(self)
         # the PyRunner's command runs in __main__: a bound method placed there
         # costs a name lookup per step instead of an import and an index
@@ -328,9 +329,18 @@ class ServoBC(object):
                 nc += 1
         return ov, nc, fc
 
-    def _net_force_max(self):
+    def _net_force_max(self, fc_mean):
         """The largest |net contact force| on an interior body (relax.h); YADE's forces are
-        the contact forces here, damping is applied later by NewtonIntegrator."""
+        the contact forces here, damping is applied later by NewtonIntegrator. While every
+        frame body is prescribed (not dynamic), YADE's own unbalancedForce(True), the largest
+        force on a dynamic body over the mean |contact force| (C++), times that mean: some
+        80 times cheaper per step than a Python loop over 100 bodies. fc_mean: this step's
+        mean contact force when measured, else the last one measured (the core decides on
+        measured steps only, sbc_controller_needs)."""
+        if not self._free_any and fc_mean > 0.0:
+            u = utils.unbalancedForce(True)
+            if math.isfinite(u):
+                return u * fc_mean
         return math.sqrt(max([v[0] * v[0] + v[1] * v[1] for v in map(O.forces.f, self.interior)] or [0.0]))
 
     def step(self):
@@ -346,12 +356,14 @@ class ServoBC(object):
         lib = _core()
         m = self._m
         m[EK] = self._kinetic_energy()
-        m[NET_MAX] = self._net_force_max()
+        m[NET_MAX] = self._net_force_max(self._fc_mean)
         m[EP] = EP_UNMEASURED
         need = lib.sbc_host_needs(self._h, m)
         if need & NEED_CONTACTS:
             m[EP] = self._potential_energy()
             m[OVERLAP_SUM], m[CONTACT_COUNT], m[CONTACT_SUM] = self._contact_sums()
+            self._fc_mean = m[CONTACT_SUM] / m[CONTACT_COUNT] if m[CONTACT_COUNT] > 0 else 0.0
+            m[NET_MAX] = self._net_force_max(self._fc_mean)
             need = lib.sbc_host_needs(self._h, m)
         if need & NEED_FRAME:
             x, theta, force, torque = self._buffers
