@@ -78,26 +78,29 @@ check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect -q \
 	  $(B)/run_tests $(B)/servo-bc
 
-# LAMMPS adapter against the Debian package: build/lmp_servo (work in progress, see issues)
-LMP_HDR = $(B)/lammps-headers
+# LAMMPS adapter against the Debian package: build/lmp_servo. The few headers
+# Debian's liblammps-dev lacks are shipped in lammps_fix/debian_headers/ (README there).
+LMP_HDR = lammps_fix/debian_headers
+LMP_DEV = $(B)/lammps-dev.installed
 LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h lammps_fix/fix_servo_bc_lammps.h lammps_fix/lmp_servo.cpp
 
 lammps: $(B)/lmp_servo $(B)/servo_bc_plugin.so
 
-$(LMP_HDR)/fix_neigh_history.h:
+$(LMP_DEV):
+	@mkdir -p $(B)
 	@bash scripts/install-deps.sh lammps-dev
-	bash scripts/lammps-headers.sh $(LMP_HDR)
+	@touch $@
 
-$(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_HDR)/fix_neigh_history.h
+$(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -llammps -lm
 
 # the plugin: for `plugin load` in LAMMPS builds with the PLUGIN package
-$(B)/servo_bc_plugin.so: $(LMP_SRC) lammps_fix/plugin.cpp $(B)/libservo_bc.a $(LMP_HDR)/fix_neigh_history.h
+$(B)/servo_bc_plugin.so: $(LMP_SRC) lammps_fix/plugin.cpp $(B)/libservo_bc.a $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -fPIC -shared -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -Isrc_core/include -o $@ lammps_fix/plugin.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -lm
 
-$(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_HDR)/fix_neigh_history.h
+$(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -o $@ tests/lammps/plugin_driver.cpp -llammps -ldl
 
