@@ -7,7 +7,10 @@
 # its path error against the `tight` run at the same time step (eq. 42 on the
 # difference, scripts/path_error.awk) with the largest error before the first
 # peak in % of the stress scale. A run that stops prints its message.
+# Each preset runs as defined (FIRE on the interior, fire_damping.h) and, as
+# PRESET-local, with the local damping of eq. 10 instead (`damping 0.7 0.7`).
 #   bash bench/presets.sh [OUT]       (CASES="regular_P regular_T" to choose,
+#                                      RUNS="balanced balanced-fire" to choose runs,
 #                                      DT_regular_P=1e-4 ... to set time steps)
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -15,6 +18,8 @@ B=${B:-$top/build}
 out=${1:-$top/out/presets}
 mkdir -p "$out"
 cases=${CASES:-regular_P regular_T irregular_P mixed_layer}
+runs=${RUNS:-fast balanced tight fast-local balanced-local tight-local}
+case " $runs " in *" tight "*) ;; *) runs="tight $runs" ;; esac # the reference
 [ -x "$B/servo-bc" ] || { echo "presets: $B/servo-bc not built (make)"; exit 1; }
 
 # the time steps of the preset runs: about 0.1 of each case's critical step
@@ -57,12 +62,15 @@ echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for c in $cases; do
   dt=$(dt_of "$c")
   sed "s|^servo_bc .*|& file $out/$c.paper.csv|" "$top/bench/speed_accuracy/$c.sbc" > "$out/$c.paper.sbc"
-  for p in tight fast balanced; do
-    script "$c" "$p" "$dt" "accuracy $p"
+  for p in $runs; do
+    case $p in
+      *-local) script "$c" "$p" "$dt" "accuracy ${p%-local} damping 0.7 0.7" ;;
+      *) script "$c" "$p" "$dt" "accuracy $p" ;;
+    esac
     run "$c" "$p"
   done
   run "$c" paper
-  for p in paper fast balanced tight; do
+  for p in paper $runs; do
     csv=$out/$c.$p.csv
     step=$dt
     [ $p = paper ] && step=$(awk '$1 == "timestep" { print $2 }' "$out/$c.paper.sbc")

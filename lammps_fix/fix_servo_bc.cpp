@@ -45,6 +45,7 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
   std::memset(&last, 0, sizeof last);
+  sbc_fire_start(&fire);
   if (sbc_settings_parse(&settings, narg - 3, arg + 3, &err) != SBC_OK)
     fail(err.message);
   if (!atom->sphere_flag) fail("requires atom_style sphere");
@@ -238,17 +239,40 @@ void FixServoBC::initial_integrate(int)
   }
 }
 
-/* local damping (eq. 10) on the interior, its rotations; out: its Ek (J) and
-   the largest |net contact force| before damping (N, relax.h); again: the
-   setup of a later run revisits the last step, whose rotation is counted */
-void FixServoBC::interior_pass(bool again, double out[2])
+/* damping fire: the interior's sums of fire_damping.h over all ranks, and
+   FIRE's mix for this step (the same on every rank) */
+sbc_fire_mix FixServoBC::fire_pass()
+{
+  const int nlocal = atom->nlocal, *mask = atom->mask;
+  double local[SBC_FIRE_SUMS] = {0.0, 0.0, 0.0, 0.0, 0.0}, sums[SBC_FIRE_SUMS];
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & interior_bit)) continue;
+    const double *f = atom->f[i], *v = atom->v[i], m = atom->torque[i][2], w = atom->omega[i][2];
+    local[SBC_FIRE_POWER] += f[0] * v[0] + f[1] * v[1] + m * w;
+    local[SBC_FIRE_VV] += v[0] * v[0] + v[1] * v[1];
+    local[SBC_FIRE_FF] += f[0] * f[0] + f[1] * f[1];
+    local[SBC_FIRE_WW] += w * w;
+    local[SBC_FIRE_MM] += m * m;
+  }
+  MPI_Allreduce(local, sums, SBC_FIRE_SUMS, MPI_DOUBLE, MPI_SUM, world);
+  return sbc_fire_step(&fire, sums);
+}
+
+/* local damping (eq. 10) on the interior's forces, or FIRE's mix (mix not
+   NULL) on its velocities v^(n-1/2), which the integrator's two half kicks
+   then advance exactly as the core's engine does (fire_damping.h); out: its
+   Ek (J) and the largest |net contact force| before damping (N, relax.h);
+   again: the setup of a later run revisits the last step, whose rotation is
+   counted and whose mix is applied */
+void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2])
 {
   const int nlocal = atom->nlocal, *mask = atom->mask;
   // flat views of the contiguous per-atom arrays
-  const double *v = &atom->v[0][0], *omega = &atom->omega[0][0];
+  double *v = &atom->v[0][0], *omega = &atom->omega[0][0];
   double *f = &atom->f[0][0], *torque = &atom->torque[0][0];
   const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
-  const double alpha = settings.damping ? settings.alpha : 0.0, beta = settings.damping ? settings.beta : 0.0;
+  const bool local = settings.damping == SBC_DAMPING_LOCAL;
+  const double alpha = local ? settings.alpha : 0.0, beta = local ? settings.beta : 0.0;
   const double inertia = servo_bc_host::inertia, turn = again ? 0.0 : dt;
   double ek = 0.0, net = 0.0;
   out[0] = out[1] = 0.0;
@@ -256,6 +280,13 @@ void FixServoBC::interior_pass(bool again, double out[2])
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & interior_bit)) continue;
     double *fi = &f[3 * i], *ti = &torque[3 * i];
+    const double m = rmass[i], I = inertia * m * radius[i] * radius[i], inv = dt / (m * I);
+    if (mix) {
+      const double push = mix->push - mix->stop * 0.5 * dt / m, spin = mix->spin - mix->stop * 0.5 * dt / I;
+      v[3 * i] = mix->keep * v[3 * i] + push * fi[0];
+      v[3 * i + 1] = mix->keep * v[3 * i + 1] + push * fi[1];
+      omega[3 * i + 2] = mix->keep * omega[3 * i + 2] + spin * ti[2];
+    }
     const double vx0 = v[3 * i], vy0 = v[3 * i + 1], w0 = omega[3 * i + 2];
     net = std::max(net, fi[0] * fi[0] + fi[1] * fi[1]);
     // eq. 10, with the half-step velocities (no damping at v = 0)
@@ -265,7 +296,6 @@ void FixServoBC::interior_pass(bool again, double out[2])
     // Ek and the rotation with the velocities after this step's kick
     // (v^(n+1/2) = v^(n-1/2) + dt f/m), as the embedded engine measures them;
     // one division: 1/m = I/(m I), 1/I = m/(m I)
-    const double m = rmass[i], I = inertia * m * radius[i] * radius[i], inv = dt / (m * I);
     const double vx = vx0 + fi[0] * I * inv, vy = vy0 + fi[1] * I * inv, w = w0 + ti[2] * m * inv;
     theta_atom[i] += turn * w;
     // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
@@ -384,7 +414,9 @@ void FixServoBC::post_force(int)
   // the last step again: the controller has already taken it
   const bool again = update->ntimestep == last_step;
   double interior_local[2], interior[2];
-  interior_pass(again, interior_local);
+  sbc_fire_mix mix;
+  if (settings.damping == SBC_DAMPING_FIRE && !again) mix = fire_pass();
+  interior_pass(again, settings.damping == SBC_DAMPING_FIRE && !again ? &mix : nullptr, interior_local);
   MPI_Allreduce(&interior_local[0], &interior[0], 1, MPI_DOUBLE, MPI_SUM, world);
   MPI_Allreduce(&interior_local[1], &interior[1], 1, MPI_DOUBLE, MPI_MAX, world);
   if (again) return;
@@ -480,6 +512,8 @@ void FixServoBC::write_restart(FILE *fp)
   if (ctl) sbc_controller_save(ctl, &list[at]);
   list.push_back(finished);
   list.push_back((double) last_step);
+  list.push_back(fire.alpha);
+  list.push_back((double) fire.positive);
   int bytes = (int) (list.size() * sizeof(double));    // LAMMPS reads the block size in bytes
   fwrite(&bytes, sizeof(int), 1, fp);
   fwrite(list.data(), sizeof(double), list.size(), fp);
@@ -502,7 +536,9 @@ void FixServoBC::restart(char *raw)
   saved_state.assign(list + k, list + k + nc);
   k += nc;
   finished = (int) list[k++];
-  last_step = (bigint) list[k];
+  last_step = (bigint) list[k++];
+  fire.alpha = list[k++];
+  fire.positive = (long) list[k];
   restored = 1;
   make_buffers();
 }

@@ -31,6 +31,7 @@ FixStyle(servo_bc,FixServoBC);
 extern "C" {
 #include "sbc/confine.h"
 #include "sbc/controller.h"
+#include "sbc/fire_damping.h"
 #include "sbc/frame.h"
 #include "sbc/settings.h"
 }
@@ -80,8 +81,10 @@ class FixServoBC : public Fix {
   int frame_still;                   // steps since the commands last changed (initial_integrate)
   int any_free;                      // some frame rotation is free ((T)): integrated every step
   int since_check;                   // steps since the last confinement check (confine.h)
+  sbc_fire_state fire;               // damping fire: FIRE's state (fire_damping.h)
 
-  void interior_pass(bool again, double out[2]);
+  sbc_fire_mix fire_pass();
+  void interior_pass(bool again, const sbc_fire_mix *mix, double out[2]);
   void contact_pass(double out[4]);
   void frame_pass();
   void check_confined(int increment);

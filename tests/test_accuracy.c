@@ -26,12 +26,13 @@
 #include "sbc/settings.h"
 
 #include <stdio.h>
+#include <string.h>
 
 enum { INCREMENTS = 4 };
 
 /* Runs one lattice case; returns the largest relative error of the rows
  * against the closed form (P11, P22, P12 / P11, P21 / P11), -1 on failure. */
-static double frictional_lattice(int N, const char *bc, const char *preset)
+static double frictional_lattice(int N, const char *bc, const char *preset, const char *damping)
 {
     const double d = 2e-3, R = 1.02e-3, kn = 1e4;
     char script[2048], csv[512];
@@ -39,12 +40,12 @@ static double frictional_lattice(int N, const char *bc, const char *preset)
     sbc_error err;
     double worst = 0.0;
     int n, k;
-    snprintf(csv, sizeof csv, "%s/accuracy_%d_%s_%s.csv", test_tmpdir, N, bc, preset);
+    snprintf(csv, sizeof csv, "%s/accuracy_%d_%s_%s_%c.csv", test_tmpdir, N, bc, preset, strstr(damping, "fire") ? 'F' : 'L');
     snprintf(script, sizeof script,
              "dimension 2\nlattice square %d %d spacing %.17g radius %.17g\n"
              "contact frictional kn %.17g ks %.17g mu 0.4\ndensity 2e3\ntimestep 1e-5\n"
-             "servo_bc %s F 0.99 0 0 0.995 increments %d accuracy %s file %s\nrun\n",
-             N, N, d, R, kn, kn / 5, bc, INCREMENTS, preset, csv);
+             "servo_bc %s F 0.99 0 0 0.995 increments %d accuracy %s %s file %s\nrun\n",
+             N, N, d, R, kn, kn / 5, bc, INCREMENTS, preset, damping, csv);
     if (sbc_script_run_string(script, "accuracy", NULL, &err) != SBC_OK) {
         printf("  %s\n", err.message);
         return -1.0;
@@ -67,30 +68,33 @@ static double frictional_lattice(int N, const char *bc, const char *preset)
     return worst;
 }
 
+/* every preset, with the local damping of eq. 10 and with FIRE */
 static void presets_on_lattices(void)
 {
     static const char *presets[3] = {"fast", "balanced", "tight"};
+    static const char *dampings[2] = {"damping 0.7 0.7", "damping fire"};
     static const char *bcs[2] = {"D", "P"};
     static const int sizes[3] = {5, 7, 9};
-    int s, b, p;
-    for (s = 0; s < 3; ++s)
-        for (b = 0; b < 2; ++b) {
-            double prev = 1.0;
-            for (p = 0; p < 3; ++p) {
-                const double stated = sbc_settings_preset_accuracy(presets[p]);
-                const double e = frictional_lattice(sizes[s], bcs[b], presets[p]);
-                CHECK(e >= 0.0 && e <= stated);
-                /* never worse than the looser preset (up to round-off) */
-                CHECK(e >= 0.0 && e <= fmax(prev, 1e-10));
-                if (p == 2 && s == 2)
-                    printf("  accuracy: %dx%d frictional lattice, (%s), tight: %.2g of the closed form\n", sizes[s],
-                           sizes[s], bcs[b], e);
-                if (e < 0.0 || e > stated)
-                    printf("  %dx%d (%s) accuracy %s: error %.3g, stated %.3g\n", sizes[s], sizes[s], bcs[b],
-                           presets[p], e, stated);
-                prev = e;
+    int s, b, p, d;
+    for (d = 0; d < 2; ++d)
+        for (s = 0; s < 3; ++s)
+            for (b = 0; b < 2; ++b) {
+                double prev = 1.0;
+                for (p = 0; p < 3; ++p) {
+                    const double stated = sbc_settings_preset_accuracy(presets[p]);
+                    const double e = frictional_lattice(sizes[s], bcs[b], presets[p], dampings[d]);
+                    CHECK(e >= 0.0 && e <= stated);
+                    /* never worse than the looser preset (up to round-off) */
+                    CHECK(e >= 0.0 && e <= fmax(prev, 1e-10));
+                    if (p == 2 && s == 2)
+                        printf("  accuracy: %dx%d frictional lattice, (%s), tight, %s: %.2g of the closed form\n",
+                               sizes[s], sizes[s], bcs[b], dampings[d], e);
+                    if (e < 0.0 || e > stated)
+                        printf("  %dx%d (%s) accuracy %s %s: error %.3g, stated %.3g\n", sizes[s], sizes[s], bcs[b],
+                               presets[p], dampings[d], e, stated);
+                    prev = e;
+                }
             }
-        }
 }
 
 static void traction_lattice(void)

@@ -63,6 +63,8 @@ static int lazy_rows(double rows[][CSV_COLS], const char *csv, double *measured,
     def.law.ks = 2e3;
     def.law.mu = 0.4;
     def.dt = 1e-5;
+    if (h) /* the damping the words ask for, as a host applies it */
+        def.fire = sbc_host_damping(h, &def.alpha, &def.beta) == SBC_DAMPING_FIRE;
     e = sbc_engine_create(&def, &err);
     CHECK(e != NULL);
     if (h && e) {

@@ -4,6 +4,7 @@
 
 #include "sbc/controller.h"
 #include "sbc/engine.h"
+#include "sbc/fire_damping.h"
 #include "sbc/frame.h"
 #include "sbc/packing.h"
 #include "sbc/relax.h"
@@ -207,8 +208,87 @@ static void perturbed_packing(double tol, double dt, double offset, long *stop_o
     sbc_packing_free(&p);
 }
 
+/* FIRE's state machine (fire_damping.h, Bitzek et al. 2006 with a fixed
+ * step): the numbers of one step, by hand. */
+static void fire_steps(void)
+{
+    sbc_fire_state f;
+    const double uphill[SBC_FIRE_SUMS] = {-1.0, 4.0, 1.0, 9.0, 1.0};
+    const double downhill[SBC_FIRE_SUMS] = {1.0, 4.0, 1.0, 9.0, 4.0};
+    const double rest[SBC_FIRE_SUMS] = {0.0, 0.0, 1.0, 0.0, 0.0};
+    sbc_fire_mix m;
+    int k;
+    sbc_fire_start(&f);
+    m = sbc_fire_step(&f, downhill);
+    /* v <- 0.9 v + 0.1 |v|/|F| F: |v|/|F| = 2; w: 0.1 * 3 / 2 */
+    CHECK_REL(m.keep, 0.9, 1e-15);
+    CHECK_REL(m.push, 0.2, 1e-15);
+    CHECK_REL(m.spin, 0.15, 1e-15);
+    for (k = 0; k < 6; ++k)
+        m = sbc_fire_step(&f, downhill);
+    /* after N_min = 5 downhill steps in a row, a shrinks by 0.99 per step: 7 steps, 2 shrinks */
+    CHECK_REL(f.alpha, 0.1 * 0.99 * 0.99, 1e-15);
+    CHECK_REL(m.keep, 1.0 - 0.1 * 0.99, 1e-15);
+    m = sbc_fire_step(&f, uphill); /* P <= 0: stop, restart a */
+    CHECK(m.keep == 0.0 && m.push == 0.0 && m.spin == 0.0 && m.stop == 1.0 && f.alpha == 0.1 && f.positive == 0);
+    m = sbc_fire_step(&f, rest); /* at rest (P = 0): stopped, the leapfrog start */
+    CHECK(m.keep == 0.0 && m.push == 0.0 && m.stop == 1.0);
+    m = sbc_fire_step(&f, downhill);
+    CHECK(m.stop == 0.0);
+}
+
+/* FIRE on two masses on springs k = 1 and 100 N/m (m = 1 kg) at FRACTION
+ * of the stiff one's critical step 2/omega, semi-implicit Euler as every
+ * host integrates: the soft mode, 10 times slower, is brought to rest too.
+ * Local damping of eq. 10 (0.7) on the same system, for the record. Returns
+ * the steps to |F| < 1e-10 N from x = (1, 1) m. */
+static long fire_springs(int fire, double fraction)
+{
+    const double k[2] = {1.0, 100.0}, dt = fraction * 2.0 / sqrt(100.0);
+    double x[2] = {1.0, 1.0}, v[2] = {0.0, 0.0};
+    sbc_fire_state st;
+    long n;
+    sbc_fire_start(&st);
+    for (n = 0; n < 100000; ++n) {
+        double f[2] = {-k[0] * x[0], -k[1] * x[1]}, sums[SBC_FIRE_SUMS] = {0.0, 0.0, 0.0, 0.0, 0.0};
+        int i;
+        if (hypot(f[0], f[1]) < 1e-10)
+            return n;
+        for (i = 0; i < 2; ++i) {
+            sums[SBC_FIRE_POWER] += f[i] * v[i];
+            sums[SBC_FIRE_VV] += v[i] * v[i];
+            sums[SBC_FIRE_FF] += f[i] * f[i];
+        }
+        if (fire) {
+            const sbc_fire_mix m = sbc_fire_step(&st, sums);
+            for (i = 0; i < 2; ++i)
+                v[i] = m.keep * v[i] + (m.push - m.stop * 0.5 * dt) * f[i]; /* m = 1 kg */
+        } else {
+            for (i = 0; i < 2; ++i)
+                f[i] -= 0.7 * fabs(f[i]) * ((v[i] > 0.0) - (v[i] < 0.0));
+        }
+        for (i = 0; i < 2; ++i) {
+            v[i] += dt * f[i];
+            x[i] += dt * v[i];
+        }
+    }
+    return n;
+}
+
 void test_relax(void)
 {
+    long fire_n, local_n;
+    fire_steps();
+    fire_n = fire_springs(1, 0.1);
+    local_n = fire_springs(0, 0.1);
+    printf("  relax: two springs (k 1 and 100) to |F| < 1e-10 N: FIRE %ld steps, local damping 0.7 %ld; FIRE at 0.9 "
+           "of the critical step %ld\n",
+           fire_n, local_n, fire_springs(1, 0.9));
+    CHECK(fire_n < 1000);
+    CHECK(fire_n < local_n);
+    /* a stop that zeroed v^(n-1/2) would make gradient steps of dt^2 k = 3.24 > 2 on the stiff spring,
+       which never converge */
+    CHECK(fire_springs(1, 0.9) < 1000);
     long stop, literal;
     double fmax, measured;
     criterion_alone();

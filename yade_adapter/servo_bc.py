@@ -36,6 +36,7 @@ COLUMNS = ('increment', 'F11', 'F12', 'F21', 'F22', 'P11', 'P12', 'P21', 'P22', 
 ROW = len(COLUMNS)                      # SBC_HOST_ROW
 EP_UNMEASURED = -1.0                    # SBC_RELAX_EP_UNMEASURED
 NEED_CONTACTS, NEED_FRAME = 1, 2        # SBC_NEED_*
+DAMPING_NONE, DAMPING_LOCAL, DAMPING_FIRE = 0, 1, 2  # sbc_damping (settings.h)
 # the measures of one step (SBC_HOST_EK ... SBC_HOST_PARTICLE_COUNT, host.h)
 EK, NET_MAX, EP, CONTACT_SUM, CONTACT_COUNT, OVERLAP_SUM, ROTATION_SUM, PARTICLE_COUNT, MEASURES = range(9)
 RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED = range(5)   # sbc_event
@@ -73,6 +74,7 @@ def _library():
         'sbc_host_command_free': (ctypes.POINTER(ctypes.c_ubyte), [P]),
         'sbc_host_result': (None, [P, pd]),
         'sbc_host_damping': (I, [P, pd, pd]),
+        'sbc_host_fire_mix': (None, [P, pd, pd]),
         'sbc_host_confined': (I, [P, pd, I, ctypes.POINTER(L), pd, pd]),
     }
     for name, (res, args) in sig.items():
@@ -212,13 +214,17 @@ class ServoBC(object):
             text = msg.value.decode()
             raise ServoBCError(text if text.startswith('servo_bc') else 'servo_bc: ' + text)
         alpha, beta = ctypes.c_double(), ctypes.c_double()
-        if lib.sbc_host_damping(self._h, ctypes.byref(alpha), ctypes.byref(beta)):
+        mode = lib.sbc_host_damping(self._h, ctypes.byref(alpha), ctypes.byref(beta))
+        self._fire = mode == DAMPING_FIRE
+        self._fire_beta = beta.value     # FIRE: eq. 10 on the free frame rotations of (T)
+        self.damping = 0.0               # NewtonIntegrator's: eq. 10 with alpha = beta
+        if mode == DAMPING_LOCAL:
             if alpha.value != beta.value:
                 raise ServoBCError('servo_bc: keyword damping: alpha %g and beta %g differ; YADE\'s NewtonIntegrator '
                                    'damps forces and moments with one factor' % (alpha.value, beta.value))
             self.damping = alpha.value
-        else:
-            self.damping = 0.0
+        self._fire_sums = (ctypes.c_double * 5)()
+        self._fire_out = (ctypes.c_double * 4)()
         self.Q = lib.sbc_host_frame_size(self._h)
         particles = lib.sbc_host_frame_particles(self._h)
         self.frame = [self.bodies[particles[q]] for q in range(self.Q)]
@@ -352,9 +358,41 @@ class ServoBC(object):
         except ServoBCError as e:
             self._stop(e)
 
+    def _fire_mix(self):
+        """damping fire (fire_damping.h): FIRE's mix on the interior's velocities, which are
+        YADE's v^(n-1/2) here (NewtonIntegrator then adds dt F/m, as the embedded engine does);
+        eq. 10 on the torque of a freely rotating frame body ((T)), as in the other hosts."""
+        sums, out, forces = self._fire_sums, self._fire_out, O.forces
+        p = vv = ff = ww = mm = 0.0
+        states = [O.bodies[i].state for i in self.interior]
+        for i, st in zip(self.interior, states):
+            f, t, v, w = forces.f(i), forces.t(i)[2], st.vel, st.angVel[2]
+            p += f[0] * v[0] + f[1] * v[1] + t * w
+            vv += v[0] * v[0] + v[1] * v[1]
+            ff += f[0] * f[0] + f[1] * f[1]
+            ww += w * w
+            mm += t * t
+        sums[0], sums[1], sums[2], sums[3], sums[4] = p, vv, ff, ww, mm
+        _core().sbc_host_fire_mix(self._h, sums, out)
+        keep, push, spin, stop = out[0], out[1], out[2], out[3]
+        half = 0.5 * self.dt * stop
+        for i, st in zip(self.interior, states):
+            f, v = forces.f(i), st.vel
+            p = push - half / st.mass
+            st.vel = (keep * v[0] + p * f[0], keep * v[1] + p * f[1], 0.0)
+            st.angVel = (0.0, 0.0, keep * st.angVel[2] + (spin - half / st.inertia[2]) * forces.t(i)[2])
+        if self._free_any and self._fire_beta > 0.0:
+            for q, s in enumerate(self._states):
+                if self._free[q]:
+                    t, w = forces.t(self.frame[q])[2], s.angVel[2]
+                    if w != 0.0:
+                        forces.addT(self.frame[q], (0.0, 0.0, -math.copysign(self._fire_beta * abs(t), w)))
+
     def _step(self):
         lib = _core()
         m = self._m
+        if self._fire:
+            self._fire_mix()
         m[EK] = self._kinetic_energy()
         m[NET_MAX] = self._net_force_max(self._fc_mean)
         m[EP] = EP_UNMEASURED

@@ -29,6 +29,7 @@ typedef struct sbc_engine_def {
                                   and new contacts follow (eq. 6). Copied at creation. */
     double dt;           /* time step, s */
     double alpha, beta;  /* local damping of eq. 10 (0 = none) */
+    int fire;            /* 1: FIRE's velocity mix (fire_damping.h) instead of eq. 10 */
     double skin;         /* neighbour-list skin, m; <= 0: a quarter of the smallest radius */
 } sbc_engine_def;
 

@@ -27,9 +27,15 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
                           const int *list, double dt, double kn, char *msg, size_t cap);
 void sbc_host_free(sbc_host *h);
 
-/* The damping of eq. 10, which a host applies itself: returns 1 and sets
- * alpha, beta when the words ask for damping, 0 otherwise. */
+/* The damping the words ask for (sbc_damping of settings.h: 0 none, 1 eq.
+ * 10, 2 FIRE), which a host applies itself; alpha, beta: the factors of eq.
+ * 10 (0 for none; with FIRE they damp the free frame rotations of (T)). */
 int sbc_host_damping(const sbc_host *h, double *alpha, double *beta);
+
+/* damping fire (fire_damping.h): this step's mix from the interior's sums
+ * [SBC_FIRE_SUMS]; mix [4] = keep, push, spin, stop (sbc_fire_mix). Call it
+ * once per step. */
+void sbc_host_fire_mix(sbc_host *h, const double *sums, double *mix);
 
 /* Q and the frame's particles [Q], as indices into the creation arrays, in
  * frame order (the order of every per-frame array below). */

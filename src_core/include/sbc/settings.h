@@ -23,6 +23,10 @@ typedef enum sbc_bc { SBC_BC_D = 0, SBC_BC_P, SBC_BC_T, SBC_BC_MIXED } sbc_bc;
  * secant (Barzilai-Borwein) factor learned from the last two iterations. */
 typedef enum sbc_update { SBC_UPDATE_FIXED = 0, SBC_UPDATE_SECANT } sbc_update;
 
+/* What dissipates the interior's kinetic energy during a relaxation: nothing,
+ * the local non-viscous damping of eq. 10, or FIRE (fire_damping.h). */
+typedef enum sbc_damping { SBC_DAMPING_NONE = 0, SBC_DAMPING_LOCAL, SBC_DAMPING_FIRE } sbc_damping;
+
 typedef enum sbc_mode { SBC_MODE_D = 0, SBC_MODE_P, SBC_MODE_T } sbc_mode;
 
 enum { SBC_EDGE_BOTTOM = 0, SBC_EDGE_RIGHT, SBC_EDGE_TOP, SBC_EDGE_LEFT };
@@ -45,8 +49,9 @@ typedef struct sbc_settings {
                                 critical time step 2 sqrt(M_q / (2 kn)); 0: in one time step (the paper's
                                 literal algorithm); preset */
     long max_relax_steps;    /* a relaxation longer than this stops the run; 1e7 */
-    int damping;             /* 1: local non-viscous damping of eq. 10 on interior particles */
-    double alpha, beta;      /* translational, rotational damping of eq. 10; 0.7, 0.7 */
+    sbc_damping damping;     /* on interior particles; preset (fire; local for `paper`) */
+    double alpha, beta;      /* translational, rotational damping of eq. 10; 0.7, 0.7 (with FIRE, beta
+                                still damps the free frame rotations of (T)) */
     double gain_force;       /* dimensionless g_a M / dt^2 (Table 4); 1e2 */
     double gain_moment;      /* dimensionless g_m M R^2 / dt^2 (Table 4); 2e2 */
     double gain_deformation; /* dimensionless g_F R^2 (Table 4); 2e-5 */

@@ -1,5 +1,6 @@
 /* Embedded 2D disc engine (paper Sect. 2.2). */
 #include "sbc/engine.h"
+#include "sbc/fire_damping.h"
 
 #include "neighbor.h"
 
@@ -25,6 +26,8 @@ struct sbc_engine {
     sbc_cohesive bond_law;   /* eqs. 7-8 */
     int bond_count, bonds_initial;
     double dt, alpha, beta;
+    int fire;                /* FIRE (fire_damping.h) instead of eq. 10 */
+    sbc_fire_state fire_state;
     sbc_pairs pairs;
     int stale; /* the pair list must be rebuilt before the next force evaluation */
     const sbc_frame *frame;
@@ -140,6 +143,8 @@ sbc_engine *sbc_engine_create(const sbc_engine_def *d, sbc_error *err)
     e->dt = d->dt;
     e->alpha = d->alpha;
     e->beta = d->beta;
+    e->fire = d->fire;
+    sbc_fire_start(&e->fire_state);
     if (sbc_pairs_init(&e->pairs, d->n, skin, e->history, e->bonded, err) != SBC_OK ||
         sbc_pairs_build(&e->pairs, e->x, e->r, e->rmax, err) != SBC_OK) {
         sbc_engine_free(e);
@@ -267,15 +272,38 @@ static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
     e->bond_count -= broken;
 }
 
+/* FIRE's mix of this step (fire_damping.h) from the interior's contact
+ * forces and the velocities the step starts from. */
+static sbc_fire_mix fire_mix(sbc_engine *e)
+{
+    double sums[SBC_FIRE_SUMS] = {0.0, 0.0, 0.0, 0.0, 0.0};
+    int k;
+    for (k = 0; k < e->n; ++k) {
+        const double fx = e->f[2 * k], fy = e->f[2 * k + 1], m = e->tq[k];
+        const double vx = e->v[2 * k], vy = e->v[2 * k + 1], w = e->omega[k];
+        if (e->kinematic[k])
+            continue;
+        sums[SBC_FIRE_POWER] += fx * vx + fy * vy + m * w;
+        sums[SBC_FIRE_VV] += vx * vx + vy * vy;
+        sums[SBC_FIRE_FF] += fx * fx + fy * fy;
+        sums[SBC_FIRE_WW] += w * w;
+        sums[SBC_FIRE_MM] += m * m;
+    }
+    return sbc_fire_step(&e->fire_state, sums);
+}
+
 /* Explicit first-order update of eq. 9 with the local damping of eq. 10:
  *   v += dt (f - alpha |f| sign(v)) / M,  x += dt v
  *   w += dt (m - beta |m| sign(w)) / I,   theta += dt w
- * DAMPED is a compile-time constant in each instance. Also records Ek of the
+ * or, with FIRE, v <- keep v + push f and w <- keep w + spin m first
+ * (fire_damping.h) and no eq. 10. DAMPED (0 none, 1 eq. 10, 2 FIRE) is a
+ * compile-time constant in each instance. Also records Ek of the
  * interior (eq. 12), sum |theta| (eq. 41) and whether a particle has moved
  * more than half the skin since the last neighbour build. */
 static inline void integrate_interior(sbc_engine *e, const int damped)
 {
     const double dt = e->dt, a = e->alpha, b = e->beta;
+    const sbc_fire_mix mix = damped == 2 ? fire_mix(e) : (sbc_fire_mix){1.0, 0.0, 0.0, 0.0};
     const double lim = 0.25 * e->pairs.skin * e->pairs.skin;
     double *restrict x = e->x, *restrict v = e->v, *restrict th = e->theta, *restrict om = e->omega;
     const double *restrict f = e->f, *restrict tq = e->tq, *restrict xb = e->pairs.x_build;
@@ -292,7 +320,12 @@ static inline void integrate_interior(sbc_engine *e, const int damped)
         vy = v[2 * k + 1];
         w = om[k];
         net = fmax(net, fx * fx + fy * fy); /* relax.h: the largest net force, squared */
-        if (damped) {
+        if (damped == 2) {
+            const double push = mix.push - mix.stop * 0.5 * dt * inv_m[k], spin = mix.spin - mix.stop * 0.5 * dt * inv_I[k];
+            vx = mix.keep * vx + push * fx;
+            vy = mix.keep * vy + push * fy;
+            w = mix.keep * w + spin * m;
+        } else if (damped) {
             fx -= a * fabs(fx) * ((vx > 0.0) - (vx < 0.0));
             fy -= a * fabs(fy) * ((vy > 0.0) - (vy < 0.0));
             m -= b * fabs(m) * ((w > 0.0) - (w < 0.0));
@@ -338,7 +371,9 @@ sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err)
         pair_loop(e, 1, 0);
     else
         pair_loop(e, 0, 0);
-    if (e->alpha > 0.0 || e->beta > 0.0)
+    if (e->fire)
+        integrate_interior(e, 2);
+    else if (e->alpha > 0.0 || e->beta > 0.0)
         integrate_interior(e, 1);
     else
         integrate_interior(e, 0);

@@ -306,6 +306,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     def.dt = s->dt;
     def.alpha = s->settings.damping ? s->settings.alpha : 0.0;
     def.beta = s->settings.damping ? s->settings.beta : 0.0;
+    def.fire = s->settings.damping == SBC_DAMPING_FIRE;
     if (!(r.engine = sbc_engine_create(&def, err))) {
         run_free(&r);
         return err->status;

@@ -1,5 +1,6 @@
 /* The core behind one handle, for hosts reaching C through an FFI (host.h). */
 #include "sbc/host.h"
+#include "sbc/fire_damping.h"
 
 #include "sbc/confine.h"
 #include "sbc/results.h"
@@ -16,6 +17,7 @@ struct sbc_host {
     FILE *csv;
     sbc_error err;
     int pending; /* a converged increment's row, written once sbc_host_confined passes it */
+    sbc_fire_state fire; /* damping fire */
 };
 
 /* the pending row to the CSV; 0, or 1 with the message in h->err */
@@ -39,6 +41,8 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
                           const int *list, double dt, double kn, char *msg, size_t cap)
 {
     sbc_host *h = calloc(1, sizeof *h);
+    if (h)
+        sbc_fire_start(&h->fire);
     sbc_error err;
     char *line, **w;
     int nw, q;
@@ -121,7 +125,16 @@ int sbc_host_damping(const sbc_host *h, double *alpha, double *beta)
 {
     *alpha = h->settings.damping ? h->settings.alpha : 0.0;
     *beta = h->settings.damping ? h->settings.beta : 0.0;
-    return h->settings.damping;
+    return (int)h->settings.damping;
+}
+
+void sbc_host_fire_mix(sbc_host *h, const double *sums, double *mix)
+{
+    const sbc_fire_mix m = sbc_fire_step(&h->fire, sums);
+    mix[0] = m.keep;
+    mix[1] = m.push;
+    mix[2] = m.spin;
+    mix[3] = m.stop;
 }
 
 int sbc_host_frame_size(const sbc_host *h) { return h->frame.n; }

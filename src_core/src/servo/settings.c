@@ -17,7 +17,7 @@ sbc_settings sbc_settings_default(void)
     s.F[0] = s.F[3] = 1.0;
     s.increments = 1;
     s.max_relax_steps = 10000000L;
-    s.damping = 1;
+    s.damping = SBC_DAMPING_LOCAL;
     s.alpha = s.beta = 0.7;
     s.gain_force = 1.0e2;
     s.gain_moment = 2.0e2;
@@ -35,7 +35,9 @@ sbc_settings sbc_settings_default(void)
  * Ek/Ep criterion of eq. 11, fixed gains, the frame moved in one step. The
  * others: force balance (relax.h) to tol_balance, frame residuals relative
  * to the frame's own forces below tol_relative, the secant update, and the
- * frame moved at `speed` radii per critical step; each guarantees the
+ * frame moved at `speed` radii per critical step, FIRE on the interior
+ * instead of eq. 10 (fire_damping.h; fewer DEM steps on every case of
+ * docs/speed-accuracy.md); each guarantees the
  * relative stress error `accuracy` at a converged increment, measured on
  * the closed-form lattices and the sweep cases (docs/servo_bc.md). */
 typedef struct preset {
@@ -46,13 +48,14 @@ typedef struct preset {
     int window;
     double tol_relative, tol_deformation, speed;
     sbc_update update;
+    sbc_damping damping;
 } preset;
 
 static const preset presets[] = {
-    {"paper", 0.0, SBC_CRITERION_ENERGY, 1.0e-3, 20, 0.0, 1.0e-2, 0.0, SBC_UPDATE_FIXED},
-    {"fast", 1.0e-2, SBC_CRITERION_FORCE, 1.0e-3, 20, 1.0e-2, 1.0e-2, 0.1, SBC_UPDATE_SECANT},
-    {"balanced", 1.0e-4, SBC_CRITERION_FORCE, 1.0e-5, 20, 1.0e-4, 1.0e-2, 0.01, SBC_UPDATE_SECANT},
-    {"tight", 1.0e-6, SBC_CRITERION_FORCE, 1.0e-8, 20, 1.0e-7, 1.0e-2, 0.001, SBC_UPDATE_SECANT},
+    {"paper", 0.0, SBC_CRITERION_ENERGY, 1.0e-3, 20, 0.0, 1.0e-2, 0.0, SBC_UPDATE_FIXED, SBC_DAMPING_LOCAL},
+    {"fast", 1.0e-2, SBC_CRITERION_FORCE, 1.0e-3, 20, 1.0e-2, 1.0e-2, 0.1, SBC_UPDATE_SECANT, SBC_DAMPING_FIRE},
+    {"balanced", 1.0e-4, SBC_CRITERION_FORCE, 1.0e-5, 20, 1.0e-4, 1.0e-2, 0.01, SBC_UPDATE_SECANT, SBC_DAMPING_FIRE},
+    {"tight", 1.0e-6, SBC_CRITERION_FORCE, 1.0e-8, 20, 1.0e-7, 1.0e-2, 0.001, SBC_UPDATE_SECANT, SBC_DAMPING_FIRE},
 };
 
 static const preset *find_preset(const char *name)
@@ -93,6 +96,8 @@ int sbc_settings_preset(sbc_settings *s, const char *name)
     s->tol_relative = p->tol_relative;
     s->update = p->update;
     s->speed = p->speed;
+    s->damping = p->damping;
+    s->alpha = s->beta = 0.7; /* eq. 10: the interior under `paper`, free frame rotations under every preset */
     snprintf(s->accuracy, sizeof s->accuracy, "%s", p->name);
     return 1;
 }
@@ -300,11 +305,14 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
         } else if (strcmp(key, "damping") == 0) {
             if (c.i < c.n && strcmp(c.w[c.i], "none") == 0) {
                 ++c.i;
-                s->damping = 0;
+                s->damping = SBC_DAMPING_NONE;
                 s->alpha = s->beta = 0.0;
+            } else if (c.i < c.n && strcmp(c.w[c.i], "fire") == 0) {
+                ++c.i; /* the interior; free frame rotations (T) keep eq. 10 at alpha, beta */
+                s->damping = SBC_DAMPING_FIRE;
             } else {
-                s->damping = 1;
-                st = read_real(&c, "alpha", 0.0, 0, 1.0, "a real in [0, 1), or 'none'", &s->alpha);
+                s->damping = SBC_DAMPING_LOCAL;
+                st = read_real(&c, "alpha", 0.0, 0, 1.0, "a real in [0, 1), 'none' or 'fire'", &s->alpha);
                 if (st == SBC_OK)
                     st = read_real(&c, "beta", 0.0, 0, 1.0, "a real in [0, 1)", &s->beta);
                 if (st == SBC_OK && (s->alpha >= 1.0 || s->beta >= 1.0))
