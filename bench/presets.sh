@@ -82,3 +82,12 @@ for c in $cases; do
     echo "| $c | $p | $step | ${steps:--} | ${its:--} | $(cat "$out/$c.$p.wall" 2>/dev/null) | ${u:--} | ${r:--} | ${e:--} | ${m:--}${msg:+ (stopped: $msg)} |"
   done
 done | tee "$out/presets.md"
+# one figure per case: sigma12 against the increment for every run that left rows
+for c in $cases; do
+  args=()
+  for p in paper $runs; do
+    [ -s "$out/$c.$p.csv" ] && args+=("$out/$c.$p.csv" "$p")
+  done
+  [ ${#args[@]} -gt 0 ] && "$B/servo-bc-plot" "$out/$c.svg" "$c: the presets (FIRE) and eq. 10 (-local)" increment \
+    "sigma12 (N/m)" increment 1 sigma12 1 "${args[@]}" > /dev/null
+done

@@ -37,6 +37,8 @@ using namespace FixConst;
 namespace {
 enum { VEC_SIZE = 21 };
 enum { CALLBACK_GROW = 0, CALLBACK_RESTART = 1 };    // Atom::GROW, Atom::RESTART in LAMMPS
+// marks fix servo_bc's restart block (and its layout: bump on any change)
+const double RESTART_MAGIC = 8.020001e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
@@ -174,6 +176,19 @@ void FixServoBC::init()
          " restored the frame (re-use the fix ID of the restart file, or delete the groups)");
   std::string missing = law.attach(lmp);
   if (!missing.empty()) fail(missing);
+  if (restored) {    // the saved atom IDs must be the frame group's, each once
+    int local[2] = {0, 0}, all[2];
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->mask[i] & frame_bit) {
+        local[0]++;
+        if (!slot.count(atom->tag[i])) local[1]++;
+      }
+    MPI_Allreduce(local, all, 2, MPI_INT, MPI_SUM, world);
+    if (all[1] || all[0] != frame.n || (int) slot.size() != frame.n)
+      fail(std::string("restart: the saved frame of ") + std::to_string(frame.n) + " atoms (" +
+           std::to_string(slot.size()) + " distinct IDs) is not group " + id + "_frame (" + std::to_string(all[0]) +
+           " atoms, " + std::to_string(all[1]) + " not in the saved frame)");
+  }
 
   // frame atoms are moved by this fix only
   for (int k = 0; k < modify->nfix; k++) {
@@ -499,6 +514,8 @@ void FixServoBC::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
   std::vector<double> list;
+  list.push_back(RESTART_MAGIC);
+  list.push_back(0.0);    // the block's length, set below
   list.push_back((double) sbc_frame_state_size(&frame));
   size_t at = list.size();
   list.resize(at + sbc_frame_state_size(&frame));
@@ -514,6 +531,7 @@ void FixServoBC::write_restart(FILE *fp)
   list.push_back((double) last_step);
   list.push_back(fire.alpha);
   list.push_back((double) fire.positive);
+  list[1] = (double) list.size();
   int bytes = (int) (list.size() * sizeof(double));    // LAMMPS reads the block size in bytes
   fwrite(&bytes, sizeof(int), 1, fp);
   fwrite(list.data(), sizeof(double), list.size(), fp);
@@ -521,24 +539,35 @@ void FixServoBC::write_restart(FILE *fp)
 
 void FixServoBC::restart(char *raw)
 {
-  double *list = (double *) raw;
-  size_t k = 0, nf = (size_t) list[k++];
+  // every value is checked before it is used (sbc/saved.h): a restart file
+  // may be truncated, corrupted or from another version
+  const double *list = (const double *) raw;
   sbc_error err;
+  sbc_saved rd;
+  if (list[0] != RESTART_MAGIC)
+    fail("restart: the saved fix servo_bc data is not this version's (write the restart file again)");
+  sbc_saved_start(&rd, list + 1, 1, "fix servo_bc restart data", &err);
+  const size_t total = (size_t) sbc_saved_int(&rd, "length", 8, 1000000000L);
+  if (rd.st != SBC_OK) fail(err.message);
+  sbc_saved_start(&rd, list + 2, total - 2, "fix servo_bc restart data", &err);
+  const size_t nf = (size_t) sbc_saved_int(&rd, "frame length", 1, (long) (total - 2));
+  if (rd.st != SBC_OK) fail(err.message);
   sbc_frame_free(&frame);
-  if (sbc_frame_load(&frame, &list[k], nf, &err) != SBC_OK)
-    fail(err.message);
-  k += nf;
+  if (sbc_frame_load(&frame, rd.in + rd.at, nf, &err) != SBC_OK) fail(err.message);
+  rd.at += nf;
   frame_tag.resize(frame.n);
   frame_mass.resize(frame.n);
-  for (int q = 0; q < frame.n; q++) frame_tag[q] = (tagint) list[k++];
-  for (int q = 0; q < frame.n; q++) frame_mass[q] = list[k++];
-  size_t nc = (size_t) list[k++];
-  saved_state.assign(list + k, list + k + nc);
-  k += nc;
-  finished = (int) list[k++];
-  last_step = (bigint) list[k++];
-  fire.alpha = list[k++];
-  fire.positive = (long) list[k];
+  for (int q = 0; q < frame.n; q++) frame_tag[q] = (tagint) sbc_saved_int(&rd, "frame atom ID", 1, MAXTAGINT);
+  for (int q = 0; q < frame.n; q++) frame_mass[q] = sbc_saved_positive(&rd, "frame mass");
+  const size_t nc = (size_t) sbc_saved_int(&rd, "controller length", 0, (long) (total - 2 - rd.at));
+  if (rd.st != SBC_OK) fail(err.message);
+  saved_state.assign(rd.in + rd.at, rd.in + rd.at + nc);
+  rd.at += nc;
+  finished = (int) sbc_saved_int(&rd, "finished", 0, 1);
+  last_step = (bigint) sbc_saved_int(&rd, "last step", -1, 1125899906842624L);
+  fire.alpha = sbc_saved_positive(&rd, "FIRE alpha");
+  fire.positive = sbc_saved_int(&rd, "FIRE steps", 0, 1125899906842624L);
+  if (rd.st != SBC_OK) fail(err.message);
   restored = 1;
   make_buffers();
 }

@@ -33,6 +33,7 @@ extern "C" {
 #include "sbc/controller.h"
 #include "sbc/fire_damping.h"
 #include "sbc/frame.h"
+#include "sbc/saved.h"
 #include "sbc/settings.h"
 }
 

@@ -6,9 +6,11 @@
 #include "sbc/homogenize.h"
 #include "sbc/relax.h"
 #include "motion.h"
+#include "sbc/saved.h"
 #include "servo.h"
 
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -299,7 +301,8 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         }
         if (st != SBC_OK) {
             free(c);
-            sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
+            if (st == SBC_ERR_NOMEM)
+                sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
             return NULL;
         }
         c->frame = &c->ref;
@@ -878,24 +881,27 @@ static double *put_result(const sbc_result *r, double *o)
     return o;
 }
 
-static const double *get_result(sbc_result *r, const double *in)
+/* counters saved as doubles: at most 2^50, far below where a long or a
+ * double stops counting steps one by one */
+#define SAVED_COUNT 1125899906842624L
+
+static void get_result(sbc_result *r, sbc_saved *rd, int total)
 {
     int k;
-    r->increment = (int)*in++;
-    for (k = 0; k < 4; ++k) r->F[k] = *in++;
-    for (k = 0; k < 4; ++k) r->P[k] = *in++;
-    for (k = 0; k < 4; ++k) r->sigma[k] = *in++;
-    r->overlap_mean = *in++;
-    r->rotation_mean = *in++;
-    r->iterations = (int)*in++;
-    r->relax_steps = (long)*in++;
-    r->r_force = *in++;
-    r->r_moment = *in++;
-    r->r_deformation = *in++;
-    r->hill_mandel = *in++;
-    r->unbalanced = *in++;
-    r->frame_residual = *in++;
-    return in;
+    r->increment = (int)sbc_saved_int(rd, "result increment", 0, total);
+    for (k = 0; k < 4; ++k) r->F[k] = sbc_saved_real(rd, "result F");
+    for (k = 0; k < 4; ++k) r->P[k] = sbc_saved_real(rd, "result P");
+    for (k = 0; k < 4; ++k) r->sigma[k] = sbc_saved_real(rd, "result sigma");
+    r->overlap_mean = sbc_saved_real(rd, "result overlap_mean");
+    r->rotation_mean = sbc_saved_real(rd, "result rotation_mean");
+    r->iterations = (int)sbc_saved_int(rd, "result iterations", 0, INT_MAX);
+    r->relax_steps = sbc_saved_int(rd, "result relax_steps", 0, SAVED_COUNT);
+    r->r_force = sbc_saved_real(rd, "result r_force");
+    r->r_moment = sbc_saved_real(rd, "result r_moment");
+    r->r_deformation = sbc_saved_real(rd, "result r_deformation");
+    r->hill_mandel = sbc_saved_real(rd, "result hill_mandel");
+    r->unbalanced = sbc_saved_real(rd, "result unbalanced");
+    r->frame_residual = sbc_saved_real(rd, "result frame_residual");
 }
 
 void sbc_controller_save(const sbc_controller *c, double *o)
@@ -952,17 +958,31 @@ void sbc_controller_save(const sbc_controller *c, double *o)
 sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err)
 {
     static const char *names[4] = {"F11", "F12", "F21", "F22"};
+    const char *what = "servo_bc restart state";
     int k, q = c->frame->n;
-    if (n != sbc_controller_state_size(c) || in[0] != STATE_VERSION)
-        return sbc_fail(err, SBC_ERR_INPUT, "restart: the saved servo_bc state does not fit this version or frame");
-    if ((int)in[1] != q)
-        return sbc_fail(err, SBC_ERR_INPUT, "restart: the saved frame has %d particles, this one %d", (int)in[1], q);
-    if ((int)in[2] != (int)c->s.bc)
+    long saved_q, saved_bc, saved_increments;
+    const double *ref;
+    sbc_saved rd;
+    if (n < STATE_HEAD || in[0] != STATE_VERSION)
+        return sbc_fail(err, SBC_ERR_INPUT, "restart: the saved servo_bc state (version %g, %zu values) is not this "
+                        "version's (%g)", n > 0 ? in[0] : 0.0, n, STATE_VERSION);
+    sbc_saved_start(&rd, in + 1, STATE_HEAD - 1, what, err);
+    saved_q = sbc_saved_int(&rd, "frame particles", 0, INT_MAX);
+    saved_bc = sbc_saved_int(&rd, "boundary condition", SBC_BC_D, SBC_BC_MIXED);
+    saved_increments = sbc_saved_int(&rd, "increments", 1, INT_MAX);
+    if (rd.st != SBC_OK)
+        return rd.st;
+    if (saved_q != q)
+        return sbc_fail(err, SBC_ERR_INPUT, "restart: the saved frame has %ld particles, this one %d", saved_q, q);
+    if (n != sbc_controller_state_size(c))
+        return sbc_fail(err, SBC_ERR_INPUT, "restart: the saved servo_bc state has %zu values, a frame of %d particles "
+                        "%zu", n, q, sbc_controller_state_size(c));
+    if (saved_bc != (long)c->s.bc)
         return sbc_fail(err, SBC_ERR_INPUT, "restart: boundary condition %s contradicts the saved %s",
-                        sbc_bc_name(c->s.bc), sbc_bc_name((sbc_bc)(int)in[2]));
-    if ((int)in[3] != c->s.increments)
-        return sbc_fail(err, SBC_ERR_INPUT, "restart: keyword 'increments': %d contradicts the saved %d",
-                        c->s.increments, (int)in[3]);
+                        sbc_bc_name(c->s.bc), sbc_bc_name((sbc_bc)saved_bc));
+    if (saved_increments != c->s.increments)
+        return sbc_fail(err, SBC_ERR_INPUT, "restart: keyword 'increments': %d contradicts the saved %ld",
+                        c->s.increments, saved_increments);
     for (k = 0; k < 4; ++k)
         if (in[4 + k] != c->s.F[k])
             return sbc_fail(err, SBC_ERR_INPUT, "restart: keyword 'F': %s = %.17g contradicts the saved %.17g", names[k],
@@ -972,51 +992,76 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     if (in[8] != c->dt)
         return sbc_fail(err, SBC_ERR_INPUT, "restart: time step %.17g s contradicts the saved %.17g s (set the time "
                         "step before the fix)", c->dt, in[8]);
-    in += STATE_HEAD;
-    c->increment = (int)*in++;
-    c->servo = (int)*in++;
-    c->iteration = (int)*in++;
-    c->r_first = *in++;
-    c->steps = (long)*in++;
-    c->norms.r_force = *in++;
-    c->norms.r_moment = *in++;
-    c->norms.r_deformation = *in++;
-    c->norms.max_step = *in++;
+    sbc_saved_start(&rd, in + STATE_HEAD, n - STATE_HEAD, what, err);
+    c->increment = (int)sbc_saved_int(&rd, "increment", 0, c->total + 1L);
+    c->servo = (int)sbc_saved_int(&rd, "servo", 0, 1);
+    c->iteration = (int)sbc_saved_int(&rd, "iteration", 0, INT_MAX);
+    c->r_first = sbc_saved_real(&rd, "r_first");
+    c->steps = sbc_saved_int(&rd, "steps", 0, SAVED_COUNT);
+    c->norms.r_force = sbc_saved_real(&rd, "r_force");
+    c->norms.r_moment = sbc_saved_real(&rd, "r_moment");
+    c->norms.r_deformation = sbc_saved_real(&rd, "r_deformation");
+    c->norms.max_step = sbc_saved_real(&rd, "max_step");
     c->relax.criterion = c->s.criterion;
-    c->relax.tol = relax_tol(&c->s);
     c->relax.window = c->s.window;
-    c->relax.steps = (long)*in++;
-    c->relax.count = (int)*in++;
-    c->relax.rising = (int)*in++;
-    c->relax.past_peak = (int)*in++;
-    c->relax.ek_prev = *in++;
-    c->relax.at_rest = (int)*in++;
-    c->lambda = *in++;
-    c->have_prev = (int)*in++;
-    c->win_min = *in++;
-    c->prev_min = *in++;
-    for (k = 0; k < 4; ++k) c->F_prev[k] = *in++;
-    for (k = 0; k < 4; ++k) c->F_now[k] = *in++;
-    c->relax.tol = *in++;
-    c->relax.known_step = (long)*in++;
-    c->relax.ep_known = *in++;
-    c->relax.ek_known = *in++;
-    c->relax.fc_known = *in++;
-    c->relax.unbalanced = *in++;
-    c->motion.steps = (long)*in++;
-    c->motion.done = (long)*in++;
-    in = get_result(&c->result, in);
-    for (k = 0; k < 2 * q; ++k) c->x_cmd[k] = *in++;
-    for (k = 0; k < q; ++k) c->theta_cmd[k] = *in++;
-    for (k = 0; k < q; ++k) c->free_rot[k] = (unsigned char)*in++;
-    for (k = 0; k < 2 * q; ++k) c->x_prev[k] = *in++;
-    new_reference(c, in);
-    in += 2 * q;
-    for (k = 0; k < 3 * q; ++k) c->d_prev[k] = *in++;
-    for (k = 0; k < 2 * q; ++k) c->motion.x_from[k] = *in++;
-    for (k = 0; k < 2 * q; ++k) c->motion.x_goal[k] = *in++;
-    for (k = 0; k < q; ++k) c->motion.th_from[k] = *in++;
-    for (k = 0; k < q; ++k) c->motion.th_goal[k] = *in++;
+    c->relax.steps = sbc_saved_int(&rd, "relaxation steps", 0, SAVED_COUNT);
+    c->relax.count = (int)sbc_saved_int(&rd, "relaxation count", 0, INT_MAX);
+    c->relax.rising = (int)sbc_saved_int(&rd, "relaxation rising", 0, 1);
+    c->relax.past_peak = (int)sbc_saved_int(&rd, "relaxation past_peak", 0, 1);
+    c->relax.ek_prev = sbc_saved_real(&rd, "relaxation ek_prev");
+    c->relax.at_rest = (int)sbc_saved_int(&rd, "relaxation at_rest", 0, 1);
+    c->lambda = sbc_saved_real(&rd, "lambda");
+    c->have_prev = (int)sbc_saved_int(&rd, "have_prev", 0, 1);
+    c->win_min = sbc_saved_real(&rd, "win_min");
+    c->prev_min = sbc_saved_real(&rd, "prev_min");
+    for (k = 0; k < 4; ++k) c->F_prev[k] = sbc_saved_real(&rd, "F_prev");
+    for (k = 0; k < 4; ++k) c->F_now[k] = sbc_saved_real(&rd, "F_now");
+    c->relax.tol = sbc_saved_positive(&rd, "relaxation tol");
+    c->relax.known_step = sbc_saved_int(&rd, "relaxation known_step", 0, SAVED_COUNT);
+    c->relax.ep_known = sbc_saved_real(&rd, "relaxation ep_known");
+    c->relax.ek_known = sbc_saved_real(&rd, "relaxation ek_known");
+    c->relax.fc_known = sbc_saved_real(&rd, "relaxation fc_known");
+    c->relax.unbalanced = sbc_saved_real(&rd, "relaxation unbalanced");
+    c->motion.steps = sbc_saved_int(&rd, "motion steps", 0, SAVED_COUNT);
+    c->motion.done = sbc_saved_int(&rd, "motion done", 0, SAVED_COUNT);
+    get_result(&c->result, &rd, c->total);
+    for (k = 0; k < 2 * q; ++k) c->x_cmd[k] = sbc_saved_real(&rd, "x_cmd");
+    for (k = 0; k < q; ++k) c->theta_cmd[k] = sbc_saved_real(&rd, "theta_cmd");
+    for (k = 0; k < q; ++k) c->free_rot[k] = (unsigned char)sbc_saved_int(&rd, "free_rot", 0, 1);
+    for (k = 0; k < 2 * q; ++k) c->x_prev[k] = sbc_saved_real(&rd, "x_prev");
+    ref = rd.in + rd.at; /* the reference, checked here, set below */
+    for (k = 0; k < 2 * q; ++k) (void)sbc_saved_real(&rd, "reference X");
+    for (k = 0; k < 3 * q; ++k) c->d_prev[k] = sbc_saved_real(&rd, "d_prev");
+    for (k = 0; k < 2 * q; ++k) c->motion.x_from[k] = sbc_saved_real(&rd, "motion x_from");
+    for (k = 0; k < 2 * q; ++k) c->motion.x_goal[k] = sbc_saved_real(&rd, "motion x_goal");
+    for (k = 0; k < q; ++k) c->motion.th_from[k] = sbc_saved_real(&rd, "motion th_from");
+    for (k = 0; k < q; ++k) c->motion.th_goal[k] = sbc_saved_real(&rd, "motion th_goal");
+    if (rd.st != SBC_OK)
+        return rd.st;
+    if (c->motion.done > c->motion.steps)
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: the frame's travel has done %ld of %ld steps", what, c->motion.done,
+                        c->motion.steps);
+    if (!(c->lambda > 0.0) || !(c->F_now[0] * c->F_now[3] - c->F_now[1] * c->F_now[2] > 0.0))
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: secant factor %g or det F %g is not > 0", what, c->lambda,
+                        c->F_now[0] * c->F_now[3] - c->F_now[1] * c->F_now[2]);
+    {
+        /* every saved position within ten frame sizes of the frame's place at creation */
+        const double *sets[5] = {c->x_cmd, c->x_prev, ref, c->motion.x_from, c->motion.x_goal};
+        double lo[2] = {DBL_MAX, DBL_MAX}, hi[2] = {-DBL_MAX, -DBL_MAX}, reach;
+        int d, m;
+        for (k = 0; k < q; ++k)
+            for (d = 0; d < 2; ++d) {
+                lo[d] = fmin(lo[d], c->frame->X[2 * k + d]);
+                hi[d] = fmax(hi[d], c->frame->X[2 * k + d]);
+            }
+        reach = 10.0 * fmax(hi[0] - lo[0], hi[1] - lo[1]);
+        for (m = 0; m < 5; ++m)
+            for (k = 0; k < 2 * q; ++k)
+                if (fabs(sets[m][k] - 0.5 * (lo[k % 2] + hi[k % 2])) > reach)
+                    return sbc_fail(err, SBC_ERR_INPUT, "%s: a saved frame position, %.17g m, lies more than ten "
+                                    "frame sizes (%g m) from the frame", what, sets[m][k], reach);
+    }
+    new_reference(c, ref);
     if (c->s.bc == SBC_BC_MIXED)
         mixed_stress_targets(c);
     return SBC_OK;

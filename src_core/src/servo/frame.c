@@ -2,7 +2,10 @@
  * partners, area vectors (eq. 2) and reference volume. */
 #include "sbc/frame.h"
 
+#include "sbc/saved.h"
+
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -378,26 +381,45 @@ void sbc_frame_save(const sbc_frame *f, double *out)
 
 sbc_status sbc_frame_load(sbc_frame *f, const double *in, size_t n, sbc_error *err)
 {
+    sbc_saved rd;
     int q, c, nq;
     sbc_status st;
-    if (n < 1 || !(in[0] >= 4.0) || in[0] > 1e9 || n != 1 + 8 * (size_t)in[0] + 5)
-        return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: %zu values do not describe a frame", n);
-    nq = (int)in[0];
+    sbc_saved_start(&rd, in, n, "frame restart data", err);
+    nq = (int)sbc_saved_int(&rd, "frame particles Q", 4, 100000000L);
+    if (rd.st != SBC_OK)
+        return rd.st;
+    if (n != 1 + 8 * (size_t)nq + 5)
+        return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: %zu values do not describe a frame of %d particles "
+                        "(expected %zu)", n, nq, 1 + 8 * (size_t)nq + 5);
     if ((st = frame_alloc(f, nq, err)) != SBC_OK)
         return st;
-    ++in;
     for (q = 0; q < nq; ++q) {
-        f->particle[q] = (int)*in++;
-        f->side[q] = (int)*in++;
-        f->partner[q] = (int)*in++;
-        f->X[2 * q] = *in++;
-        f->X[2 * q + 1] = *in++;
-        f->R[q] = *in++;
-        f->A[2 * q] = *in++;
-        f->A[2 * q + 1] = *in++;
+        f->particle[q] = (int)sbc_saved_int(&rd, "particle", 0, INT_MAX - 1);
+        f->side[q] = (int)sbc_saved_int(&rd, "side", SBC_SIDE_CORNER, SBC_SIDE_LEFT);
+        f->partner[q] = (int)sbc_saved_int(&rd, "partner", -1, nq - 1);
+        f->X[2 * q] = sbc_saved_real(&rd, "X1");
+        f->X[2 * q + 1] = sbc_saved_real(&rd, "X2");
+        f->R[q] = sbc_saved_positive(&rd, "R");
+        f->A[2 * q] = sbc_saved_real(&rd, "A1");
+        f->A[2 * q + 1] = sbc_saved_real(&rd, "A2");
     }
     for (c = 0; c < 4; ++c)
-        f->corner[c] = (int)*in++;
-    f->V = *in;
+        f->corner[c] = (int)sbc_saved_int(&rd, "corner", 0, nq - 1);
+    f->V = sbc_saved_positive(&rd, "V");
+    if (rd.st != SBC_OK)
+        return rd.st;
+    /* the invariants the servo indexes by: corners have no partner, a
+       partner's partner is the particle itself, the corner list names corners
+       (an edge particle may lack a partner: (D) needs none) */
+    for (q = 0; q < nq; ++q) {
+        const int p = f->partner[q];
+        if ((f->side[q] == SBC_SIDE_CORNER && p >= 0) || (p >= 0 && f->partner[p] != q))
+            return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: frame position %d (side %d) has partner %d, "
+                            "which is not its periodic partner", q, f->side[q], p);
+    }
+    for (c = 0; c < 4; ++c)
+        if (f->side[f->corner[c]] != SBC_SIDE_CORNER)
+            return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: corner %d is frame position %d, not a corner", c,
+                            f->corner[c]);
     return SBC_OK;
 }
