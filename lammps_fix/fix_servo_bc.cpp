@@ -176,6 +176,26 @@ void FixServoBC::init()
          " restored the frame (re-use the fix ID of the restart file, or delete the groups)");
   std::string missing = law.attach(lmp);
   if (!missing.empty()) fail(missing);
+  {    // the time step against the lightest atom's critical step (sbc/time_step.h)
+    struct {
+      double mass;
+      int rank;
+    } mine = {1e300, comm->me}, lightest;
+    tagint id_local = 0, id_lightest = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && atom->rmass[i] < mine.mass) {
+        mine.mass = atom->rmass[i];
+        id_local = atom->tag[i];
+      }
+    MPI_Allreduce(&mine, &lightest, 1, MPI_DOUBLE_INT, MPI_MINLOC, world);
+    id_lightest = id_local;
+    MPI_Bcast(&id_lightest, 1, MPI_LMP_TAGINT, lightest.rank, world);
+    sbc_error err;
+    if (lightest.mass < 1e300 &&
+        sbc_time_step_check(update->dt, law.kn, lightest.mass, (long) id_lightest, settings.max_relax_steps, &err) !=
+            SBC_OK)
+      fail(std::string(err.message) + " (particle = atom ID; discs need a disc's mass: 'set mass', not 'set density')");
+  }
   if (restored) {    // the saved atom IDs must be the frame group's, each once
     int local[2] = {0, 0}, all[2];
     for (int i = 0; i < atom->nlocal; i++)

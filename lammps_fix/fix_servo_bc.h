@@ -34,6 +34,7 @@ extern "C" {
 #include "sbc/fire_damping.h"
 #include "sbc/frame.h"
 #include "sbc/saved.h"
+#include "sbc/time_step.h"
 #include "sbc/settings.h"
 }
 

@@ -60,6 +60,11 @@ struct ContactLaw {
     const int nt = lmp->atom->ntypes;
     std::string why = stiffness(lmp, "kn", nt, kn);
     if (why.empty()) why = stiffness(lmp, "kt", nt, kt);
+    // eq. 6 has no dashpot: the damping of the relaxation is the fix's
+    double gamma = 0.0;
+    if (why.empty()) why = stiffness(lmp, "gamman_abs", nt, gamma);
+    if (why.empty() && gamma != 0.0)
+      why = "fix property/global gamman_abs is " + std::to_string(gamma) + "; eq. 6 has no normal dashpot (set it to 0)";
     return why.empty() ? why : need + "; " + why;
   }
   NeighList *list() const { return pair->list; }

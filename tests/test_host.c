@@ -195,8 +195,45 @@ static void refused(const char *words, int nlist, const int *list, const char *e
     sbc_packing_free(&p);
 }
 
+/* the particles of a 5 x 5 lattice with particle 7's field FIELD (0 x, 1
+ * radius, 2 mass) set to VALUE, at time step DT: refused with EXPECT */
+static void bad_particle(int field, double value, double dt, const char *expect)
+{
+    sbc_packing p;
+    sbc_error err;
+    char msg[512] = "";
+    double mass[25];
+    int k;
+    sbc_host *h;
+    CHECK(sbc_packing_lattice_square(&p, 5, 5, 2e-3, 1.02e-3, &err) == SBC_OK);
+    for (k = 0; k < p.n; ++k)
+        mass[k] = 2e3 * 3.14159265358979323846 * 1.02e-3 * 1.02e-3;
+    if (field == 0)
+        p.x[14] = value;
+    else if (field == 1)
+        p.r[7] = value;
+    else
+        mass[7] = value;
+    h = sbc_host_create("P F 1.01 0 0 1", p.n, p.x, p.r, mass, 0, NULL, dt, 1e4, msg, sizeof msg);
+    CHECK(h == NULL && strstr(msg, expect) != NULL);
+    if (h || !strstr(msg, expect))
+        printf("  particle field %d = %g, dt %g: got '%s'\n", field, value, dt, msg);
+    sbc_host_free(h);
+    sbc_packing_free(&p);
+}
+
 static void bad_input(void)
 {
+    /* particles and time step, checked before anything is built */
+    bad_particle(0, NAN, 1e-5, "particle 7: centre (nan, 0.002) m");
+    bad_particle(1, NAN, 1e-5, "particle 7:");
+    bad_particle(1, 0.0, 1e-5, "radius 0 m");
+    bad_particle(1, -1e-3, 1e-5, "radius -0.001 m");
+    bad_particle(2, 0.0, 1e-5, "mass 0 kg");
+    bad_particle(2, INFINITY, 1e-5, "mass inf kg");
+    /* critical step 2 sqrt(M / (2 kn)) = 1.14e-3 s; particle 7 ten times lighter: 3.6e-4 s */
+    bad_particle(2, 6.537e-4, 5e-4, "exceeds the critical step 0.00036158 s = 2 sqrt(M / (2 kn)) of particle 7");
+    bad_particle(2, 6.537e-3, 1e-300, "do not span one critical step");
     const int ring[3] = {0, 1, 2}, outside[1] = {25};
     refused("Q F 1 0 0 1", 0, NULL, "'Q'");
     refused("P increments zero", 0, NULL, "increments");

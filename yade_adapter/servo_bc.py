@@ -501,7 +501,11 @@ class ServoBC(object):
     # -- driving and results --------------------------------------------------
     def run(self, max_steps=None):
         """Runs until the loading path is finished; raises ServoBCError with the core's
-        message when it fails, and when max_steps pass first."""
+        message when it fails, and when max_steps pass first. O.dt becomes the dt given to
+        ServoBC (the controller's gains and the frame's travel are in its steps); a different
+        O.dt is reported, not kept."""
+        if O.dt != self.dt:
+            print('servo_bc: O.dt %g s replaced by the time step %g s given to ServoBC' % (O.dt, self.dt), flush=True)
         O.dt = self.dt
         if max_steps:
             O.run(int(max_steps), True)

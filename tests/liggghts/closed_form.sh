@@ -18,6 +18,10 @@ frictional_checks 's/^fix             kt all property\/global kt peratomtypepair
 refuses "a 3d box" 's/^dimension       2/dimension 3/; /enforce2d/d' "the box is 3d"
 refuses "a pair style without tangential history" 's/tangential history/tangential no_history/' \
   "keeps no tangential history"
+refuses "a normal dashpot (gamman_abs 0.5)" 's/gamman_abs peratomtypepair 2 0 0 0 0/gamman_abs peratomtypepair 2 0.5 0.5 0.5 0.5/' \
+  "gamman_abs is 0.5"
+refuses "a time step beyond the critical step of the lightest atom" 's/^timestep .*/timestep 2e-3/' \
+  "time step 0.002 s exceeds the critical step 0.00114342 s = 2 sqrt(M / (2 kn)) of particle"
 refuses "kn that differs between types" 's/kn peratomtypepair 2 1e4 1e4 1e4 1e4/kn peratomtypepair 2 1e4 2e4 2e4 1e4/' \
   "fix property/global kn differs between atom type pairs"
 # an error on one rank (the results file cannot be opened) aborts the job: the

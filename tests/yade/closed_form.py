@@ -101,6 +101,17 @@ refused('D damping 0.7 0.5', "alpha 0.7 and beta 0.5 differ")
 refused('D frame boundary', "'boundary' is not a YADE group mask")
 refused('D frame 64', "keyword 'frame': '64' names no particle")
 
+# YADE's own sphere mass on one body (4/3 pi R^3 rho, 800 times lighter than the disc):
+# the time step is checked against its critical step before the run, naming it
+servo_bc.O.reset()
+ids, _ = servo_bc.load_packing(packing, 2e3, 1e4, 2e3, 0.4)
+servo_bc.O.bodies[ids[7]].state.mass = 4.0 / 3.0 * math.pi * 1.02e-3 ** 3 * 2e3
+try:
+    servo_bc.ServoBC('D', ids, 1e-4, 1e4)
+    check(False, 'sphere mass: accepted at 1e-4 s')
+except servo_bc.ServoBCError as e:
+    check('exceeds the critical step' in str(e) and 'of particle 7 (mass 8.89' in str(e), 'sphere mass: %s' % e)
+
 # a diverging controller stops the run with the core's message, no NaN
 servo_bc.O.reset()
 try:

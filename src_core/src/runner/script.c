@@ -317,6 +317,12 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         return sbc_fail(err, SBC_ERR_INPUT, "timestep %g s exceeds the critical step %g s = 2 sqrt(M_min / (2 kn))%s",
                         s->dt, dtc, s->cohesive ? " or 2 sqrt(I_min / (2 kr))" : "");
     }
+    if (s->dt * (double)s->settings.max_relax_steps < dtc) {
+        run_free(&r);
+        return sbc_fail(err, SBC_ERR_INPUT, "timestep %g s: max_relax_steps %ld steps of it do not span one critical "
+                        "step %g s, so no relaxation could end; raise the time step or max_relax_steps",
+                        s->dt, s->settings.max_relax_steps, dtc);
+    }
     sbc_engine_set_frame(r.engine, &r.frame);
     r.mass = malloc(sizeof(double) * (size_t)r.frame.n);
     r.fx = malloc(sizeof(double) * 2 * (size_t)r.frame.n);

@@ -4,8 +4,10 @@
 
 #include "sbc/confine.h"
 #include "sbc/results.h"
+#include "sbc/time_step.h"
 #include "io/words.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -76,6 +78,31 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
     if (n < 4) {
         sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: %d particles given; a frame needs at least 4", n);
         return fail_create(h, &err, msg, cap);
+    }
+    if (!xy || !r || !m || (nlist > 0 && !list)) {
+        sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: the centres, radii, masses or frame list are missing (NULL)");
+        return fail_create(h, &err, msg, cap);
+    }
+    {
+        int k, lightest = 0;
+        for (k = 0; k < n; ++k) {
+            if (!isfinite(xy[2 * k]) || !isfinite(xy[2 * k + 1]) || !(r[k] > 0.0) || !isfinite(r[k]) ||
+                !(m[k] > 0.0) || !isfinite(m[k])) {
+                sbc_fail(&err, SBC_ERR_INPUT,
+                         "servo_bc: particle %d: centre (%g, %g) m, radius %g m, mass %g kg (expected a finite centre, "
+                         "radius > 0 and mass > 0)",
+                         k, xy[2 * k], xy[2 * k + 1], r[k], m[k]);
+                return fail_create(h, &err, msg, cap);
+            }
+            if (m[k] < m[lightest])
+                lightest = k;
+        }
+        if (!(kn >= 0.0) || !isfinite(kn)) {
+            sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: contact stiffness kn %g N/m (expected a finite kn >= 0)", kn);
+            return fail_create(h, &err, msg, cap);
+        }
+        if (sbc_time_step_check(dt, kn, m[lightest], lightest, h->settings.max_relax_steps, &err) != SBC_OK)
+            return fail_create(h, &err, msg, cap);
     }
     if (h->settings.frame_group[0] && nlist < 1) {
         sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: keyword 'frame': '%s' names no particle", h->settings.frame_group);

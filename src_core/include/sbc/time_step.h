@@ -1,0 +1,23 @@
+/* servo_bc: the time step a host may run the servo at, checked before the
+ * run in every host (the runner, the LAMMPS and LIGGGHTS fix, the handle of
+ * host.h).
+ *
+ * Upper bound: the critical step of the lightest particle on one contact,
+ * dt_c = 2 sqrt(M_min / (2 kn)) (a particle with several contacts is stable
+ * only below a fraction of it, docs/stability.md).
+ * Lower bound: max_relax_steps steps must span at least one dt_c; below
+ * that no relaxation can end (a contact oscillation lasts longer than the
+ * relaxation may), and Ek of a step so short underflows to zero, which would
+ * pass for rest. */
+#ifndef SBC_TIME_STEP_H
+#define SBC_TIME_STEP_H
+
+#include "sbc/status.h"
+
+/* dt (s), kn (N/m; 0 = unknown: the upper bound is not checked), the
+ * smallest mass (kg) and the index of its particle (for the message, -1 if
+ * none), max_relax_steps. Returns SBC_OK or SBC_ERR_INPUT with the message. */
+sbc_status sbc_time_step_check(double dt, double kn, double mass_min, long index, long max_relax_steps,
+                               sbc_error *err);
+
+#endif
