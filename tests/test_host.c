@@ -176,28 +176,11 @@ static void escape(void)
                           "(its centre (0.01, 0.004) m") != NULL);
 }
 
-static void refused(const char *words, int nlist, const int *list, const char *expect)
-{
-    sbc_packing p;
-    sbc_error err;
-    char msg[512] = "";
-    double mass[25];
-    int k;
-    sbc_host *h;
-    CHECK(sbc_packing_lattice_square(&p, 5, 5, 2e-3, 1.02e-3, &err) == SBC_OK);
-    for (k = 0; k < p.n; ++k)
-        mass[k] = 1e-3;
-    h = sbc_host_create(words, p.n, p.x, p.r, mass, nlist, list, 1e-5, 1e4, msg, sizeof msg);
-    CHECK(h == NULL && strstr(msg, expect) != NULL);
-    if (h || !strstr(msg, expect))
-        printf("  '%s': got '%s'\n", words, msg);
-    sbc_host_free(h);
-    sbc_packing_free(&p);
-}
-
-/* the particles of a 5 x 5 lattice with particle 7's field FIELD (0 x, 1
- * radius, 2 mass) set to VALUE, at time step DT: refused with EXPECT */
-static void bad_particle(int field, double value, double dt, const char *expect)
+/* sbc_host_create refuses WORDS on the particles of a 5 x 5 lattice (disc
+ * masses) whose field FIELD of particle 7 (0 x, 1 radius, 2 mass, -1 none)
+ * is VALUE, at time step DT, with a message holding EXPECT */
+static void refused_on(const char *words, int nlist, const int *list, int field, double value, double dt,
+                       const char *expect)
 {
     sbc_packing p;
     sbc_error err;
@@ -212,14 +195,24 @@ static void bad_particle(int field, double value, double dt, const char *expect)
         p.x[14] = value;
     else if (field == 1)
         p.r[7] = value;
-    else
+    else if (field == 2)
         mass[7] = value;
-    h = sbc_host_create("P F 1.01 0 0 1", p.n, p.x, p.r, mass, 0, NULL, dt, 1e4, msg, sizeof msg);
+    h = sbc_host_create(words, p.n, p.x, p.r, mass, nlist, list, dt, 1e4, msg, sizeof msg);
     CHECK(h == NULL && strstr(msg, expect) != NULL);
     if (h || !strstr(msg, expect))
-        printf("  particle field %d = %g, dt %g: got '%s'\n", field, value, dt, msg);
+        printf("  '%s', field %d = %g, dt %g: got '%s'\n", words, field, value, dt, msg);
     sbc_host_free(h);
     sbc_packing_free(&p);
+}
+
+static void refused(const char *words, int nlist, const int *list, const char *expect)
+{
+    refused_on(words, nlist, list, -1, 0.0, 1e-5, expect);
+}
+
+static void bad_particle(int field, double value, double dt, const char *expect)
+{
+    refused_on("P F 1.01 0 0 1", 0, NULL, field, value, dt, expect);
 }
 
 static void bad_input(void)
