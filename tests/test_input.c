@@ -68,7 +68,9 @@ static const bad_case cases[] = {
     {"servo_bc P update\n", {"bad:1:", "keyword 'update'", "missing mode"}},
     {"servo_bc P tol_relative -1e-3\n", {"bad:1:", "keyword 'tol_relative'", "a real >= 0"}},
     {"servo_bc P accuracy quick\n", {"bad:1:", "preset 'quick'", "fast, balanced, paper or tight"}},
-    {"servo_bc P accuracy fast tol_force 1e-7 accuracy tight\n", {"bad:1:", "'accuracy' given twice", "'tight'"}},
+    {"servo_bc P accuracy fast tol_force 1e-7 accuracy tight\n", {"bad:1:", "keyword 'accuracy' given twice", NULL}},
+    {"servo_bc P increments 2 tol_force 1e-7 increments 3\n", {"bad:1:", "keyword 'increments' given twice", NULL}},
+    {"servo_bc D F 1e300 0 0 1e300 increments 5\n", {"bad:1:", "keyword 'F': F11 1e+300", "|Fij| <= 100"}},
     {"servo_bc P accuracy\n", {"bad:1:", "keyword 'accuracy'", "missing preset"}},
     {HEAD "run\n", {"bad:6:", "run", "no boundary condition"}},
     {"dimension 2\nservo_bc D\nrun\n", {"bad:3:", "run", "no packing"}},
@@ -82,6 +84,16 @@ static const bad_case cases[] = {
     {HEAD "servo_bc D F 0.99 0 0 0.99 damping none max_relax_steps 500\nrun\n",
      {"bad:7:", "increment 1", "did not reach force balance 1e-05"}},
     {"read_packing /nonexistent/packing.txt\n", {"bad:1:", "read_packing", "cannot open"}},
+    /* scripts that would compute nothing, or silently use one of two servo_bc lines */
+    {"dimension 2\n", {"bad: the script computes nothing", "expected run, write_packing or rose", NULL}},
+    {"", {"bad: the script computes nothing", "it is empty", NULL}},
+    {HEAD "servo_bc D\nservo_bc P\nrun\n", {"bad:7:", "a second servo_bc line", "line 6"}},
+    /* sizes and scales that used to loop for ever or overflow */
+    {"dimension 2\ngenerate periodic n0 10 rmin 1e200 polydispersity 2 seed 1\n",
+     {"bad:2:", "rmin 1e+200 m is out of range", "1e-6 to 1e3 m"}},
+    {"dimension 2\nlattice square 100000 100000 spacing 2e-3 radius 1e-3\n",
+     {"bad:2:", "100000 x 100000 particles exceed the limit", NULL}},
+    {HEAD "timestep 1e-300\nservo_bc D\nrun\n", {"bad:8:", "timestep 1e-300 s", "do not span one critical step"}},
 };
 
 static void check_case(const bad_case *c)
@@ -131,6 +143,75 @@ static void packing_files(void)
     CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_FRAME);
     CHECK(strstr(err.message, "bad:6:") && strstr(err.message, "servo_bc P") &&
           strstr(err.message, "no periodic partner"));
+}
+
+/* Files: a NUL byte in a script, an output over the script or an earlier
+ * output, a packing line too long to read whole, coincident centres. */
+static void runner_files(void)
+{
+    char path[512], csv[512], packing[512], script[2048], line[1400];
+    sbc_error err;
+    FILE *fp;
+    int k;
+    snprintf(path, sizeof path, "%s/nul.sbc", test_tmpdir);
+    fp = fopen(path, "wb");
+    CHECK(fp != NULL);
+    if (fp) {
+        fwrite("dimension 2\n\nlattice square 4 4 spacing 2e-3 radius 1e-3\0run\n", 1, 57, fp);
+        fclose(fp);
+    }
+    CHECK(sbc_script_run_file(path, NULL, &err) == SBC_ERR_INPUT && strstr(err.message, "nul.sbc:3: a NUL byte"));
+    /* the results file over the script itself */
+    snprintf(path, sizeof path, "%s/self.sbc", test_tmpdir);
+    snprintf(script, sizeof script, HEAD "servo_bc D file %s\nrun\n", path);
+    write_text(path, script);
+    CHECK(sbc_script_run_file(path, NULL, &err) == SBC_ERR_INPUT && strstr(err.message, "is this script"));
+    fp = fopen(path, "r");
+    CHECK(fp && fgets(line, sizeof line, fp) && strcmp(line, "dimension 2\n") == 0); /* the script is intact */
+    if (fp)
+        fclose(fp);
+    /* two runs into one results file: the second would truncate the first */
+    snprintf(csv, sizeof csv, "%s/twice.csv", test_tmpdir);
+    snprintf(script, sizeof script, HEAD "servo_bc D file %s\nrun\nservo_bc D F 0.99 0 0 1 file %s\nrun\n", csv, csv);
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "bad:9:") && strstr(err.message, "is the results file of line 7"));
+    /* the results file over the packing read */
+    snprintf(packing, sizeof packing, "%s/read.txt", test_tmpdir);
+    write_text(packing, "0 0 1e-3\n2e-3 0 1e-3\n4e-3 0 1e-3\n0 2e-3 1e-3\n2e-3 2e-3 1e-3\n4e-3 2e-3 1e-3\n"
+                        "0 4e-3 1e-3\n2e-3 4e-3 1e-3\n4e-3 4e-3 1e-3\n");
+    snprintf(script, sizeof script,
+             "read_packing %s\ncontact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\ntimestep 1e-5\n"
+             "servo_bc D file %s\nrun\n", packing, packing);
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "is the packing read of line 1"));
+    /* a packing line longer than the reader's buffer is refused, not split in two */
+    for (k = 0; k < 1300; ++k)
+        line[k] = '0';
+    memcpy(line, "0.", 2);
+    memcpy(line + 1300, " 0 1e-3\n", 9);
+    fp = fopen(packing, "w");
+    CHECK(fp != NULL);
+    if (fp) {
+        fputs("0 0 1e-3\n", fp);
+        fputs(line, fp);
+        fclose(fp);
+    }
+    snprintf(script, sizeof script, "read_packing %s\n", packing);
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "line 2 is longer than 1023 characters"));
+    snprintf(script, sizeof script, "read_packing /dev/zero\n");
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "/dev/zero line 1 holds a NUL byte"));
+    /* two discs on one centre: named before the run, not as a blown-up packing */
+    write_text(packing, "0 0 1e-3\n2e-3 0 1e-3\n4e-3 0 1e-3\n0 2e-3 1e-3\n2e-3 2e-3 1e-3\n4e-3 2e-3 1e-3\n"
+                        "0 4e-3 1e-3\n2e-3 4e-3 1e-3\n4e-3 4e-3 1e-3\n2e-3 2e-3 1e-3\n");
+    snprintf(script, sizeof script,
+             "read_packing %s\ncontact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\ntimestep 1e-5\nservo_bc D\nrun\n",
+             packing);
+    CHECK(sbc_script_run_string(script, "bad", NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "bad:6:") && strstr(err.message, "particles 4 and 9 have coincident centres (0.002, 0.002) m"));
+    if (!strstr(err.message, "particles 4 and 9"))
+        printf("  coincident: %s\n", err.message);
 }
 
 /* The executable: non-zero exit, "ERROR:" with the line on stderr, and the
@@ -204,6 +285,7 @@ void test_input(void)
     for (k = 0; k < sizeof cases / sizeof cases[0]; ++k)
         check_case(&cases[k]);
     packing_files();
+    runner_files();
     runner_exit();
     presets();
 }

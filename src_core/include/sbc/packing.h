@@ -22,6 +22,10 @@ sbc_status sbc_packing_lattice_square(sbc_packing *p, int nx, int ny, double spa
  * periodic packing and its square (written by sbc_packing_write_text). */
 sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err);
 
+/* The most particles a packing may hold (read, lattice): 10 million, where
+ * sizes in bytes and neighbour-list indices stay far from overflow. */
+#define SBC_PACKING_MAX 10000000L
+
 /* Writers, so that every host loads the very same packing (centres and radii
  * printed with 17 significant digits: read back bit for bit):
  *  - text:   "box XLO XHI YLO YHI" when periodic, then "x y r" per line (m);
@@ -46,6 +50,12 @@ sbc_status sbc_packing_write_yade(const sbc_packing *p, const int *is_frame, con
 /* Orientations atan2(dy, dx) (rad) of the branch vectors of all pairs whose
  * gap is below tol (m); *angle is malloc'ed (free it), *count its length. */
 sbc_status sbc_packing_contact_angles(const sbc_packing *p, double tol, double **angle, int *count, sbc_error *err);
+
+/* Refuses two of the n discs (centres x [2n], radii r [n], m) whose centres
+ * are closer than 1e-6 of the smaller radius: their contact has no normal,
+ * and the packing would blow up at the first step. The message names both
+ * and their centre. */
+sbc_status sbc_packing_distinct(int n, const double *x, const double *r, sbc_error *err);
 
 void sbc_packing_free(sbc_packing *p);
 

@@ -128,6 +128,10 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     memset(p, 0, sizeof *p);
     if (n < 4 || n > 100000)
         return sbc_fail(err, SBC_ERR_INPUT, "generate: %d particles (expected 4 to 100000)", n);
+    /* positions are rounded to 2^-50 m (quantize): radii far below a micrometre lose
+     * their digits, and the jamming never ends; far above a kilometre neither */
+    if (!(def->r_min >= 1e-6 && def->r_min <= 1e3))
+        return sbc_fail(err, SBC_ERR_INPUT, "generate: rmin %g m is out of range (expected 1e-6 to 1e3 m)", def->r_min);
     if (!(def->r_min > 0.0) || !(def->polydispersity >= 1.0))
         return sbc_fail(err, SBC_ERR_INPUT, "generate: R_min %g must be > 0 and polydispersity %g >= 1", def->r_min,
                         def->polydispersity);

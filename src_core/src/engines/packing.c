@@ -72,23 +72,48 @@ static sbc_status read_box(sbc_packing *p, char *line, const char *path, int lin
     return SBC_OK;
 }
 
+/* One line of a packing file into line (cap bytes, without the newline);
+ * *end = 1 at the end of the file. A line is read whole or refused:
+ * longer than cap - 1 characters, or holding a NUL byte (a binary file,
+ * /dev/zero), is an error, never a split into two particles or a read
+ * without end. */
+static sbc_status read_line(FILE *fp, char *line, size_t cap, const char *path, int lineno, int *end,
+                            sbc_error *err)
+{
+    size_t n = 0;
+    int ch;
+    *end = 0;
+    while ((ch = getc(fp)) != EOF && ch != '\n') {
+        if (ch == '\0')
+            return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d holds a NUL byte (expected text: x y r)",
+                            path, lineno);
+        if (n + 1 >= cap)
+            return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d is longer than %d characters (expected x y r)",
+                            path, lineno, (int)cap - 1);
+        line[n++] = (char)ch;
+    }
+    *end = ch == EOF && n == 0;
+    line[n] = '\0';
+    return SBC_OK;
+}
+
 sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err)
 {
     FILE *fp = fopen(path, "r");
     char line[1024];
-    int lineno = 0, cap = 0;
+    int lineno = 0, cap = 0, end = 0;
     sbc_status st = SBC_OK;
     memset(p, 0, sizeof *p);
     if (!fp)
         return sbc_fail(err, SBC_ERR_IO, "read_packing: cannot open '%s'", path);
-    while (fgets(line, sizeof line, fp)) {
+    while ((st = read_line(fp, line, sizeof line, path, lineno + 1, &end, err)) == SBC_OK && !end) {
         char *tok[3], line_copy[1024];
         const char *names[3] = {"x", "y", "r"};
         double v[3];
         int nt, c;
+        ++lineno;
         memcpy(line_copy, line, sizeof line);
         nt = sbc_split_words(line, tok, 3);
-        ++lineno;
         if (nt == 0)
             continue;
         if (strcmp(tok[0], "box") == 0) {
@@ -111,6 +136,11 @@ sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err)
         if (!(v[2] > 0.0)) {
             st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: radius %g is not positive", path, lineno,
                           v[2]);
+            break;
+        }
+        if (p->n >= SBC_PACKING_MAX) {
+            st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: more than %ld particles", path, lineno,
+                          (long)SBC_PACKING_MAX);
             break;
         }
         if (p->n == cap) {
@@ -179,5 +209,37 @@ sbc_status sbc_packing_contact_angles(const sbc_packing *p, double tol, double *
     free(order);
     *angle = out;
     *count = m;
+    return SBC_OK;
+}
+
+sbc_status sbc_packing_distinct(int n, const double *x, const double *r, sbc_error *err)
+{
+    by_x *order;
+    double rmin = HUGE_VAL;
+    int i, j;
+    if (n < 2)
+        return SBC_OK;
+    if (!(order = malloc(sizeof *order * (size_t)n)))
+        return sbc_fail(err, SBC_ERR_NOMEM, "out of memory");
+    for (i = 0; i < n; ++i) {
+        order[i].x = x[2 * i];
+        order[i].k = i;
+        rmin = fmin(rmin, r[i]);
+    }
+    qsort(order, (size_t)n, sizeof *order, compare_x);
+    for (i = 0; i < n; ++i)
+        for (j = i + 1; j < n && order[j].x - order[i].x < 1e-6 * rmin; ++j) {
+            const int a = order[i].k < order[j].k ? order[i].k : order[j].k;
+            const int b = order[i].k < order[j].k ? order[j].k : order[i].k;
+            const double near = 1e-6 * fmin(r[a], r[b]);
+            if (fabs(x[2 * b] - x[2 * a]) < near && fabs(x[2 * b + 1] - x[2 * a + 1]) < near) {
+                free(order);
+                return sbc_fail(err, SBC_ERR_INPUT,
+                                "particles %d and %d have coincident centres (%g, %g) m (expected distinct particles; "
+                                "check the packing)",
+                                a, b, x[2 * a], x[2 * a + 1]);
+            }
+        }
+    free(order);
     return SBC_OK;
 }

@@ -70,6 +70,9 @@ static sbc_status cmd_lattice(script *s, int nw, char **w, sbc_error *err)
         return sbc_fail(err, SBC_ERR_INPUT, "lattice: NX '%s' is not valid (expected an integer from 3 to 100000)", w[2]);
     if (sbc_parse_int(w[3], "NY", 3, 100000, &ny, NULL) != SBC_OK)
         return sbc_fail(err, SBC_ERR_INPUT, "lattice: NY '%s' is not valid (expected an integer from 3 to 100000)", w[3]);
+    if (nx * ny > SBC_PACKING_MAX)
+        return sbc_fail(err, SBC_ERR_INPUT, "lattice: %ld x %ld particles exceed the limit of %ld", nx, ny,
+                        (long)SBC_PACKING_MAX);
     if ((st = sbc_script_expect_key("lattice", w[4], "spacing", usage, err)) != SBC_OK) return st;
     if ((st = sbc_script_positive("lattice", "spacing", w[5], &d, err)) != SBC_OK) return st;
     if ((st = sbc_script_expect_key("lattice", w[6], "radius", usage, err)) != SBC_OK) return st;
@@ -295,7 +298,8 @@ static sbc_status cmd_run(script *s, sbc_error *err)
                         "the frame from the packing",
                         s->servo_line, s->settings.frame_group);
 
-    if ((st = sbc_frame_detect_packing(&r.frame, &s->packing, err)) != SBC_OK)
+    if ((st = sbc_packing_distinct(s->packing.n, s->packing.x, s->packing.r, err)) != SBC_OK ||
+        (st = sbc_frame_detect_packing(&r.frame, &s->packing, err)) != SBC_OK)
         return st;
     def.n = s->packing.n;
     def.x = s->packing.x;
@@ -344,10 +348,13 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         run_free(&r);
         return st;
     }
-    if (s->settings.file[0] && (st = sbc_csv_open(&r.csv, s->settings.file, err)) != SBC_OK) {
+    if (s->settings.file[0] && ((st = sbc_script_files_check(s, s->settings.file, "servo_bc: keyword 'file':", err)) !=
+                                    SBC_OK ||
+                                (st = sbc_csv_open(&r.csv, s->settings.file, err)) != SBC_OK)) {
         run_free(&r);
         return st;
     }
+    sbc_script_files_note(s, s->settings.file, "results file");
     if (s->log)
         fprintf(s->log, "servo_bc %s: %d particles, frame of %d, %d increments, dt = %g s (critical %g s)\n",
                 sbc_bc_name(s->settings.bc), s->packing.n, r.frame.n, sbc_settings_total_increments(&s->settings), s->dt, dtc);
@@ -463,6 +470,8 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
         sbc_packing_free(&s->packing);
         st = sbc_packing_read(&s->packing, w[1], err);
         s->have_packing = st == SBC_OK;
+        if (st == SBC_OK)
+            sbc_script_files_note(s, w[1], "packing read");
         return st;
     }
     if (strcmp(c, "generate") == 0) return sbc_script_generate(s, nw, w, err);
@@ -483,12 +492,16 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
     }
     if (strcmp(c, "servo_bc") == 0) {
         char msg[SBC_ERROR_LEN];
+        if (s->servo_pending)
+            return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: a second servo_bc line before a run has used the one of line "
+                            "%d (each run takes the servo_bc line before it)", s->servo_line);
         st = sbc_settings_parse(&s->settings, nw - 1, (const char *const *)(w + 1), err);
         if (st != SBC_OK) {
             snprintf(msg, sizeof msg, "%s", err->message);
             return sbc_fail(err, st, "servo_bc: %s", msg);
         }
         s->have_servo = 1;
+        s->servo_pending = 1;
         s->servo_line = s->line;
         return keep_servo_words(s, nw, w, err);
     }
@@ -502,6 +515,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
     }
     if (strcmp(c, "run") == 0) {
         if ((st = sbc_script_expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
+        s->servo_pending = 0;
         return s->decks_dir ? sbc_script_write_decks(s, s->decks_dir, err) : cmd_run(s, err);
     }
     return sbc_fail(err, SBC_ERR_INPUT,
@@ -536,11 +550,17 @@ static sbc_status run_text(const char *text, const char *name, FILE *log, const 
         nw = sbc_split_words(line, w, MAX_WORDS);
         if (nw > MAX_WORDS)
             st = at_line(&s, sbc_fail(err, SBC_ERR_INPUT, "%s: more than %d words on one line", w[0], MAX_WORDS), err);
-        else if (nw > 0)
+        else if (nw > 0) {
+            const int acts = strcmp(w[0], "run") == 0 || strcmp(w[0], "write_packing") == 0 || strcmp(w[0], "rose") == 0;
             st = at_line(&s, execute(&s, nw, w, err), err);
+            s.actions += acts && st == SBC_OK;
+        }
         free(line);
         p = e ? e + 1 : p + len;
     }
+    if (st == SBC_OK && s.actions == 0)
+        st = sbc_fail(err, SBC_ERR_INPUT, "%s: the script computes nothing (expected run, write_packing or rose)%s",
+                      name, s.line == 0 ? "; it is empty" : "");
     sbc_packing_free(&s.packing);
     sbc_script_bpm_free(&s);
     return st;
@@ -575,6 +595,17 @@ static sbc_status run_file(const char *path, FILE *log, const char *decks_dir, s
     }
     text[size] = '\0';
     fclose(fp);
+    {
+        /* a NUL byte would end the text early, and the rest unread */
+        const char *nul = memchr(text, '\0', (size_t)size), *q;
+        if (nul) {
+            int line = 1;
+            for (q = text; q < nul; ++q)
+                line += *q == '\n';
+            free(text);
+            return sbc_fail(err, SBC_ERR_INPUT, "%s:%d: a NUL byte (expected a text script)", path, line);
+        }
+    }
     st = run_text(text, path, log, decks_dir, err);
     free(text);
     return st;

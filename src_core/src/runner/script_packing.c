@@ -53,6 +53,9 @@ sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
  * carries it: LAMMPS and LIGGGHTS as atom type 2, YADE as a fifth column. */
 sbc_status sbc_script_write_packing_as(script *s, const char *format, const char *path, sbc_error *err)
 {
+    sbc_status checked = sbc_script_files_check(s, path, "write_packing:", err);
+    if (checked != SBC_OK)
+        return checked;
     sbc_frame frame;
     int *is_frame, k;
     sbc_status st;
@@ -90,7 +93,10 @@ sbc_status sbc_script_write_packing(script *s, int nw, char **w, sbc_error *err)
     if (st != SBC_OK) return st;
     if (!s->have_packing)
         return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no packing (use 'lattice', 'read_packing' or 'generate' first)");
-    return sbc_script_write_packing_as(s, w[1], w[2], err);
+    st = sbc_script_write_packing_as(s, w[1], w[2], err);
+    if (st == SBC_OK)
+        sbc_script_files_note(s, w[2], "packing written");
+    return st;
 }
 
 /* rose FILE.svg: contact orientations of the packing (pairs closer than 1e-6 R_min) */

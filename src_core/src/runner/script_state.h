@@ -11,6 +11,15 @@
 
 #define MAX_WORDS 64
 
+/* a file the script read or wrote (script_files.c) */
+typedef struct sbc_file_id {
+    unsigned long long dev, ino;
+    int line;
+    char role[24];
+} sbc_file_id;
+
+#define SBC_SCRIPT_FILES 64
+
 typedef struct script {
     const char *name;
     int line;
@@ -31,7 +40,17 @@ typedef struct script {
     char servo_words[2048]; /* the servo_bc words without 'file NAME' */
     const char *decks_dir;  /* --decks: 'run' writes the hosts' inputs here instead */
     struct bpm_script *bpm; /* after 'dimension 3': the 3D bonded particle model (script_bpm.c) */
+    int actions;            /* commands that computed or wrote something (run, write_packing, rose) */
+    int servo_pending;      /* a servo_bc line no run has used yet */
+    sbc_file_id files[SBC_SCRIPT_FILES], script_id;
+    int nfiles;
 } script;
+
+/* script_files.c: remember PATH (read or written at this line, as ROLE:
+ * "packing read", "results file", ...), and refuse to write WHAT 'PATH'
+ * over the script or a remembered file. */
+void sbc_script_files_note(script *s, const char *path, const char *role);
+sbc_status sbc_script_files_check(script *s, const char *path, const char *what, sbc_error *err);
 
 /* "cmd: missing values / unexpected extra value" unless nw == want. */
 sbc_status sbc_script_expect_count(int nw, char **w, int want, const char *usage, sbc_error *err);

@@ -3,6 +3,7 @@
 #include "sbc/fire_damping.h"
 
 #include "sbc/confine.h"
+#include "sbc/packing.h"
 #include "sbc/results.h"
 #include "sbc/time_step.h"
 #include "io/words.h"
@@ -101,7 +102,8 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
             sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: contact stiffness kn %g N/m (expected a finite kn >= 0)", kn);
             return fail_create(h, &err, msg, cap);
         }
-        if (sbc_time_step_check(dt, kn, m[lightest], lightest, h->settings.max_relax_steps, &err) != SBC_OK)
+        if (sbc_time_step_check(dt, kn, m[lightest], lightest, h->settings.max_relax_steps, &err) != SBC_OK ||
+            sbc_packing_distinct(n, xy, r, &err) != SBC_OK)
             return fail_create(h, &err, msg, cap);
     }
     if (h->settings.frame_group[0] && nlist < 1) {

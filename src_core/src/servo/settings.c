@@ -220,60 +220,63 @@ static sbc_status read_name(cursor *c, const char *what, char *dst)
 static const char *const gain_keys[] = {"gain_force", "gain_moment", "gain_deformation"};
 static const char *const tol_keys[] = {"tol_force", "tol_moment", "tol_deformation"};
 
-/* whether keyword key stands among the words (at a keyword's place or a
- * value's: no keyword is a valid value of another) */
-static int given(const char *const *words, int n, const char *key)
+/* The keywords one pass met (at keyword places, never a value that spells
+ * a keyword), and the preset it read. */
+typedef struct met {
+    const char *keys[64];
+    int n;
+    char accuracy[16];
+} met;
+
+static int was_met(const met *m, const char *key)
 {
     int k;
-    for (k = 1; k < n; ++k)
-        if (strcmp(words[k], key) == 0)
+    for (k = 0; k < m->n; ++k)
+        if (strcmp(m->keys[k], key) == 0)
             return 1;
     return 0;
 }
 
-sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *words, sbc_error *err)
+/* One pass over the keywords into *s, which holds the defaults (and, in the
+ * second pass, the preset). first: the pass that validates `accuracy` and
+ * records it in *m instead of applying it. */
+static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *words, int first, met *m,
+                             sbc_error *err)
 {
     cursor c;
     sbc_status st = SBC_OK;
     long iv;
     int k;
-    *s = sbc_settings_default();
-    if (nwords < 1)
-        return sbc_fail(err, SBC_ERR_INPUT, "missing boundary condition (expected D, P, T or mixed)");
-    if (strcmp(words[0], "D") == 0)
-        s->bc = SBC_BC_D;
-    else if (strcmp(words[0], "P") == 0)
-        s->bc = SBC_BC_P;
-    else if (strcmp(words[0], "T") == 0)
-        s->bc = SBC_BC_T;
-    else if (strcmp(words[0], "mixed") == 0)
-        s->bc = SBC_BC_MIXED;
-    else
-        return sbc_fail(err, SBC_ERR_INPUT, "unknown boundary condition '%s' (expected D, P, T or mixed)", words[0]);
-
+    m->n = 0;
     c.n = nwords;
     c.i = 1;
     c.w = words;
     c.err = err;
-    /* a preset first, so that the keywords given with it win wherever they stand */
-    for (k = 1, iv = 0; k + 1 < nwords; ++k) {
-        if (strcmp(words[k], "accuracy") != 0)
-            continue;
-        if (iv++)
-            return sbc_fail(err, SBC_ERR_INPUT, "keyword 'accuracy' given twice ('%s' and '%s')", s->accuracy,
-                            words[k + 1]);
-        if (!sbc_settings_preset(s, words[k + 1]))
-            return sbc_fail(err, SBC_ERR_INPUT,
-                            "keyword 'accuracy': preset '%s' is not valid (expected fast, balanced, paper or tight)",
-                            words[k + 1]);
-    }
     while (c.i < c.n && st == SBC_OK) {
         const char *key = c.w[c.i++];
         c.key = key;
-        if (strcmp(key, "F") == 0) {
+        /* every keyword once, but stress (one per component; its parser refuses a repeated component) */
+        if (strcmp(key, "stress") != 0 && was_met(m, key))
+            return sbc_fail(err, SBC_ERR_INPUT, "keyword '%s' given twice (each keyword once per servo_bc line)", key);
+        if (m->n < (int)(sizeof m->keys / sizeof m->keys[0]))
+            m->keys[m->n++] = key;
+        if (strcmp(key, "accuracy") == 0) {
+            const char *name = next_word(&c, "preset", &st);
+            if (name && sbc_settings_preset_accuracy(name) < 0.0)
+                st = sbc_fail(err, SBC_ERR_INPUT,
+                              "keyword 'accuracy': preset '%s' is not valid (expected fast, balanced, paper or tight)",
+                              name);
+            else if (name && first)
+                snprintf(m->accuracy, sizeof m->accuracy, "%s", name);
+        } else if (strcmp(key, "F") == 0) {
             static const char *names[4] = {"F11", "F12", "F21", "F22"};
-            for (k = 0; k < 4 && st == SBC_OK; ++k)
+            for (k = 0; k < 4 && st == SBC_OK; ++k) {
                 st = read_real(&c, names[k], -HUGE_VAL, 0, HUGE_VAL, "a real number", &s->F[k]);
+                /* a frame stretched a hundredfold is no DEM sample; beyond, det F overflows */
+                if (st == SBC_OK && !(fabs(s->F[k]) <= 100.0))
+                    st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': %s %g is out of range (expected |Fij| <= 100)",
+                                  names[k], s->F[k]);
+            }
             if (st == SBC_OK && !(s->F[0] * s->F[3] - s->F[1] * s->F[2] > 0.0))
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': det F = %g is not positive (expected det F > 0)",
                               s->F[0] * s->F[3] - s->F[1] * s->F[2]);
@@ -322,8 +325,6 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
             }
         } else if (strcmp(key, "predict") == 0) {
             st = read_real(&c, "n_f", 0.0, 0, 1.0, "an inheritance factor in [0, 1]", &s->predict);
-        } else if (strcmp(key, "accuracy") == 0) {
-            (void)next_word(&c, "preset", &st); /* applied before the loop */
         } else if (strcmp(key, "tol_relative") == 0) {
             st = read_real(&c, "eps", 0.0, 0, HUGE_VAL, "a real >= 0 (0: the tolerances of eq. 37)", &s->tol_relative);
         } else if (strcmp(key, "update") == 0) {
@@ -374,12 +375,41 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
         }
     }
     /* absolute tolerances given without tol_relative are meant absolute */
-    if (st == SBC_OK && !given(words, nwords, "tol_relative") &&
-        (given(words, nwords, "tol_force") || given(words, nwords, "tol_moment")))
+    if (st == SBC_OK && !was_met(m, "tol_relative") && (was_met(m, "tol_force") || was_met(m, "tol_moment")))
         s->tol_relative = 0.0;
     if (st == SBC_OK && s->bc == SBC_BC_MIXED)
         st = sbc_mixed_validate(s, err);
     return st;
+}
+
+sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *words, sbc_error *err)
+{
+    met m;
+    sbc_status st;
+    sbc_bc bc;
+    *s = sbc_settings_default();
+    if (nwords < 1)
+        return sbc_fail(err, SBC_ERR_INPUT, "missing boundary condition (expected D, P, T or mixed)");
+    if (strcmp(words[0], "D") == 0)
+        bc = SBC_BC_D;
+    else if (strcmp(words[0], "P") == 0)
+        bc = SBC_BC_P;
+    else if (strcmp(words[0], "T") == 0)
+        bc = SBC_BC_T;
+    else if (strcmp(words[0], "mixed") == 0)
+        bc = SBC_BC_MIXED;
+    else
+        return sbc_fail(err, SBC_ERR_INPUT, "unknown boundary condition '%s' (expected D, P, T or mixed)", words[0]);
+    s->bc = bc;
+    m.accuracy[0] = '\0';
+    /* the first pass finds every error in the order of the words, and the preset */
+    if ((st = parse_pass(s, nwords, words, 1, &m, err)) != SBC_OK || !m.accuracy[0])
+        return st;
+    /* a preset: applied first, so that the keywords given with it win wherever they stand */
+    *s = sbc_settings_default();
+    s->bc = bc;
+    sbc_settings_preset(s, m.accuracy);
+    return parse_pass(s, nwords, words, 0, &m, err);
 }
 
 int sbc_settings_total_increments(const sbc_settings *s)
