@@ -189,7 +189,7 @@ restart_check() {
 RESTART_SERVO="servo_bc P F 0.999 -0.01 -0.01 0.999 increments 3 relax 1e-20 20 gain_force 1e3 gain_moment 1e3 tol_force 1e-12 tol_moment 1e-12"
 restart_decks() {  # PART2_HEAD_FILE
   deck_with "s/servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20/$RESTART_SERVO/" "$TMP/full.in"
-  sed "s|^run .*|run 7000\nwrite_restart $TMP/half.restart|; /jump SELF loop/d" "$TMP/full.in" > "$TMP/part1.in"
+  sed "/^run  *0\$/d; s|^run .*|run 7000\nwrite_restart $TMP/half.restart|; /jump SELF loop/d" "$TMP/full.in" > "$TMP/part1.in"
   { echo "read_restart $TMP/half.restart"; cat "$1"; sed -n '/^fix  *servo /,$p' "$TMP/full.in"; } > "$TMP/part2.in"
 }
 

@@ -18,6 +18,21 @@ frictional_checks 's/^fix             kt all property\/global kt peratomtypepair
 refuses "a 3d box" 's/^dimension       2/dimension 3/; /enforce2d/d' "the box is 3d"
 refuses "a pair style without tangential history" 's/tangential history/tangential no_history/' \
   "keeps no tangential history"
+# the documented run in pieces (no setup between them) writes the CSV of one
+# uninterrupted run byte for byte, whatever the piece length: frictional (P)
+pieces=""
+for n in 6000 12000 200000; do
+  deck_with "s/^run             10000 pre no post no/run             $n pre no post no/; s/servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20/servo_bc P F 1 0.02 0 1 increments 4/; s/kt peratomtypepair 2 0 0 0 0/kt peratomtypepair 2 2e3 2e3 2e3 2e3/" \
+    "$TMP/pieces_$n.in"
+  run_deck 1 "pieces_$n.in" "$TMP/pieces_$n.csv" "$TMP/pieces_$n.log" || tail -3 "$TMP/pieces_$n.log"
+  pieces="$pieces $TMP/pieces_$n.csv"
+done
+if [ "$(wc -l < "$TMP/pieces_200000.csv")" = 6 ] && cmp -s "$TMP/pieces_6000.csv" "$TMP/pieces_200000.csv" &&
+   cmp -s "$TMP/pieces_12000.csv" "$TMP/pieces_200000.csv"; then
+  ok "pieces of 6000 and 12000 steps write the uninterrupted run's CSV byte for byte"
+else
+  no "pieces of 6000, 12000 steps and one run differ:$(for f in $pieces; do tail -n 1 "$f" | cut -d, -f11; done | tr '\n' ' ')"
+fi
 refuses "a normal dashpot (gamman_abs 0.5)" 's/gamman_abs peratomtypepair 2 0 0 0 0/gamman_abs peratomtypepair 2 0.5 0.5 0.5 0.5/' \
   "gamman_abs is 0.5"
 refuses "a time step beyond the critical step of the lightest atom" 's/^timestep .*/timestep 2e-3/' \

@@ -25,7 +25,12 @@
  * force amplitude floor_force on every particle) counts as rest: a
  * stress-free packing (touching discs, overlaps of round-off size) or one
  * that has come apart in tension relaxes once its forces fall to round-off
- * instead of chasing a ratio of two round-off numbers.
+ * instead of chasing a ratio of two round-off numbers. A net force below
+ * SBC_RELAX_NET_FLOOR floor_force counts as balanced whatever tol says:
+ * tol floor_force would sit at the round-off of the forces themselves
+ * (kn eps L, eps = 2.2e-16) for tol 1e-5, below it for 1e-8. floor_force
+ * = kn 1e-10 (L + R) (controller.c), so this is 1e3 times the round-off and
+ * 1e-11 of a contact force of kn L / 10: far below every preset's accuracy.
  *
  * Energy (the paper's eq. 11, kept as an alternative): Ek/Ep <= tol_E held
  * for `window` consecutive steps. Our reading, stated because the paper does
@@ -48,6 +53,7 @@
 #ifndef SBC_RELAX_H
 #define SBC_RELAX_H
 
+#define SBC_RELAX_NET_FLOOR 1e-3
 #define SBC_RELAX_ROUNDOFF 1e-20
 
 typedef enum sbc_criterion { SBC_CRITERION_FORCE = 0, SBC_CRITERION_ENERGY } sbc_criterion;

@@ -115,7 +115,9 @@ static sbc_status write_liggghts(const script *s, const char *dir, double skin, 
                 "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]\n"
                 "thermo          100000\n"
                 "variable        done equal f_servo[18]    # LIGGGHTS cannot end a run from a fix\n"
-                "label           loop\nrun             10000\n"
+                "run             0\n"
+                "label           loop    # pieces without a setup between them: the uninterrupted run's results\n"
+                "run             10000 pre no post no\n"
                 "if              \"${done} == 0\" then \"jump SELF loop\"\n");
     return close_file(fp, path, err);
 }

@@ -39,7 +39,8 @@ static double contact_scale(const sbc_relax *r, const sbc_relax_sample *s)
 static int force_counts(const sbc_relax *r, const sbc_relax_sample *s)
 {
     const double fc = contact_scale(r, s);
-    return s->net_max <= r->tol * fc && s->ek <= fmax(0.5 * r->tol * r->tol * s->ep, r->floor_energy);
+    return s->net_max <= fmax(r->tol * fc, SBC_RELAX_NET_FLOOR * r->floor_force) &&
+           s->ek <= fmax(0.5 * r->tol * r->tol * s->ep, r->floor_energy);
 }
 
 /* ---- energy: eq. 11 past the kinetic-energy maximum ---- */
@@ -67,7 +68,7 @@ int sbc_relax_needs_contacts(const sbc_relax *r, const sbc_relax_sample *s)
     if (r->known_step == 0 || r->steps + 1 - r->known_step >= SBC_RELAX_EP_REFRESH)
         return 1;
     if (r->criterion == SBC_CRITERION_FORCE)
-        return s->net_max <= 2.0 * r->tol * fmax(r->fc_known, r->floor_force);
+        return s->net_max <= 2.0 * fmax(r->tol * fmax(r->fc_known, r->floor_force), SBC_RELAX_NET_FLOOR * r->floor_force);
     {
         const int past_peak = r->past_peak || (r->steps > 0 && r->rising && ek <= r->ek_prev);
         if (ek == 0.0 || counting_limit(r, past_peak) == 0.0)
