@@ -51,6 +51,9 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   if (sbc_settings_parse(&settings, narg - 3, arg + 3, &err) != SBC_OK)
     fail(err.message);
   if (!atom->sphere_flag) fail("requires atom_style sphere");
+  if (std::strcmp(update->unit_style, "si") != 0)
+    fail(std::string("requires units si (its outputs are in m, N/m and s; this script has units ") +
+         update->unit_style + ")");
   if (domain->dimension != 2) fail("this version imposes 2d boundary conditions; the box is 3d (use dimension 2)");
 
   vector_flag = 1;
@@ -196,6 +199,21 @@ void FixServoBC::init()
             SBC_OK)
       fail(std::string(err.message) + " (particle = atom ID; discs need a disc's mass: 'set mass', not 'set density')");
   }
+  {    // every interior atom is integrated by some fix (else the servo waits for ever)
+    int orphans = 0, all = 0;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (!(atom->mask[i] & interior_bit)) continue;
+      int owned = 0;
+      for (int k = 0; k < modify->nfix && !owned; k++)
+        owned = modify->fix[k] != this && (modify->fmask[k] & INITIAL_INTEGRATE) &&
+                (atom->mask[i] & modify->fix[k]->groupbit);
+      orphans += !owned;
+    }
+    MPI_Allreduce(&orphans, &all, 1, MPI_INT, MPI_SUM, world);
+    if (all)
+      fail(std::to_string(all) + " atoms of group " + id + "_interior are integrated by no fix (add: fix integrate " +
+           id + "_interior nve/sphere" + servo_bc_host::disc_keyword + ")");
+  }
   if (restored) {    // the saved atom IDs must be the frame group's, each once
     int local[2] = {0, 0}, all[2];
     for (int i = 0; i < atom->nlocal; i++)
@@ -238,7 +256,25 @@ void FixServoBC::init()
 
 void FixServoBC::setup(int)
 {
+  run_start = update->ntimestep;
   post_force(0);
+}
+
+/* a run that ends before the loading path does says so (LAMMPS; LIGGGHTS runs
+   in pieces until f_ID[18] is 1, and its last piece ends the path) */
+void FixServoBC::post_run()
+{
+#ifndef SERVO_BC_LIGGGHTS
+  if (!finished && update->ntimestep > run_start && comm->me == 0)
+  {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "Fix servo_bc: the run ended at increment %d of %d: the loading path is unfinished (run more "
+                  "steps; f_%s[17] is 1 when it is done)",
+                  sbc_controller_increment(ctl), sbc_settings_total_increments(&settings), id);
+    error->warning(FLERR, text);
+  }
+#endif
 }
 
 /* move the owned frame atoms to the commanded targets within this step */

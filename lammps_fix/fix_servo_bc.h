@@ -49,6 +49,7 @@ class FixServoBC : public Fix {
   void setup(int) override;
   void initial_integrate(int) override;
   void post_force(int) override;
+  void post_run() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
@@ -80,6 +81,7 @@ class FixServoBC : public Fix {
   std::vector<double> saved_state;  // controller state from a restart file, loaded in init()
   int restored;                      // the frame came from a restart file
   bigint last_step;                  // timestep of the last controller step
+  bigint run_start;                  // timestep at the setup of this run
   int frame_still;                   // steps since the commands last changed (initial_integrate)
   int any_free;                      // some frame rotation is free ((T)): integrated every step
   int since_check;                   // steps since the last confinement check (confine.h)

@@ -20,6 +20,8 @@ namespace servo_bc_host {
 
 // I = inertia m r^2: fix nve/sphere disc gives 2d discs the paper's 1/2 (eq. 9)
 constexpr double inertia = 0.5;
+// the integrator's words for that (error messages)
+constexpr const char *disc_keyword = " disc";
 constexpr const char *contact_law = "pair_style gran/hooke/history KN KT 0 0 MU 0";
 
 // kn, kt and fix_history are protected in PairGranHookeHistory; a derived

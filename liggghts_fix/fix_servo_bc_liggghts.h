@@ -25,6 +25,8 @@ namespace servo_bc_host {
 
 // I = inertia m r^2: LIGGGHTS integrates 2d particles as spheres
 constexpr double inertia = 0.4;
+// the integrator's words for that (error messages)
+constexpr const char *disc_keyword = "";
 constexpr const char *contact_law =
     "pair_style gran model hooke/stiffness tangential history absolute_damping on, with fix property/global "
     "kn, kt, gamman_abs, gammat_abs and coefficientFriction";

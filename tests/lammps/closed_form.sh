@@ -12,6 +12,16 @@ here=$(cd "$(dirname "$0")" && pwd)
 HOST=lammps DECK=$here/lattice.in TMP=$(mktemp -d)
 . "$here/../host_checks.sh"
 lattice_checks
+refuses "units other than si" 's/^units  *si/units           lj/' "requires units si (its outputs are in m, N/m and s; this script has units lj)"
+refuses "an interior that no fix integrates" '/^fix  *integrate servo_interior/d' "atoms of group servo_interior are integrated by no fix"
+# a run that ends before the loading path does: exit 0 (a path may span runs), with a warning
+deck_with 's/^run .*/run             300/' "$TMP/short.in"
+run_deck 1 short.in "$TMP/short.csv" "$TMP/short.log"
+if [ $? -eq 0 ] && grep -q "WARNING: Fix servo_bc: the run ended at increment 1 of 2: the loading path is unfinished" "$TMP/short.log"; then
+  ok "warns when the run ends before the loading path"
+else
+  no "no warning on a short run:"; tail -3 "$TMP/short.log"
+fi
 refuses "a time step beyond the critical step of the lightest atom" 's/^timestep .*/timestep 2e-3/' \
   "time step 0.002 s exceeds the critical step 0.00114342 s = 2 sqrt(M / (2 kn)) of particle"
 frictional_checks 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 2e3 0 0 0.4 0/'

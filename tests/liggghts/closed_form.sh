@@ -35,6 +35,8 @@ else
 fi
 refuses "a normal dashpot (gamman_abs 0.5)" 's/gamman_abs peratomtypepair 2 0 0 0 0/gamman_abs peratomtypepair 2 0.5 0.5 0.5 0.5/' \
   "gamman_abs is 0.5"
+refuses "units other than si" 's/^units  *si/units           lj/' "requires units si (its outputs are in m, N/m and s; this script has units lj)"
+refuses "an interior that no fix integrates" '/^fix  *integrate servo_interior/d' "atoms of group servo_interior are integrated by no fix"
 refuses "a time step beyond the critical step of the lightest atom" 's/^timestep .*/timestep 2e-3/' \
   "time step 0.002 s exceeds the critical step 0.00114342 s = 2 sqrt(M / (2 kn)) of particle"
 refuses "kn that differs between types" 's/kn peratomtypepair 2 1e4 1e4 1e4 1e4/kn peratomtypepair 2 1e4 2e4 2e4 1e4/' \
