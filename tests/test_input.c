@@ -94,6 +94,12 @@ static const bad_case cases[] = {
     {"dimension 2\nlattice square 100000 100000 spacing 2e-3 radius 1e-3\n",
      {"bad:2:", "100000 x 100000 particles exceed the limit", NULL}},
     {HEAD "timestep 1e-300\nservo_bc D\nrun\n", {"bad:8:", "timestep 1e-300 s", "do not span one critical step"}},
+    {"dimension 3\npacking random radius 1e-9 porosity 0.41 seed 1\nbond parallel E 4e9 ratio 4.2 touch 0.05\n"
+     "density 925 scaled\ntimestep critical 0.6\ntest uniaxial velocity -1e-5 steps 10\nrun\n",
+     {"bad:7:", "random packing: 3.5213e+23 spheres", "exceed the limit of 10000000"}},
+    {"dimension 3\npacking hcp radius 1e-9\nbond parallel E 4e9 ratio 4.2 touch 0.05\n"
+     "density 925 scaled\ntimestep critical 0.6\ntest uniaxial velocity -1e-5 steps 10\nrun\n",
+     {"bad:7:", "packing: ", "exceed the limit of 10000000"}},
 };
 
 static void check_case(const bad_case *c)

@@ -1,13 +1,18 @@
 /* servo_bc: lattice packings of equal spheres (thesis Sect. 4.1). */
 #include "sbc/bpm_packing.h"
+#include "sbc/packing.h"
 
 #include <math.h>
 
-/* how many points spaced s fit in [0, L] with a margin r on each side */
+/* how many points spaced s fit in [0, L] with a margin r on each side; more
+ * than SBC_PACKING_MAX is reported as SBC_PACKING_MAX + 1 (never cast) */
 static long fit(double L, double r, double s)
 {
-    double room = L - 2.0 * r;
-    return room < -1e-12 * L ? 0 : (long)floor(room / s + 1e-9) + 1;
+    double room = L - 2.0 * r, n;
+    if (room < -1e-12 * L)
+        return 0;
+    n = floor(room / s + 1e-9) + 1.0;
+    return n > (double)SBC_PACKING_MAX ? SBC_PACKING_MAX + 1 : (long)n;
 }
 
 sbc_status sbc_bpm_pack_lattice(sbc_bpm *e, sbc_bpm_lattice lattice, const double box[3], double rp, double rho,
@@ -28,6 +33,10 @@ sbc_status sbc_bpm_pack_lattice(sbc_bpm *e, sbc_bpm_lattice lattice, const doubl
     if (nx < 1 || ny < 1 || nz < 1)
         return sbc_fail(err, SBC_ERR_INPUT, "packing: no sphere of radius %g fits in the box %g x %g x %g", rp,
                         box[0], box[1], box[2]);
+    if ((double)nx * (double)ny * (double)nz > (double)SBC_PACKING_MAX)
+        return sbc_fail(err, SBC_ERR_INPUT, "packing: %g spheres of radius %g in the box %g x %g x %g exceed the limit "
+                        "of %ld", (double)nx * (double)ny * (double)nz, rp, box[0], box[1], box[2],
+                        (long)SBC_PACKING_MAX);
     for (k = 0; k < nz; ++k)
         for (j = 0; j < ny; ++j)
             for (i = 0; i < nx; ++i) {

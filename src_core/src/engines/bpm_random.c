@@ -2,6 +2,7 @@
  * expansion (thesis Sect. 4.1, our own algorithm; bpm_packing.h). */
 #include "sbc/bpm_packing.h"
 #include "fire.h"
+#include "sbc/packing.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -102,7 +103,17 @@ sbc_status sbc_bpm_pack_random(sbc_bpm *e, const double box[3], double rp, doubl
         return sbc_fail(err, SBC_ERR_INPUT, "random packing: porosity %g (expected 0.36 <= p < 1; equal spheres "
                         "do not pack randomly below 0.36)", porosity);
     memset(&p, 0, sizeof p);
-    p.n = (size_t)floor((1.0 - porosity) * vol / (4.0 / 3.0 * SBC_PI * rp * rp * rp) + 0.5);
+    {
+        /* counted as doubles and checked before any cast */
+        const double n = floor((1.0 - porosity) * vol / (4.0 / 3.0 * SBC_PI * rp * rp * rp) + 0.5);
+        double cells = 1.0;
+        for (k = 0; k < 3; ++k)
+            cells *= fmax(1.0, floor(box[k] / (2.0 * rp)));
+        if (!(n <= (double)SBC_PACKING_MAX) || !(cells <= (double)SBC_PACKING_MAX))
+            return sbc_fail(err, SBC_ERR_INPUT, "random packing: %g spheres of radius %g in the box %g x %g x %g "
+                            "exceed the limit of %ld", n, rp, box[0], box[1], box[2], (long)SBC_PACKING_MAX);
+        p.n = (size_t)n;
+    }
     if (p.n < 1)
         return sbc_fail(err, SBC_ERR_INPUT, "random packing: porosity %g leaves no sphere in the box", porosity);
     for (k = 0; k < 3; ++k) {
