@@ -224,6 +224,7 @@ class ServoBC(object):
                                    'damps forces and moments with one factor' % (alpha.value, beta.value))
             self.damping = alpha.value
         self._fire_sums = (ctypes.c_double * 5)()
+        self._interior_states = None      # FIRE: the interior's State objects and (mass, inertia), cached
         self._fire_out = (ctypes.c_double * 4)()
         self.Q = lib.sbc_host_frame_size(self._h)
         particles = lib.sbc_host_frame_particles(self._h)
@@ -363,10 +364,16 @@ class ServoBC(object):
         YADE's v^(n-1/2) here (NewtonIntegrator then adds dt F/m, as the embedded engine does);
         eq. 10 on the torque of a freely rotating frame body ((T)), as in the other hosts."""
         sums, out, forces = self._fire_sums, self._fire_out, O.forces
+        if self._interior_states is None:
+            self._interior_states = [O.bodies[i].state for i in self.interior]
+            self._interior_mass = [(st.mass, st.inertia[2]) for st in self._interior_states]
+        states = self._interior_states
+        fs = list(map(forces.f, self.interior))
+        ts = [t[2] for t in map(forces.t, self.interior)]
+        vs = [st.vel for st in states]
+        ws = [st.angVel[2] for st in states]
         p = vv = ff = ww = mm = 0.0
-        states = [O.bodies[i].state for i in self.interior]
-        for i, st in zip(self.interior, states):
-            f, t, v, w = forces.f(i), forces.t(i)[2], st.vel, st.angVel[2]
+        for f, t, v, w in zip(fs, ts, vs, ws):
             p += f[0] * v[0] + f[1] * v[1] + t * w
             vv += v[0] * v[0] + v[1] * v[1]
             ff += f[0] * f[0] + f[1] * f[1]
@@ -376,11 +383,10 @@ class ServoBC(object):
         _core().sbc_host_fire_mix(self._h, sums, out)
         keep, push, spin, stop = out[0], out[1], out[2], out[3]
         half = 0.5 * self.dt * stop
-        for i, st in zip(self.interior, states):
-            f, v = forces.f(i), st.vel
-            p = push - half / st.mass
-            st.vel = (keep * v[0] + p * f[0], keep * v[1] + p * f[1], 0.0)
-            st.angVel = (0.0, 0.0, keep * st.angVel[2] + (spin - half / st.inertia[2]) * forces.t(i)[2])
+        for st, (mass, inertia), f, t, v, w in zip(states, self._interior_mass, fs, ts, vs, ws):
+            q = push - half / mass
+            st.vel = (keep * v[0] + q * f[0], keep * v[1] + q * f[1], 0.0)
+            st.angVel = (0.0, 0.0, keep * w + (spin - half / inertia) * t)
         if self._free_any and self._fire_beta > 0.0:
             for q, s in enumerate(self._states):
                 if self._free[q]:
