@@ -254,8 +254,39 @@ static double check_reconstruction(const sbc_packing *a, const sbc_generate_def 
     return r_corner;
 }
 
+/* strain E: the jammed box compressed by E and relaxed: L scales by 1 - E,
+ * the volume fraction by 1/(1 - E)^2, and the discs overlap (a load-bearing
+ * packing: the paper's volume fractions 0.833-0.850 at E = 0.01) */
+static void strained(void)
+{
+    sbc_generate_def d = sbc_generate_def_default();
+    sbc_packing a, b;
+    sbc_generate_info ia, ib;
+    sbc_error err;
+    double deepest = 0.0;
+    int i, j;
+    d.n = 60;
+    CHECK(sbc_generate_periodic(&d, &a, &ia, &err) == SBC_OK);
+    d.strain = 0.01;
+    CHECK(sbc_generate_periodic(&d, &b, &ib, &err) == SBC_OK);
+    /* the unstrained box is stretched by 1e-8 to open its contacts (generate.c) */
+    CHECK_REL(ib.L, 0.99 * ia.L / (1.0 + 1e-8), 1e-12);
+    CHECK_REL(ib.fraction, ia.fraction * (1.0 + 1e-8) * (1.0 + 1e-8) / (0.99 * 0.99), 1e-12);
+    for (i = 0; i < b.n; ++i)
+        for (j = i + 1; j < b.n; ++j) {
+            const double dx = b.x[2 * j] - b.x[2 * i], dy = b.x[2 * j + 1] - b.x[2 * i + 1];
+            deepest = fmax(deepest, (b.r[i] + b.r[j] - sqrt(dx * dx + dy * dy)) / d.r_min);
+        }
+    CHECK(deepest > 1e-3); /* overlaps of at least 1e-3 R_min somewhere: it carries load */
+    printf("  generate: strain 0.01: volume fraction %.4f -> %.4f, deepest overlap %.2g R_min\n", ia.fraction,
+           ib.fraction, deepest);
+    sbc_packing_free(&a);
+    sbc_packing_free(&b);
+}
+
 void test_generate(void)
 {
+    strained();
     sbc_generate_def d = sbc_generate_def_default();
     sbc_packing a, b;
     sbc_generate_info ia, ib;

@@ -27,6 +27,8 @@ typedef struct sbc_generate_def {
     double r_min;        /* smallest radius, m */
     double polydispersity; /* R_max / R_min, >= 1 (the runner accepts up to 10) */
     unsigned long seed;  /* random seed; the same seed gives the same packing */
+    double strain;       /* > 0: the jammed box is compressed by this linear strain
+                            and relaxed again, so that the packing carries load; 0: touching, free of force */
 } sbc_generate_def;
 
 /* The paper's: n0 = 200, R_min = 0.67 mm, polydispersity 2, seed 1. */

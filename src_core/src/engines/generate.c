@@ -18,6 +18,7 @@ sbc_generate_def sbc_generate_def_default(void)
     d.r_min = 0.67e-3;
     d.polydispersity = 2.0;
     d.seed = 1;
+    d.strain = 0.0;
     return d;
 }
 
@@ -177,7 +178,18 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
        1e-8 opens them (gaps below 1e-7 R_min), so that the packing is free of
        force: touching, not loaded. A loaded start would leave rattlers ringing
        in an energy Ep ~ 1e-20 kn R^2 that no relaxation criterion can resolve. */
-    scale_box(&keep, keep.L * (1.0 + 1e-8));
+    if (def->strain > 0.0) {
+        /* a load-bearing packing: the jammed box compressed by `strain` and its
+           overlaps relaxed to force balance (FIRE on the unit-stiffness forces) */
+        memcpy(b.x, keep.x, sizeof(double) * 2 * (size_t)n);
+        b.L = keep.L;
+        scale_box(&b, b.L * (1.0 - def->strain));
+        relax(&b, ftol);
+        memcpy(keep.x, b.x, sizeof(double) * 2 * (size_t)n);
+        keep.L = b.L;
+    } else {
+        scale_box(&keep, keep.L * (1.0 + 1e-8));
+    }
     /* reconstruction: particle `corner` at the origin, copies across the edges */
     cap = 4 * n;
     p->x = malloc(sizeof(double) * 2 * (size_t)cap);

@@ -11,12 +11,18 @@
 /* generate periodic n0 N rmin R polydispersity PD seed S */
 sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
 {
-    static const char usage[] = "generate periodic n0 N rmin R polydispersity PD seed S";
+    static const char usage[] = "generate periodic n0 N rmin R polydispersity PD seed S [strain E]";
     sbc_generate_def def = sbc_generate_def_default();
     sbc_generate_info info;
     long n, seed;
-    sbc_status st = sbc_script_expect_count(nw, w, 10, usage, err);
+    sbc_status st = sbc_script_expect_count(nw == 12 ? 10 : nw, w, 10, usage, err);
     if (st != SBC_OK) return st;
+    if (nw == 12) {
+        if ((st = sbc_script_expect_key("generate", w[10], "strain", usage, err)) != SBC_OK) return st;
+        if (sbc_parse_real(w[11], "strain", &def.strain, NULL) != SBC_OK || !(def.strain >= 0.0 && def.strain <= 0.05))
+            return sbc_fail(err, SBC_ERR_INPUT, "generate: strain '%s' is not valid (expected a real from 0 to 0.05, the "
+                            "linear compression of the jammed box)", w[11]);
+    }
     if (strcmp(w[1], "periodic") != 0)
         return sbc_fail(err, SBC_ERR_INPUT, "generate: style '%s' is not known (expected 'periodic')", w[1]);
     if ((st = sbc_script_expect_key("generate", w[2], "n0", usage, err)) != SBC_OK) return st;
