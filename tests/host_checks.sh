@@ -166,6 +166,24 @@ lattice_checks() {
 # restart_check: a run split by write_restart (TMP/part1.in) and read_restart
 # (TMP/part2.in) writes the same CSV as the uninterrupted run (TMP/full.in),
 # byte for byte; part2 with another F is refused (decks from restart_decks)
+# corrupt_restart FILE WHICH VALUE: overwrite one double of fix servo_bc's
+# restart block (found by its marker, fix_servo_bc.cpp RESTART_MAGIC): WHICH
+# is an offset from the marker, or corner (the frame's first corner index),
+# mass (the first frame mass), last (the block's last value). perl-base is in
+# every Debian.
+corrupt_restart() {
+  perl -e '
+    my ($file, $which, $value) = @ARGV;
+    open(my $f, "+<", $file) or exit 1; binmode $f; local $/; my $d = <$f>;
+    my $at = index($d, pack("d", 8.020001e7)); exit 1 if $at < 0;
+    my $get = sub { unpack("d", substr($d, $at + 8 * $_[0], 8)) };
+    my $nf = $get->(2), $q = $get->(3);
+    my %offset = (corner => 3 + 1 + 8 * $q, mass => 3 + $nf + $q, last => $get->(1) - 1);
+    my $k = exists $offset{$which} ? $offset{$which} : $which;
+    substr($d, $at + 8 * $k, 8) = pack("d", $value eq "nan" ? 9**9**9 / 9**9**9 : $value);
+    seek($f, 0, 0); print $f $d; close $f;' "$1" "$2" "$3"
+}
+
 restart_check() {
   run_deck 1 full.in "$TMP/full.csv" "$TMP/full.log" || { echo "$HOST full run failed:"; tail -3 "$TMP/full.log"; }
   run_deck 1 part1.in "$TMP/split.csv" "$TMP/part1.log" && run_deck 1 part2.in "$TMP/split.csv" "$TMP/part2.log"
@@ -174,6 +192,22 @@ restart_check() {
   else
     no "restart:"; tail -3 "$TMP/part2.log"; diff "$TMP/full.csv" "$TMP/split.csv" | head -5
   fi
+  # corrupted restart files (sbc/saved.h): each value checked, named, never a crash
+  local what k v expect
+  for what in "length:1:1e300:'length'" "frame length:2:-5:'frame length'" "corner:corner:1e9:'corner'" \
+              "mass:mass:nan:'frame mass'" "FIRE:last:-1:'FIRE steps'"; do
+    IFS=: read -r label k v expect <<< "$what"
+    cp "$TMP/half.restart" "$TMP/bad.restart"
+    corrupt_restart "$TMP/bad.restart" "$k" "$v" || { no "restart: cannot find the fix's block in the file"; continue; }
+    sed "s|$TMP/half.restart|$TMP/bad.restart|" "$TMP/part2.in" > "$TMP/part2_corrupt.in"
+    run_deck 1 part2_corrupt.in "$TMP/corrupt.csv" "$TMP/corrupt.log"
+    local rc=$?
+    if [ $rc -ne 0 ] && [ $rc -lt 124 ] && grep -q "ERROR.*Fix servo_bc: .*$expect" "$TMP/corrupt.log"; then
+      ok "restart refuses a corrupted $label by name"
+    else
+      no "restart with a corrupted $label (exit $rc):"; grep -m1 ERROR "$TMP/corrupt.log" || tail -2 "$TMP/corrupt.log"
+    fi
+  done
   sed "s/servo_bc P F 0.999 -0.01/servo_bc P F 0.999 -0.02/" "$TMP/part2.in" > "$TMP/part2_bad.in"
   run_deck 1 part2_bad.in "$TMP/bad3.csv" "$TMP/bad3.log"
   if [ $? -ne 0 ] && grep -q "ERROR: Fix servo_bc: restart: keyword 'F': F12" "$TMP/bad3.log"; then
