@@ -91,17 +91,22 @@ same_csvs() {
   fi
 }
 
-# refuses LABEL SED-EXPRESSION EXPECTED: the edited deck ends in
-# "ERROR: Fix servo_bc" with the expected text and a non-zero exit, never a crash
-refuses() {
-  deck_with "$2" "$TMP/bad.in"
-  run_deck 1 bad.in "$TMP/bad.csv" "$TMP/bad.log"
+# refused_deck LABEL DECK EXPECTED: the deck (in TMP) ends in "ERROR...Fix
+# servo_bc" with the expected text and a non-zero exit, never a crash
+refused_deck() {
+  run_deck 1 "$2" "$TMP/bad.csv" "$TMP/bad.log"
   local rc=$?
-  if [ $rc -ne 0 ] && [ $rc -lt 124 ] && grep -q "ERROR: Fix servo_bc.*$3" "$TMP/bad.log"; then
+  if [ $rc -ne 0 ] && [ $rc -lt 124 ] && grep -q "ERROR.*Fix servo_bc.*$3" "$TMP/bad.log"; then
     ok "refuses $1"
   else
     no "$1 (exit $rc):"; grep -m1 ERROR "$TMP/bad.log" || tail -2 "$TMP/bad.log"
   fi
+}
+
+# refuses LABEL SED-EXPRESSION EXPECTED: the lattice deck so edited is refused
+refuses() {
+  deck_with "$2" "$TMP/bad.in"
+  refused_deck "$1" bad.in "$3"
 }
 
 # the checks every LAMMPS-family host passes on DECK
@@ -200,13 +205,7 @@ restart_check() {
     cp "$TMP/half.restart" "$TMP/bad.restart"
     corrupt_restart "$TMP/bad.restart" "$k" "$v" || { no "restart: cannot find the fix's block in the file"; continue; }
     sed "s|$TMP/half.restart|$TMP/bad.restart|" "$TMP/part2.in" > "$TMP/part2_corrupt.in"
-    run_deck 1 part2_corrupt.in "$TMP/corrupt.csv" "$TMP/corrupt.log"
-    local rc=$?
-    if [ $rc -ne 0 ] && [ $rc -lt 124 ] && grep -q "ERROR.*Fix servo_bc: .*$expect" "$TMP/corrupt.log"; then
-      ok "restart refuses a corrupted $label by name"
-    else
-      no "restart with a corrupted $label (exit $rc):"; grep -m1 ERROR "$TMP/corrupt.log" || tail -2 "$TMP/corrupt.log"
-    fi
+    refused_deck "a restart file with a corrupted $label, by name" part2_corrupt.in "$expect"
   done
   sed "s/servo_bc P F 0.999 -0.01/servo_bc P F 0.999 -0.02/" "$TMP/part2.in" > "$TMP/part2_bad.in"
   run_deck 1 part2_bad.in "$TMP/bad3.csv" "$TMP/bad3.log"
