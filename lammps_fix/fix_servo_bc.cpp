@@ -42,7 +42,7 @@ const double RESTART_MAGIC = 8.020001e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), frame_still(0), any_free(1), since_check(0)
+    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
