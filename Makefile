@@ -8,6 +8,7 @@
 #   make yade     the YADE engine's library (build/libservo_bc.so) and the Debian YADE package
 #   make compare CASE=FILE.sbc   one case on every engine, report in out/compare/ (docs/cross-host.md)
 #   make bench    benchmarks (prints figures; LAMMPS side when installed)
+#   make fuzz     libFuzzer campaigns over the core's input surfaces (FUZZ_RUNS per harness; docs/reliability.md)
 
 CC      ?= cc
 CSTD     = -std=c11 -Wall -Wextra -pedantic -Werror
@@ -24,9 +25,15 @@ CORE_HDR = $(wildcard src_core/include/sbc/*.h src_core/src/*/*.h)
 CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 TEST_HDR = $(wildcard tests/*.h)
+# fuzz harnesses (fuzz/, docs/reliability.md)
+FUZZ_NAMES  = settings packing script host restart
+FUZZ_COMMON = fuzz/fuzz.h fuzz/private_folder.c fuzz/drive_controller.c fuzz/restart_case.h
+FUZZ_REPLAY = $(FUZZ_NAMES:%=$(B)/fuzz/%_replay)
+FUZZ_RUNS  ?= 1000000
+FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src
 
 .PHONY: all demo compare check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
-  check-yade lammps liggghts \
+  check-yade lammps liggghts fuzz \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
@@ -71,8 +78,36 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	bash tests/path_error.sh
 	bash tests/stability.sh $(B)
 
-check-sanitize: $(B)/run_tests_san $(B)/servo-bc $(B)/servo-bc-plot
+check-sanitize: $(B)/run_tests_san $(B)/servo-bc $(B)/servo-bc-plot $(FUZZ_REPLAY) $(B)/fuzz/corpus/restart/seed.bin
 	ASAN_OPTIONS=detect_leaks=1 $(B)/run_tests_san $(B)/servo-bc
+	bash tests/reliability.sh $(B)
+
+# Fuzz harnesses (fuzz/): each surface replayed under ASan + UBSan with gcc in
+# make check (fuzz/corpus/NAME and the reproducers in tests/reliability/), and
+# run as libFuzzer campaigns by make fuzz (clang).
+
+$(B)/fuzz/%_replay: fuzz/fuzz_%.c fuzz/replay.c $(FUZZ_COMMON) $(CORE_SRC) $(CORE_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(FUZZ_FLAGS) -Wall -Wextra -Werror -fsanitize=address,undefined -fno-sanitize-recover=all -o $@ \
+	  $< fuzz/replay.c fuzz/private_folder.c fuzz/drive_controller.c $(CORE_SRC) $(LDLIBS)
+
+$(B)/fuzz/%_fuzzer: fuzz/fuzz_%.c $(FUZZ_COMMON) $(CORE_SRC) $(CORE_HDR)
+	@bash scripts/install-deps.sh fuzz
+	@mkdir -p $(@D)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -o $@ \
+	  $< fuzz/private_folder.c fuzz/drive_controller.c $(CORE_SRC) $(LDLIBS)
+
+$(B)/fuzz/restart_seed: fuzz/restart_seed.c fuzz/restart_case.h $(B)/libservo_bc.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
+
+# a valid restart input of this version, beside the committed corpus
+$(B)/fuzz/corpus/restart/seed.bin: $(B)/fuzz/restart_seed
+	@mkdir -p $(@D)
+	$(B)/fuzz/restart_seed $@
+
+fuzz: $(FUZZ_NAMES:%=$(B)/fuzz/%_fuzzer) $(B)/fuzz/corpus/restart/seed.bin
+	bash fuzz/campaign.sh $(B)/fuzz $(FUZZ_RUNS) $(FUZZ_NAMES)
 
 check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect -q \

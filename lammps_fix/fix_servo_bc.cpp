@@ -42,7 +42,7 @@ const double RESTART_MAGIC = 8.020001e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), theta_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0)
+    Fix(lmp, narg, arg), ctl(nullptr), per_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
@@ -64,10 +64,15 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   restart_peratom = 1;
 
+  // per-atom outputs for dumps (f_ID[1] frame flag, f_ID[2] accumulated rotation, rad)
+  peratom_flag = 1;
+  size_peratom_cols = 2;
+  peratom_freq = 1;
+
   grow_arrays(atom->nmax);
   atom->add_callback(CALLBACK_GROW);
   atom->add_callback(CALLBACK_RESTART);
-  for (int i = 0; i < atom->nlocal; i++) theta_atom[i] = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) per_atom[i][0] = per_atom[i][1] = 0.0;
 
   // after read_restart, the groups ID_frame and ID_interior come back with the
   // atoms; the frame then comes from this fix's restart data (restart()), since
@@ -86,7 +91,7 @@ FixServoBC::~FixServoBC()
 {
   atom->delete_callback(id, CALLBACK_GROW);
   atom->delete_callback(id, CALLBACK_RESTART);
-  memory->destroy(theta_atom);
+  memory->destroy(per_atom);
   sbc_controller_free(ctl);
   sbc_frame_free(&frame);
   if (csv) fclose(csv);
@@ -197,7 +202,9 @@ void FixServoBC::init()
     if (lightest.mass < 1e300 &&
         sbc_time_step_check(update->dt, law.kn, lightest.mass, (long) id_lightest, settings.max_relax_steps, &err) !=
             SBC_OK)
-      fail(std::string(err.message) + " (particle = atom ID; discs need a disc's mass: 'set mass', not 'set density')");
+      fail(std::string(err.message) + (strstr(err.message, "particle")
+                                            ? " (particle = atom ID; discs need a disc's mass: 'set mass', not 'set density')"
+                                            : ""));
   }
   {    // every interior atom is integrated by some fix (else the servo waits for ever)
     int orphans = 0, all = 0;
@@ -257,6 +264,7 @@ void FixServoBC::init()
 void FixServoBC::setup(int)
 {
   run_start = update->ntimestep;
+  for (int i = 0; i < atom->nlocal; i++) per_atom[i][0] = (atom->mask[i] & frame_bit) ? 1.0 : 0.0;
   post_force(0);
 }
 
@@ -302,10 +310,10 @@ void FixServoBC::initial_integrate(int)
       double m = torque[i][2], w = omega[i][2];
       if (settings.damping) m -= settings.beta * std::fabs(m) * ((w > 0.0) - (w < 0.0));
       omega[i][2] = w + dt * m / (servo_bc_host::inertia * atom->rmass[i] * atom->radius[i] * atom->radius[i]);
-      theta_atom[i] += dt * omega[i][2];
+      per_atom[i][1] += dt * omega[i][2];
     } else {
-      omega[i][2] = (cmd.theta[q] - theta_atom[i]) / dt;
-      theta_atom[i] = cmd.theta[q];
+      omega[i][2] = (cmd.theta[q] - per_atom[i][1]) / dt;
+      per_atom[i][1] = cmd.theta[q];
     }
   }
 }
@@ -368,7 +376,7 @@ void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2
     // (v^(n+1/2) = v^(n-1/2) + dt f/m), as the embedded engine measures them;
     // one division: 1/m = I/(m I), 1/I = m/(m I)
     const double vx = vx0 + fi[0] * I * inv, vy = vy0 + fi[1] * I * inv, w = w0 + ti[2] * m * inv;
-    theta_atom[i] += turn * w;
+    per_atom[i][1] += turn * w;
     // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
     if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) ek += 0.5 * m * (vx * vx + vy * vy) + 0.5 * I * w * w;
   }
@@ -438,9 +446,9 @@ void FixServoBC::frame_pass()
       buf[2 * Q + 2 * q] = f[i][0];
       buf[2 * Q + 2 * q + 1] = f[i][1];
       buf[4 * Q + q] = torque[i][2];
-      buf[5 * Q + q] = theta_atom[i];
+      buf[5 * Q + q] = per_atom[i][1];
     }
-    rot += std::fabs(theta_atom[i]);
+    rot += std::fabs(per_atom[i][1]);
     npart += 1.0;
   }
   buf[6 * Q] = rot;
@@ -632,7 +640,7 @@ void FixServoBC::restart(char *raw)
 int FixServoBC::pack_restart(int i, double *out)
 {
   out[0] = 2;
-  out[1] = theta_atom[i];
+  out[1] = per_atom[i][1];
   return 2;
 }
 
@@ -642,7 +650,7 @@ void FixServoBC::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   m++;
-  theta_atom[nlocal] = extra[nlocal][m];
+  per_atom[nlocal][1] = extra[nlocal][m];
 }
 
 int FixServoBC::size_restart(int)
@@ -657,24 +665,28 @@ int FixServoBC::maxsize_restart()
 
 void FixServoBC::grow_arrays(int nmax)
 {
-  memory->grow(theta_atom, nmax, "servo_bc:theta_atom");
+  memory->grow(per_atom, nmax, 2, "servo_bc:per_atom");
+  array_atom = per_atom;
 }
 
 void FixServoBC::copy_arrays(int i, int j, int)
 {
-  theta_atom[j] = theta_atom[i];
+  per_atom[j][0] = per_atom[i][0];
+  per_atom[j][1] = per_atom[i][1];
 }
 
 int FixServoBC::pack_exchange(int i, double *out)
 {
-  out[0] = theta_atom[i];
-  return 1;
+  out[0] = per_atom[i][0];
+  out[1] = per_atom[i][1];
+  return 2;
 }
 
 int FixServoBC::unpack_exchange(int nlocal, double *in)
 {
-  theta_atom[nlocal] = in[0];
-  return 1;
+  per_atom[nlocal][0] = in[0];
+  per_atom[nlocal][1] = in[1];
+  return 2;
 }
 
 /* every error of this fix: "Fix servo_bc: " and the message, on all ranks

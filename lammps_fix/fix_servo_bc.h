@@ -72,7 +72,7 @@ class FixServoBC : public Fix {
   std::vector<double> frame_mass;  // [Q] kg
   std::vector<double> buf, sum;    // reduction buffers
   std::unordered_map<tagint, int> slot;  // atom ID -> frame position, built with the frame
-  double *theta_atom;              // per-atom accumulated rotation, rad
+  double **per_atom;               // per atom: frame flag (1 frame, 0 other), accumulated rotation (rad)
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
   servo_bc_host::ContactLaw law;   // kn, kt, shear history of the pair style
   FILE *csv;

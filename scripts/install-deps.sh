@@ -5,6 +5,7 @@
 #   scripts/install-deps.sh lammps-dev   LAMMPS, its headers and an MPI C++ compiler (make lammps)
 #   scripts/install-deps.sh liggghts-dev   LIGGGHTS, its headers and an MPI C++ compiler (make liggghts)
 #   scripts/install-deps.sh yade     the Debian YADE package (make yade, make check)
+#   scripts/install-deps.sh fuzz     clang with libFuzzer (make fuzz)
 # Already-installed tools are left alone; without root or apt-get it only reports.
 set -euo pipefail
 need=()
@@ -30,10 +31,13 @@ for what in "$@"; do
       command -v mpicxx >/dev/null || need+=(libopenmpi-dev openmpi-bin)
       command -v g++ >/dev/null || need+=(g++)
       ;;
+    fuzz)
+      command -v clang >/dev/null || need+=(clang)
+      ;;
     yade)
       command -v yade >/dev/null || need+=(yade python3-yade)
       ;;
-    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev, liggghts-dev or yade)" >&2; exit 2 ;;
+    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev, liggghts-dev, yade or fuzz)" >&2; exit 2 ;;
   esac
 done
 [ ${#need[@]} -eq 0 ] && exit 0

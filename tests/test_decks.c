@@ -124,6 +124,6 @@ void test_decks(void)
     CHECK(sbc_script_decks_file(path, dir, NULL, &err) == SBC_ERR_INPUT && strstr(err.message, "case_cohesive.sbc:7") &&
           strstr(err.message, "'contact cohesive' has no counterpart"));
     snprintf(path, sizeof path, "%s/case_periodic.sbc", test_tmpdir);
-    CHECK(sbc_script_decks_file(path, "/nonexistent/folder", NULL, &err) == SBC_ERR_IO &&
-          strstr(err.message, "cannot open '/nonexistent/folder/packing.txt'"));
+    CHECK(sbc_script_decks_file(path, "/dev/null/folder", NULL, &err) == SBC_ERR_IO &&
+          strstr(err.message, "cannot open '/dev/null/folder/packing.txt'"));
 }

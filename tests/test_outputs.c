@@ -4,6 +4,7 @@
 #include "csv_read.h"
 #include "tests.h"
 
+#include "sbc/plot.h"
 #include "sbc/script.h"
 
 #include <stdio.h>
@@ -17,8 +18,9 @@ void test_outputs(void)
     static double rows[16][CSV_COLS];
     sbc_error err;
     int n;
-    snprintf(csv, sizeof csv, "%s/outputs.csv", test_tmpdir);
-    snprintf(prefix, sizeof prefix, "%s/outputs", test_tmpdir);
+    /* outputs in folders that do not exist yet: created (as mkdir -p) */
+    snprintf(csv, sizeof csv, "%s/new/folder/outputs.csv", test_tmpdir);
+    snprintf(prefix, sizeof prefix, "%s/vtk/outputs", test_tmpdir);
     snprintf(svg, sizeof svg, "%s/outputs.svg", test_tmpdir);
     snprintf(script, sizeof script,
              "dimension 2\nlattice square 4 4 spacing 2e-3 radius 1.02e-3\n"
@@ -26,6 +28,11 @@ void test_outputs(void)
              "servo_bc D F 0.99 -0.02 -0.02 0.99 increments 4 file %s\n"
              "vtk 2 %s\nplot %s\nrun\n",
              csv, prefix, svg);
+    remove(csv);
+    remove(svg);
+    /* --check reads every command and writes nothing */
+    CHECK(sbc_script_check_string(script, "outputs", NULL, &err) == SBC_OK);
+    CHECK(!file_contains(csv, "F12") && !file_contains(svg, "svg"));
     CHECK(sbc_script_run_string(script, "outputs", NULL, &err) == SBC_OK);
     n = csv_read(csv, rows, 16);
     CHECK(n == 5); /* increments 0..4, all fields finite */
@@ -41,6 +48,17 @@ void test_outputs(void)
     CHECK(file_contains(svg, "<polyline"));
     CHECK(file_contains(svg, "<circle")); /* 5 points: a dot on each (SBC_PLOT_MARKERS) */
     CHECK(!file_contains(svg, "nan"));
+    /* F12 < 0: drawn as the paper does, -sigma~ (dimensionless, t = 1 m) against -F12, left to right */
+    CHECK(file_contains(svg, ">-F12 (-)</text>") && file_contains(svg, ">-sigma~ (-)</text>"));
+    /* the legend avoids the curves: a curve through the top left corner moves it to the top right */
+    {
+        static const double x[4] = {0.0, 0.05, 0.1, 1.0}, y[4] = {1.0, 0.98, 0.96, 0.0};
+        sbc_series curve = {"curve", 4, x, y};
+        snprintf(path, sizeof path, "%s/legend.svg", test_tmpdir);
+        CHECK(sbc_plot_svg(path, "legend", "x", "y", 1, &curve, &err) == SBC_OK);
+        CHECK(!file_contains(path, "<rect x=\"98\" y=\"46\" width=\"300\"") &&
+              file_contains(path, "width=\"300\""));
+    }
     /* servo-bc-plot overlays columns of result files (built beside the runner) */
     {
         char cmd[4096], tool[600], out[600];
@@ -51,5 +69,8 @@ void test_outputs(void)
         CHECK(file_contains(out, "stroke-dasharray") && file_contains(out, ">two</text>"));
         snprintf(cmd, sizeof cmd, "%s %s T X Y F12 -1 nosuchcolumn 1 %s one 2>/dev/null", tool, out, csv);
         CHECK(system(cmd) != 0);
+        snprintf(cmd, sizeof cmd, "%s --help | grep -q 'usage: servo-bc-plot' && %s --help | grep -q -- '--check'",
+                 tool, test_runner);
+        CHECK(system(cmd) == 0);
     }
 }

@@ -17,6 +17,7 @@ Usage (2D: spheres in z = 0 with blockedDOFs 'zXY'):
     servo.run()          # returns when the path is finished; raises ServoBCError otherwise
 """
 import ctypes
+import time
 import math
 import os
 import sys
@@ -42,6 +43,7 @@ EK, NET_MAX, EP, CONTACT_SUM, CONTACT_COUNT, OVERLAP_SUM, ROTATION_SUM, PARTICLE
 RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED = range(5)   # sbc_event
 RATTLER_SCAN = 1000                     # steps between full scans for contact-free bodies
 CONFINE_EVERY = 10000                   # SBC_CONFINE_EVERY: steps between confinement checks
+PROGRESS_EVERY = 10.0                   # s of wall time between progress lines of a long increment
 FRAME_MASK = 2                          # groupMask bit of the frame bodies load_packing flags
 
 
@@ -69,6 +71,7 @@ def _library():
         'sbc_host_needs': (ctypes.c_uint, [P, pd]),
         'sbc_host_step': (I, [P, pd, pd, pd, pd, pd]),
         'sbc_host_message': (ctypes.c_char_p, [P]),
+        'sbc_host_progress': (None, [P, pd]),
         'sbc_host_command_x': (pd, [P]),
         'sbc_host_command_theta': (pd, [P]),
         'sbc_host_command_free': (ctypes.POINTER(ctypes.c_ubyte), [P]),
@@ -198,8 +201,10 @@ class ServoBC(object):
         self.finished = False
         self.steps = 0
         self._since_check = 0
+        self._started = self._reported = time.time()
         n = len(self.bodies)
         xy, r, m = [], [], []
+        self._check_bodies()
         for i in self.bodies:
             b = O.bodies[i]
             xy += [b.state.pos[0], b.state.pos[1]]
@@ -249,6 +254,22 @@ class ServoBC(object):
         setattr(sys.modules['__main__'], name, self.step)
         self.engine = PyRunner(command='%s()' % name, iterPeriod=1, label='servo_bc_%d' % (len(_instances) - 1))
         self._apply_commands()
+
+    def _check_bodies(self):
+        """Every id names an existing sphere, once."""
+        if not self.bodies:
+            raise ServoBCError('servo_bc: no bodies (expected the ids of the packing\'s spheres)')
+        seen = set()
+        for i in self.bodies:
+            if not isinstance(i, int) or i < 0 or i >= len(O.bodies) or O.bodies[i] is None:
+                raise ServoBCError('servo_bc: body %r does not exist (expected ids of O.bodies, 0 to %d)'
+                                   % (i, len(O.bodies) - 1))
+            if not hasattr(O.bodies[i].shape, 'radius'):
+                raise ServoBCError('servo_bc: body %d is a %s (expected a sphere)'
+                                   % (i, type(O.bodies[i].shape).__name__))
+            if i in seen:
+                raise ServoBCError('servo_bc: body %d is listed twice' % i)
+            seen.add(i)
 
     def _frame_list(self, words):
         w = words.split('#', 1)[0].split()
@@ -429,6 +450,7 @@ class ServoBC(object):
         # confine.h: before a converged increment's row is kept, on failure, every CONFINE_EVERY steps
         if converged or ev == FAILED or self._since_check >= CONFINE_EVERY:
             self._since_check = 0
+            self._report_progress(converged)
             if not self._confined():
                 self._stop(ServoBCError(lib.sbc_host_message(self._h).decode()))
                 return
@@ -446,6 +468,19 @@ class ServoBC(object):
             self._stop(None)
             return
         self._apply_commands(ev in (CORRECTED, INCREMENT))
+
+    def _report_progress(self, converged):
+        """A progress line when an increment has run PROGRESS_EVERY seconds since the last line."""
+        now = time.time()
+        if converged:
+            self._reported = now
+        elif now - self._reported >= PROGRESS_EVERY:
+            self._reported = now
+            p = (ctypes.c_double * 4)()
+            _core().sbc_host_progress(self._h, p)
+            print('servo_bc:   increment %d: servo iteration %d, residuals force %.3e moment %.3e deformation '
+                  '%.3e, step %d, elapsed %.0f s' % (len(self.rows), int(p[0]), p[1], p[2], p[3], self.steps,
+                                                     now - self._started), flush=True)
 
     def _confined(self):
         """The interior bodies against the polygon of the frame's centres (sbc_host_confined);

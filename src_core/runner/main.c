@@ -1,24 +1,42 @@
 /* servo-bc: the embedded runner.
  *   servo-bc SCRIPT              runs the script
+ *   servo-bc --check SCRIPT      checks every command of the script, runs and writes nothing
  *   servo-bc --decks DIR SCRIPT  writes the script's case for every host into DIR */
 #include "sbc/script.h"
 
 #include <stdio.h>
 #include <string.h>
 
+static const char usage[] =
+    "usage: servo-bc SCRIPT              run the script (docs/runner.md)\n"
+    "       servo-bc --check SCRIPT      check every command of the script; run and write nothing\n"
+    "       servo-bc --decks DIR SCRIPT  write the script's case for every host into DIR\n";
+
 int main(int argc, char **argv)
 {
     sbc_error err;
-    const int decks = argc == 4 && strcmp(argv[1], "--decks") == 0;
-    if ((argc != 2 && !decks) || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0) {
-        fprintf(stderr, "usage: servo-bc SCRIPT\n       servo-bc --decks DIR SCRIPT\n");
-        return argc == 2 ? 0 : 2;
+    sbc_status st;
+    if (argc == 2 && (strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0)) {
+        fputs(usage, stdout);
+        return 0;
     }
-    if ((decks ? sbc_script_decks_file(argv[3], argv[2], stdout, &err) : sbc_script_run_file(argv[1], stdout, &err)) !=
-        SBC_OK) {
+    if (argc == 2 && argv[1][0] != '-')
+        st = sbc_script_run_file(argv[1], stdout, &err);
+    else if (argc == 3 && strcmp(argv[1], "--check") == 0)
+        st = sbc_script_check_file(argv[2], stdout, &err);
+    else if (argc == 4 && strcmp(argv[1], "--decks") == 0)
+        st = sbc_script_decks_file(argv[3], argv[2], stdout, &err);
+    else {
+        fprintf(stderr, "ERROR: servo-bc: %s%s%s\n%s", argc < 2 ? "no script" : "unknown arguments starting at '",
+                argc < 2 ? "" : argv[1], argc < 2 ? "" : "'", usage);
+        return 2;
+    }
+    if (st != SBC_OK) {
         fflush(stdout);
         fprintf(stderr, "ERROR: %s\n", err.message);
         return 1;
     }
+    if (argc == 3)
+        printf("check: %s is ready to run\n", argv[2]);
     return 0;
 }

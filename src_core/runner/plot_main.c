@@ -86,9 +86,19 @@ int main(int argc, char **argv)
     sbc_error err;
     double xs, ys;
     int k, ns, ok = 1;
+    static const char usage[] =
+        "usage: servo-bc-plot OUT.svg TITLE XLABEL YLABEL XCOL XSCALE YCOL YSCALE FILE LABEL [FILE LABEL ...]\n"
+        "  Draws YSCALE * YCOL against XSCALE * XCOL of every servo_bc CSV FILE, one curve named LABEL each,\n"
+        "  into the SVG chart OUT.svg. XCOL, YCOL: column names of the CSV header (F12, sigma11, P12, ...);\n"
+        "  the scales turn them into what the labels say, e.g.\n"
+        "    servo-bc-plot s.svg '(P)' 'F12 (-)' 'sigma12 / kn (-)' F12 1 sigma12 1e-4 P.csv embedded\n";
+    if (argc == 2 && (strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0)) {
+        fputs(usage, stdout);
+        return 0;
+    }
     if (argc < 11 || (argc - 9) % 2 != 0) {
-        fprintf(stderr, "usage: servo-bc-plot OUT.svg TITLE XLABEL YLABEL XCOL XSCALE YCOL YSCALE FILE LABEL "
-                        "[FILE LABEL ...]\n");
+        fprintf(stderr, "ERROR: servo-bc-plot: expected 10 arguments or more in pairs after the 8th, got %d\n%s",
+                argc - 1, usage);
         return 2;
     }
     if (sbc_parse_real(argv[6], "XSCALE", &xs, &err) != SBC_OK || sbc_parse_real(argv[8], "YSCALE", &ys, &err) != SBC_OK) {

@@ -34,6 +34,18 @@ neigh_modify    delay 0 every 1 check yes
 LMP
 restart_decks "$TMP/restart_head.in"
 restart_check
+restart_friction_check 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 2e3 0 0 0.4 0/' \
+  "$TMP/restart_head.in"
+# per-atom outputs for dumps: f_ID[1] frame flag, f_ID[2] accumulated rotation (rad)
+printf 'write_dump all custom %s id f_servo[1] f_servo[2] modify sort id\n' "$TMP/atoms.txt" > "$TMP/dump_tail.in"
+cat "$DECK" "$TMP/dump_tail.in" > "$TMP/dump.in"
+run_deck 1 dump.in "$TMP/dump.csv" "$TMP/dump.log"
+flags=$(awk 'NR > 9 { n++; f += $2; if ($3 != $3 + 0) bad++ } END { printf "%d %d %d", n, f, bad }' "$TMP/atoms.txt" 2>/dev/null)
+if [ "$flags" = "25 16 0" ]; then
+  ok "dump: f_servo[1] flags the 16 frame atoms of 25, f_servo[2] holds a number on every atom"
+else
+  no "dump of the per-atom outputs: atoms, frame flags, non-numbers = ${flags:-none}"; grep -m1 ERROR "$TMP/dump.log"
+fi
 # the plugin route: lammpsplugin_init called by a driver that registers like `plugin load`
 if [ -n "$drv_arg" ] && [ -n "$so_arg" ]; then
   drv=$(cd "$(dirname "$drv_arg")" && pwd)/$(basename "$drv_arg")

@@ -93,13 +93,36 @@ def refused(words, expect, **keywords):
         check(expect in str(e), "refuses '%s': %s" % (words, e))
 
 
-refused('D F 1 2 2 1', "keyword 'F': det F = -3 is not positive")
-refused('D F 1 0 0 1 foo 3', "foo")
-refused('Q', "'Q'")
+# the bad words every host refuses (tests/bad_words.txt: words, a tab, the expected text)
+with open(os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), '..', 'bad_words.txt')) as f:
+    for line in f:
+        if line.strip() and not line.startswith('#'):
+            words, expect = line.rstrip('\n').split('\t')
+            refused(words, expect)
 refused('D', 'increments', increments=0)
 refused('D damping 0.7 0.5', "alpha 0.7 and beta 0.5 differ")
 refused('D frame boundary', "'boundary' is not a YADE group mask")
 refused('D frame 64', "keyword 'frame': '64' names no particle")
+
+# the arguments YADE gives: body ids, time step, stiffness
+def refused_call(label, expect, ids_of, dt=1e-5, kn=1e4):
+    servo_bc.O.reset()
+    ids, _ = servo_bc.load_packing(packing, 2e3, 1e4, 2e3, 0.4)
+    try:
+        servo_bc.ServoBC('D', ids_of(ids), dt, kn)
+        check(False, 'refuses %s (accepted)' % label)
+    except servo_bc.ServoBCError as e:
+        check(expect in str(e), 'refuses %s: %s' % (label, e))
+
+
+refused_call('a body that does not exist', 'body 999 does not exist', lambda ids: ids + [999])
+refused_call('a body listed twice', 'body %d is listed twice' % 3, lambda ids: ids + [3])
+refused_call('no bodies', 'no bodies', lambda ids: [])
+refused_call('a box among the spheres', 'is a Box (expected a sphere)',
+             lambda ids: ids + [servo_bc.O.bodies.append(servo_bc.utils.box((0, 0, 1), (1e-3, 1e-3, 1e-3)))])
+refused_call('a zero time step', 'time step 0 s', lambda ids: ids, dt=0.0)
+refused_call('a NaN time step', 'time step nan s', lambda ids: ids, dt=float('nan'))
+refused_call('a negative stiffness', 'kn', lambda ids: ids, kn=-1.0)
 
 # YADE's own sphere mass on one body (4/3 pi R^3 rho, 800 times lighter than the disc):
 # the time step is checked against its critical step before the run, naming it

@@ -22,6 +22,8 @@
 
 #include "sbc/packing.h"
 
+#include <stdio.h>
+
 typedef struct sbc_generate_def {
     int n;               /* particles before the reconstruction, n0 */
     double r_min;        /* smallest radius, m */
@@ -29,7 +31,10 @@ typedef struct sbc_generate_def {
     unsigned long seed;  /* random seed; the same seed gives the same packing */
     double strain;       /* > 0: the jammed box is compressed by this linear strain
                             and relaxed again, so that the packing carries load; 0: touching, free of force */
+    FILE *log;           /* progress lines every SBC_GENERATE_PROGRESS seconds of a long generation (may be NULL) */
 } sbc_generate_def;
+
+#define SBC_GENERATE_PROGRESS 10.0
 
 /* The paper's: n0 = 200, R_min = 0.67 mm, polydispersity 2, seed 1. */
 sbc_generate_def sbc_generate_def_default(void);

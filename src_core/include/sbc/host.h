@@ -70,6 +70,11 @@ int sbc_host_step(sbc_host *h, const double *measures, const double *x, const do
                   const double *torque);
 const char *sbc_host_message(const sbc_host *h);
 
+/* Progress within the increment under way (sbc_controller_progress), for the
+ * progress lines of long increments: out [4] = servo iteration, residual
+ * norms of force, moment and deformation. */
+void sbc_host_progress(const sbc_host *h, double *out);
+
 /* confine.h for n interior particles (ids [n] for the message, centres xy
  * [2n] in m, velocities vxy [2n] in m/s) against the frame's present centres
  * frame_x [2Q] (frame order). Call it after SBC_EVENT_INCREMENT and

@@ -2,6 +2,8 @@
 #ifndef SBC_PACKING_H
 #define SBC_PACKING_H
 
+#include <stdio.h>
+
 #include "sbc/status.h"
 
 typedef struct sbc_packing {
@@ -21,6 +23,8 @@ sbc_status sbc_packing_lattice_square(sbc_packing *p, int nx, int ny, double spa
  * An optional line "box XLO XHI YLO YHI" (m) declares a geometrically
  * periodic packing and its square (written by sbc_packing_write_text). */
 sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err);
+/* The same from an open stream; path names it in messages. */
+sbc_status sbc_packing_read_stream(sbc_packing *p, FILE *fp, const char *path, sbc_error *err);
 
 /* The most particles a packing may hold (read, lattice): 10 million, where
  * sizes in bytes and neighbour-list indices stay far from overflow. */

@@ -28,6 +28,12 @@ sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, 
 /* Reads and runs the script file at path. */
 sbc_status sbc_script_run_file(const char *path, FILE *log, sbc_error *err);
 
+/* Checks the script as servo-bc --check does: every command is read and
+ * checked (packings built, the frame detected, the controller created, the
+ * time step and the output names checked) but nothing is run or written. */
+sbc_status sbc_script_check_string(const char *text, const char *name, FILE *log, sbc_error *err);
+sbc_status sbc_script_check_file(const char *path, FILE *log, sbc_error *err);
+
 /* Reads the script file at path and, at its 'run', writes into the existing
  * folder dir the same case for every host instead of running it: the packing
  * (packing.txt, packing.lammps.data, packing.liggghts.data, packing.yade) and

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -19,6 +20,7 @@ sbc_generate_def sbc_generate_def_default(void)
     d.polydispersity = 2.0;
     d.seed = 1;
     d.strain = 0.0;
+    d.log = NULL;
     return d;
 }
 
@@ -126,6 +128,7 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     box b, keep;
     double area = 0.0, shrink = 0.01, ftol = 1e-12 * def->r_min, jam = 1e-10 * def->r_min, ecut;
     int k, n = def->n, corner, cap, m = 0;
+    struct timespec t0, shown;
     memset(p, 0, sizeof *p);
     if (n < 4 || n > 100000)
         return sbc_fail(err, SBC_ERR_INPUT, "generate: %d particles (expected 4 to 100000)", n);
@@ -163,7 +166,21 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     memcpy(keep.x, b.x, sizeof(double) * 2 * (size_t)n);
     keep.L = b.L;
     /* shrink until jammed; halve the step at each jam */
+    timespec_get(&t0, TIME_UTC);
+    shown = t0;
     while (shrink > 1e-5) {
+        if (def->log) {
+            struct timespec now;
+            timespec_get(&now, TIME_UTC);
+            if ((double)(now.tv_sec - shown.tv_sec) + 1e-9 * (double)(now.tv_nsec - shown.tv_nsec) >=
+                SBC_GENERATE_PROGRESS) {
+                shown = now;
+                fprintf(def->log, "  generate: jamming %d discs, box %.6g m, packing fraction %.4f, step %.1e, "
+                        "elapsed %.0f s\n", n, b.L, area / (b.L * b.L), shrink,
+                        (double)(now.tv_sec - t0.tv_sec) + 1e-9 * (double)(now.tv_nsec - t0.tv_nsec));
+                fflush(def->log);
+            }
+        }
         scale_box(&b, b.L * (1.0 - shrink));
         if (relax(&b, ftol) > ecut) {
             memcpy(b.x, keep.x, sizeof(double) * 2 * (size_t)n);

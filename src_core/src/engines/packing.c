@@ -100,12 +100,21 @@ static sbc_status read_line(FILE *fp, char *line, size_t cap, const char *path, 
 sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err)
 {
     FILE *fp = fopen(path, "r");
+    sbc_status st;
+    memset(p, 0, sizeof *p);
+    if (!fp)
+        return sbc_fail(err, SBC_ERR_IO, "read_packing: cannot open '%s'", path);
+    st = sbc_packing_read_stream(p, fp, path, err);
+    fclose(fp);
+    return st;
+}
+
+sbc_status sbc_packing_read_stream(sbc_packing *p, FILE *fp, const char *path, sbc_error *err)
+{
     char line[1024];
     int lineno = 0, cap = 0, end = 0;
     sbc_status st = SBC_OK;
     memset(p, 0, sizeof *p);
-    if (!fp)
-        return sbc_fail(err, SBC_ERR_IO, "read_packing: cannot open '%s'", path);
     while ((st = read_line(fp, line, sizeof line, path, lineno + 1, &end, err)) == SBC_OK && !end) {
         char *tok[3], line_copy[1024];
         const char *names[3] = {"x", "y", "r"};
@@ -152,7 +161,6 @@ sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err)
         p->x[2 * p->n + 1] = v[1];
         p->r[p->n++] = v[2];
     }
-    fclose(fp);
     if (st == SBC_OK && p->n == 0)
         st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s holds no particles", path);
     if (st != SBC_OK)

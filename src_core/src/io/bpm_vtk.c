@@ -1,5 +1,6 @@
 /* servo_bc: VTK snapshot of the 3D bonded particle engine, for ParaView. */
 #include "sbc/bpm_vtk.h"
+#include "sbc/output_file.h"
 
 #include "sbc/bpm_stress.h"
 
@@ -20,7 +21,7 @@ sbc_status sbc_bpm_vtk_write(const char *prefix, const sbc_bpm *e, sbc_error *er
     if (!sigma)
         return sbc_fail(err, SBC_ERR_NOMEM, "vtk: out of memory");
     sbc_bpm_particle_stress(e, sigma, err);
-    fp = fopen(path, "w");
+    fp = sbc_output_open(path);
     if (!fp) {
         free(sigma);
         return sbc_fail(err, SBC_ERR_IO, "vtk: cannot write '%s'", path);

@@ -1,5 +1,6 @@
 /* Contact network picture (Figs. 8 and 12) as a self-contained SVG file. */
 #include "sbc/network.h"
+#include "sbc/output_file.h"
 
 #include <float.h>
 #include <math.h>
@@ -35,7 +36,7 @@ sbc_status sbc_network_svg(const char *path, const char *title, const sbc_engine
             contacts += !b;
         }
     }
-    if (!(fp = fopen(path, "w")))
+    if (!(fp = sbc_output_open(path)))
         return sbc_fail(err, SBC_ERR_IO, "network: cannot open '%s' for writing", path);
     fprintf(fp, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" font-family=\"sans-serif\" "
                 "font-size=\"13\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",

@@ -1,5 +1,6 @@
 /* Packing writers: one packing, read by every host (text, LAMMPS and LIGGGHTS data, YADE). */
 #include "sbc/packing.h"
+#include "sbc/output_file.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,7 +20,7 @@ static sbc_status open_for_writing(FILE **fp, const sbc_packing *p, const char *
 {
     if (p->n < 1)
         return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no particles to write to '%s'", path);
-    if (!(*fp = fopen(path, "w")))
+    if (!(*fp = sbc_output_open(path)))
         return sbc_fail(err, SBC_ERR_IO, "write_packing: cannot open '%s' for writing", path);
     return SBC_OK;
 }

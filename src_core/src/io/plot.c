@@ -1,4 +1,5 @@
 #include "sbc/plot.h"
+#include "sbc/output_file.h"
 
 #include <float.h>
 #include <math.h>
@@ -27,6 +28,36 @@ static void widen(double *lo, double *hi)
     }
 }
 
+/* The legend goes into the corner of the plot area that the fewest curve
+ * points (and midpoints of their segments) fall into. */
+#define LEGEND_W 300.0
+static void legend_corner(const sbc_series *series, int nseries, double xlo, double xhi, double ylo, double yhi,
+                          double *lx, double *ly)
+{
+    const double pw = W - LEFT - RIGHT, ph = H - TOP - BOTTOM, lh = 18.0 * nseries + 8;
+    double best = DBL_MAX;
+    int corner, s, k, h;
+    for (corner = 0; corner < 4; ++corner) {
+        const double x0 = corner % 2 ? LEFT + pw - 8 - LEGEND_W : LEFT + 8,
+                     y0 = corner / 2 ? TOP + ph - 6 - lh : TOP + 6;
+        double hits = 0.0;
+        for (s = 0; s < nseries; ++s)
+            for (k = 0; k < series[s].n; ++k)
+                for (h = 0; h < 2 && (h == 0 || k + 1 < series[s].n); ++h) {
+                    const double x = h ? 0.5 * (series[s].x[k] + series[s].x[k + 1]) : series[s].x[k],
+                                 y = h ? 0.5 * (series[s].y[k] + series[s].y[k + 1]) : series[s].y[k],
+                                 px = LEFT + (x - xlo) / (xhi - xlo) * pw, py = TOP + (yhi - y) / (yhi - ylo) * ph;
+                    hits += isfinite(px) && isfinite(py) && px >= x0 - 4 && px <= x0 + LEGEND_W + 4 && py >= y0 - 4 &&
+                            py <= y0 + lh + 4;
+                }
+        if (hits < best) { /* ties keep the earlier corner: top left, top right, bottom left, bottom right */
+            best = hits;
+            *lx = x0;
+            *ly = y0;
+        }
+    }
+}
+
 sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel, const char *ylabel, int nseries,
                         const sbc_series *series, sbc_error *err)
 {
@@ -34,6 +65,7 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
     static const char *dashes[] = {"", "8 4", "2 3", "8 3 2 3"};
     double xlo = DBL_MAX, xhi = -DBL_MAX, ylo = DBL_MAX, yhi = -DBL_MAX, step, t;
     double pw = W - LEFT - RIGHT, ph = H - TOP - BOTTOM;
+    double lx = LEFT + 8, ly = TOP + 6;
     FILE *fp;
     int k, s;
     for (s = 0; s < nseries; ++s) {
@@ -50,7 +82,7 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
     if (ylo > yhi) ylo = yhi = 0.0;
     widen(&xlo, &xhi);
     widen(&ylo, &yhi);
-    fp = fopen(path, "w");
+    fp = sbc_output_open(path);
     if (!fp)
         return sbc_fail(err, SBC_ERR_IO, "plot: cannot open '%s' for writing", path);
 #define PX(v) (LEFT + ((v) - xlo) / (xhi - xlo) * pw)
@@ -77,8 +109,9 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
     fprintf(fp, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">%s</text>\n", LEFT + pw / 2, H - 14, xlabel);
     fprintf(fp, "<text x=\"18\" y=\"%g\" text-anchor=\"middle\" transform=\"rotate(-90 18 %g)\">%s</text>\n",
             TOP + ph / 2, TOP + ph / 2, ylabel);
-    fprintf(fp, "<rect x=\"%g\" y=\"%g\" width=\"300\" height=\"%g\" fill=\"white\" fill-opacity=\"0.85\" "
-                "stroke=\"#999\"/>\n", LEFT + 8, TOP + 6, 18.0 * nseries + 8);
+    legend_corner(series, nseries, xlo, xhi, ylo, yhi, &lx, &ly);
+    fprintf(fp, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"white\" fill-opacity=\"0.85\" "
+                "stroke=\"#999\"/>\n", lx, ly, LEGEND_W, 18.0 * nseries + 8);
     for (s = 0; s < nseries; ++s) {
         const char *c = colors[s % 6], *dash = dashes[(s / 6) % 4];
         int first = 1;
@@ -98,8 +131,8 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
                             PY(series[s].y[k]), c);
         fprintf(fp, "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"%s\" stroke-width=\"2\" "
                     "stroke-dasharray=\"%s\"/>\n",
-                LEFT + 14, TOP + 16 + 18.0 * s, LEFT + 40, TOP + 16 + 18.0 * s, c, dash);
-        fprintf(fp, "<text x=\"%g\" y=\"%g\">%s</text>\n", LEFT + 46, TOP + 20 + 18.0 * s, series[s].label);
+                lx + 6, ly + 10 + 18.0 * s, lx + 32, ly + 10 + 18.0 * s, c, dash);
+        fprintf(fp, "<text x=\"%g\" y=\"%g\">%s</text>\n", lx + 38, ly + 14 + 18.0 * s, series[s].label);
     }
 #undef PX
 #undef PY

@@ -1,5 +1,6 @@
 /* Rose diagram of contact orientations (paper Fig. 6c) as an SVG file. */
 #include "sbc/plot.h"
+#include "sbc/output_file.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -30,7 +31,7 @@ sbc_status sbc_plot_rose(const char *path, const char *title, int n, const doubl
     }
     for (b = 0; b < bins; ++b)
         if (count[b] > top) top = count[b];
-    if (!(fp = fopen(path, "w"))) {
+    if (!(fp = sbc_output_open(path))) {
         free(count);
         return sbc_fail(err, SBC_ERR_IO, "rose: cannot open '%s' for writing", path);
     }

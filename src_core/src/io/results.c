@@ -1,4 +1,5 @@
 #include "sbc/results.h"
+#include "sbc/output_file.h"
 #include <math.h>
 
 const char sbc_csv_header[] = "increment,F11,F12,F21,F22,P11,P12,P21,P22,sigma11,sigma12,sigma21,sigma22,"
@@ -7,7 +8,7 @@ const char sbc_csv_header[] = "increment,F11,F12,F21,F22,P11,P12,P21,P22,sigma11
 
 sbc_status sbc_csv_open(FILE **fp, const char *path, sbc_error *err)
 {
-    *fp = fopen(path, "w");
+    *fp = sbc_output_open(path);
     if (!*fp)
         return sbc_fail(err, SBC_ERR_IO, "keyword 'file': cannot open '%s' for writing", path);
     fprintf(*fp, "%s\n", sbc_csv_header);

@@ -1,4 +1,5 @@
 #include "sbc/vtk.h"
+#include "sbc/output_file.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -8,7 +9,7 @@ static FILE *open_file(const char *prefix, const char *what, int increment, char
 {
     FILE *fp;
     snprintf(name, len, "%s_%s_%06d.vtk", prefix, what, increment);
-    fp = fopen(name, "w");
+    fp = sbc_output_open(name);
     if (!fp)
         sbc_fail(err, SBC_ERR_IO, "vtk: cannot open '%s' for writing", name);
     return fp;

@@ -198,7 +198,34 @@ typedef struct run_state {
     int nrows, cap;
     int increment_now; /* the increment in progress */
     long since_check;  /* engine steps since the last confinement check */
+    struct timespec start, reported; /* the run's start, the last progress line */
 } run_state;
+
+static double seconds_between(const struct timespec *a, const struct timespec *b)
+{
+    return (double)(b->tv_sec - a->tv_sec) + 1e-9 * (double)(b->tv_nsec - a->tv_nsec);
+}
+
+/* A progress line when an increment has run for SBC_PROGRESS_EVERY seconds
+ * since the last line, so that a long increment is not silent. */
+#define SBC_PROGRESS_EVERY 10.0
+static void report_progress(const script *s, run_state *r)
+{
+    struct timespec now;
+    int iteration;
+    double rf, rm, rd;
+    if (!s->log)
+        return;
+    timespec_get(&now, TIME_UTC);
+    if (seconds_between(&r->reported, &now) < SBC_PROGRESS_EVERY)
+        return;
+    r->reported = now;
+    sbc_controller_progress(r->ctl, &iteration, &rf, &rm, &rd);
+    fprintf(s->log, "  increment %d: servo iteration %d, residuals force %.3e moment %.3e deformation %.3e, "
+            "step %ld, elapsed %.0f s\n", r->increment_now, iteration, rf, rm, rd,
+            sbc_engine_get_view(r->engine).step, seconds_between(&r->start, &now));
+    fflush(s->log);
+}
 
 static void run_free(run_state *r)
 {
@@ -226,15 +253,19 @@ static sbc_status keep_row(run_state *r, const sbc_result *row, sbc_error *err)
     return SBC_OK;
 }
 
-/* sigma~ = sigma R / kn against F12 (paper Sect. 4.1). */
+/* sigma~ = sigma R / (kn t) against F12 (paper Sect. 4.1), with the 2D
+ * stress (N/m) per unit thickness t = 1 m, so that sigma~ is dimensionless.
+ * A path of negative F12 is drawn as the paper draws it, -sigma~ against
+ * -F12, so that the loading runs left to right. */
 static sbc_status write_plot(script *s, run_state *r, sbc_error *err)
 {
-    double *xs, *s11, *s12, rbar = 0.0;
+    double *xs, *s11, *s12, rbar = 0.0, sign;
     sbc_series series[2];
     sbc_status st;
     int k;
     if (!s->plot[0] || r->nrows == 0)
         return SBC_OK;
+    sign = s->settings.F[1] < 0.0 ? -1.0 : 1.0;
     for (k = 0; k < s->packing.n; ++k)
         rbar += s->packing.r[k] / s->packing.n;
     xs = malloc(sizeof(double) * (size_t)r->nrows);
@@ -245,17 +276,18 @@ static sbc_status write_plot(script *s, run_state *r, sbc_error *err)
         return sbc_fail(err, SBC_ERR_NOMEM, "plot: out of memory");
     }
     for (k = 0; k < r->nrows; ++k) {
-        xs[k] = r->rows[k].F[1];
-        s11[k] = r->rows[k].sigma[0] * rbar / s->law.kn;
-        s12[k] = r->rows[k].sigma[1] * rbar / s->law.kn;
+        xs[k] = sign * r->rows[k].F[1];
+        s11[k] = sign * r->rows[k].sigma[0] * rbar / s->law.kn;
+        s12[k] = sign * r->rows[k].sigma[1] * rbar / s->law.kn;
     }
-    series[0].label = "sigma~11 = sigma11 R / kn";
+    series[0].label = sign < 0.0 ? "-sigma~11 = -sigma11 R / (kn t)" : "sigma~11 = sigma11 R / (kn t)";
     series[0].y = s11;
-    series[1].label = "sigma~12 = sigma12 R / kn";
+    series[1].label = sign < 0.0 ? "-sigma~12 = -sigma12 R / (kn t)" : "sigma~12 = sigma12 R / (kn t)";
     series[1].y = s12;
     series[0].n = series[1].n = r->nrows;
     series[0].x = series[1].x = xs;
-    st = sbc_plot_svg(s->plot, "servo_bc: normalized Cauchy stress", "F12", "sigma~ (m)", 2, series, err);
+    st = sbc_plot_svg(s->plot, "servo_bc: normalized Cauchy stress (t = 1 m)", sign < 0.0 ? "-F12 (-)" : "F12 (-)",
+                      sign < 0.0 ? "-sigma~ (-)" : "sigma~ (-)", 2, series, err);
     free(xs); free(s11); free(s12);
     return st;
 }
@@ -284,9 +316,9 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     sbc_status st = SBC_OK;
     sbc_snapshot snap;
     double dtc;
-    struct timespec t0;
-    timespec_get(&t0, TIME_UTC);
     memset(&r, 0, sizeof r);
+    timespec_get(&r.start, TIME_UTC);
+    r.reported = r.start;
     if (!s->have_packing) return sbc_fail(err, SBC_ERR_INPUT, "run: no packing (use 'lattice' or 'read_packing' first)");
     if (!s->have_contact) return sbc_fail(err, SBC_ERR_INPUT, "run: no contact law (use 'contact frictional ...' first)");
     if (!s->have_density) return sbc_fail(err, SBC_ERR_INPUT, "run: no density (use 'density RHO' first)");
@@ -350,11 +382,19 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     }
     if (s->settings.file[0] && ((st = sbc_script_files_check(s, s->settings.file, "servo_bc: keyword 'file':", err)) !=
                                     SBC_OK ||
-                                (st = sbc_csv_open(&r.csv, s->settings.file, err)) != SBC_OK)) {
+                                (!s->check && (st = sbc_csv_open(&r.csv, s->settings.file, err)) != SBC_OK))) {
         run_free(&r);
         return st;
     }
     sbc_script_files_note(s, s->settings.file, "results file");
+    if (s->check) {
+        if (s->log)
+            fprintf(s->log, "check: run of line %d: servo_bc %s, %d particles, frame of %d, %d increments, dt = %g s "
+                    "(critical %g s)\n", s->line, sbc_bc_name(s->settings.bc), s->packing.n, r.frame.n,
+                    sbc_settings_total_increments(&s->settings), s->dt, dtc);
+        run_free(&r);
+        return SBC_OK;
+    }
     if (s->log)
         fprintf(s->log, "servo_bc %s: %d particles, frame of %d, %d increments, dt = %g s (critical %g s)\n",
                 sbc_bc_name(s->settings.bc), s->packing.n, r.frame.n, sbc_settings_total_increments(&s->settings), s->dt, dtc);
@@ -369,6 +409,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         if (ev == SBC_EVENT_FAILED || ++r.since_check == SBC_CONFINE_EVERY) {
             sbc_error esc;
             r.since_check = 0;
+            report_progress(s, &r);
             if (check_confined(&r.frame, r.engine, r.fx, r.increment_now, &esc) != SBC_OK) {
                 *err = esc;
                 st = err->status;
@@ -392,6 +433,8 @@ static sbc_status cmd_run(script *s, sbc_error *err)
                         row->relax_steps, row->hill_mandel);
             if (s->log && s->cohesive)
                 fprintf(s->log, "  bonds intact %d\n", sbc_engine_get_view(r.engine).bond_count);
+            if (s->log) fflush(s->log);
+            timespec_get(&r.reported, TIME_UTC);
             if (ev == SBC_EVENT_FINISHED) break;
         }
         cmd = sbc_controller_commands(r.ctl);
@@ -420,7 +463,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
                 "servo_bc: finished %d increments: %ld steps, servo iterations per increment mean %.2f max %ld, "
                 "wall %.2f s\n",
                 r.nrows, sbc_engine_get_view(r.engine).step, r.nrows ? (double)iters / r.nrows : 0.0, imax,
-                (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+                seconds_between(&r.start, &t1));
         if (s->settings.file[0]) fprintf(s->log, "  results: %s\n", s->settings.file);
         if (s->vtk_every) fprintf(s->log, "  vtk:     %s_particles_*.vtk, %s_contacts_*.vtk\n", s->vtk_prefix, s->vtk_prefix);
         if (s->network_every) fprintf(s->log, "  network: %s_*.svg\n", s->network_prefix);
@@ -524,7 +567,8 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
                     c);
 }
 
-static sbc_status run_text(const char *text, const char *name, FILE *log, const char *decks_dir, sbc_error *err)
+static sbc_status run_text(const char *text, const char *name, FILE *log, const char *decks_dir, int check,
+                           sbc_error *err)
 {
     script s;
     const char *p = text;
@@ -534,6 +578,7 @@ static sbc_status run_text(const char *text, const char *name, FILE *log, const 
     s.name = name;
     s.log = log;
     s.decks_dir = decks_dir;
+    s.check = check;
     s.settings = sbc_settings_default();
     while (*p && st == SBC_OK) {
         const char *e = strchr(p, '\n');
@@ -568,10 +613,15 @@ static sbc_status run_text(const char *text, const char *name, FILE *log, const 
 
 sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, sbc_error *err)
 {
-    return run_text(text, name, log, NULL, err);
+    return run_text(text, name, log, NULL, 0, err);
 }
 
-static sbc_status run_file(const char *path, FILE *log, const char *decks_dir, sbc_error *err)
+sbc_status sbc_script_check_string(const char *text, const char *name, FILE *log, sbc_error *err)
+{
+    return run_text(text, name, log, NULL, 1, err);
+}
+
+static sbc_status run_file(const char *path, FILE *log, const char *decks_dir, int check, sbc_error *err)
 {
     FILE *fp = fopen(path, "rb");
     char *text;
@@ -606,17 +656,22 @@ static sbc_status run_file(const char *path, FILE *log, const char *decks_dir, s
             return sbc_fail(err, SBC_ERR_INPUT, "%s:%d: a NUL byte (expected a text script)", path, line);
         }
     }
-    st = run_text(text, path, log, decks_dir, err);
+    st = run_text(text, path, log, decks_dir, check, err);
     free(text);
     return st;
 }
 
 sbc_status sbc_script_run_file(const char *path, FILE *log, sbc_error *err)
 {
-    return run_file(path, log, NULL, err);
+    return run_file(path, log, NULL, 0, err);
+}
+
+sbc_status sbc_script_check_file(const char *path, FILE *log, sbc_error *err)
+{
+    return run_file(path, log, NULL, 1, err);
 }
 
 sbc_status sbc_script_decks_file(const char *path, const char *dir, FILE *log, sbc_error *err)
 {
-    return run_file(path, log, dir, err);
+    return run_file(path, log, dir, 0, err);
 }

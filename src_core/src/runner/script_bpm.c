@@ -12,6 +12,7 @@
  *   run */
 #define _POSIX_C_SOURCE 200809L
 #include "script_state.h"
+#include "sbc/output_file.h"
 #include "io/words.h"
 
 #include "sbc/bpm.h"
@@ -289,7 +290,9 @@ static sbc_status cmd_run(script *s, struct bpm_script *b, sbc_error *err)
                 set.model == SBC_BOND_BEAM ? "Timoshenko beam" : "parallel", e->dt, e->dt / dtc, dtc);
     if (e->dt > dtc && s->log)
         fprintf(s->log, "bpm: warning: the time step is above the estimate of eq. 48\n");
-    if (b->series[0] && !(series = fopen(b->series, "w"))) {
+    if (s->check)
+        goto done;
+    if (b->series[0] && !(series = sbc_output_open(b->series))) {
         st = sbc_fail(err, SBC_ERR_IO, "test: cannot write '%s'", b->series);
         goto done;
     }

@@ -4,6 +4,7 @@
  * contact law, time step and servo_bc words on it, each writing DIR/HOST.csv.
  * Written from the parsed case, so the four cannot drift apart by hand. */
 #include "script_state.h"
+#include "sbc/output_file.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -30,7 +31,7 @@ static sbc_status open_in(FILE **fp, const char *dir, const char *name, char *pa
 {
     if ((size_t)snprintf(path, size, "%s/%s", dir, name) >= size)
         return sbc_fail(err, SBC_ERR_INPUT, "--decks: directory name '%s' is too long", dir);
-    if (!(*fp = fopen(path, "w")))
+    if (!(*fp = sbc_output_open(path)))
         return sbc_fail(err, SBC_ERR_IO, "--decks: cannot open '%s' for writing", path);
     return SBC_OK;
 }

@@ -41,6 +41,7 @@ sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
     if (sbc_parse_int(w[9], "seed", 0, 2147483647L, &seed, NULL) != SBC_OK)
         return sbc_fail(err, SBC_ERR_INPUT, "generate: seed '%s' is not valid (expected an integer >= 0)", w[9]);
     def.n = (int)n;
+    def.log = s->log;
     def.seed = (unsigned long)seed;
     sbc_packing_free(&s->packing);
     s->have_packing = 0;
@@ -66,7 +67,7 @@ sbc_status sbc_script_write_packing_as(script *s, const char *format, const char
     int *is_frame, k;
     sbc_status st;
     if (strcmp(format, "text") == 0)
-        return sbc_packing_write_text(&s->packing, path, err);
+        return s->check ? SBC_OK : sbc_packing_write_text(&s->packing, path, err);
     if (strcmp(format, "lammps") != 0 && strcmp(format, "liggghts") != 0 && strcmp(format, "yade") != 0)
         return sbc_fail(err, SBC_ERR_INPUT,
                         "write_packing: format '%s' is not known (expected text, lammps, liggghts or yade)", format);
@@ -81,7 +82,9 @@ sbc_status sbc_script_write_packing_as(script *s, const char *format, const char
     }
     for (k = 0; k < frame.n; ++k)
         is_frame[frame.particle[k]] = 1;
-    if (strcmp(format, "lammps") == 0)
+    if (s->check)
+        st = SBC_OK;
+    else if (strcmp(format, "lammps") == 0)
         st = sbc_packing_write_lammps(&s->packing, is_frame, s->density, path, err);
     else if (strcmp(format, "liggghts") == 0)
         st = sbc_packing_write_liggghts(&s->packing, is_frame, s->density, path, err);
@@ -118,7 +121,8 @@ sbc_status sbc_script_rose(script *s, int nw, char **w, sbc_error *err)
         if (k == 0 || s->packing.r[k] < rmin) rmin = s->packing.r[k];
     if ((st = sbc_packing_contact_angles(&s->packing, 1e-6 * rmin, &angle, &n, err)) != SBC_OK)
         return st;
-    st = sbc_plot_rose(w[1], "Contact orientations", n, angle, 36, err);
+    st = s->check ? sbc_script_files_check(s, w[1], "rose:", err)
+                  : sbc_plot_rose(w[1], "Contact orientations", n, angle, 36, err);
     free(angle);
     if (st == SBC_OK && s->log)
         fprintf(s->log, "rose: %d contacts -> %s\n", n, w[1]);

@@ -39,6 +39,7 @@ typedef struct script {
     char plot[SBC_NAME_LEN];
     char servo_words[2048]; /* the servo_bc words without 'file NAME' */
     const char *decks_dir;  /* --decks: 'run' writes the hosts' inputs here instead */
+    int check;              /* --check: every command is checked, nothing is run or written */
     struct bpm_script *bpm; /* after 'dimension 3': the 3D bonded particle model (script_bpm.c) */
     int actions;            /* commands that computed or wrote something (run, write_packing, rose) */
     int servo_pending;      /* a servo_bc line no run has used yet */

@@ -224,6 +224,13 @@ int sbc_host_confined(sbc_host *h, const double *frame_x, int n, const long *ids
 
 const char *sbc_host_message(const sbc_host *h) { return h->err.message; }
 
+void sbc_host_progress(const sbc_host *h, double *out)
+{
+    int iteration;
+    sbc_controller_progress(h->ctl, &iteration, &out[1], &out[2], &out[3]);
+    out[0] = iteration;
+}
+
 const double *sbc_host_command_x(const sbc_host *h) { return sbc_controller_commands(h->ctl).x; }
 
 const double *sbc_host_command_theta(const sbc_host *h) { return sbc_controller_commands(h->ctl).theta; }
