@@ -30,7 +30,9 @@ FUZZ_NAMES  = settings packing script host restart
 FUZZ_COMMON = fuzz/fuzz.h fuzz/private_folder.c fuzz/drive_controller.c fuzz/restart_case.h
 FUZZ_REPLAY = $(FUZZ_NAMES:%=$(B)/fuzz/%_replay)
 FUZZ_RUNS  ?= 1000000
-FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src
+# packings of 64 particles at most, so that an input runs in a few milliseconds
+# under the sanitizers (a legitimate large packing is no finding)
+FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src -DSBC_PACKING_MAX=64L
 
 .PHONY: all demo compare check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
   check-yade lammps liggghts fuzz \

@@ -28,7 +28,9 @@ sbc_status sbc_packing_read_stream(sbc_packing *p, FILE *fp, const char *path, s
 
 /* The most particles a packing may hold (read, lattice): 10 million, where
  * sizes in bytes and neighbour-list indices stay far from overflow. */
+#ifndef SBC_PACKING_MAX /* the fuzz builds lower it (Makefile, FUZZ_FLAGS) */
 #define SBC_PACKING_MAX 10000000L
+#endif
 
 /* Writers, so that every host loads the very same packing (centres and radii
  * printed with 17 significant digits: read back bit for bit):

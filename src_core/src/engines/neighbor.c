@@ -102,12 +102,16 @@ sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, doubl
         if (x[2 * k + 1] > hi[1]) hi[1] = x[2 * k + 1];
     }
     h = 2.0 * rmax + p->skin;
-    /* keep the grid O(N) even when particles are scattered far apart */
+    /* keep the grid O(N) even when particles are scattered far apart, or tiny
+       against their spacing (counted in doubles: the cell counts of a tiny h
+       overflow a long) */
     for (;;) {
-        ncx = (long)((hi[0] - lo[0]) / h) + 1;
-        ncy = (long)((hi[1] - lo[1]) / h) + 1;
-        if (ncx * ncy <= 4L * n + 64)
+        const double nx = floor((hi[0] - lo[0]) / h) + 1.0, ny = floor((hi[1] - lo[1]) / h) + 1.0;
+        if (nx * ny <= 4.0 * n + 64.0) {
+            ncx = (long)nx;
+            ncy = (long)ny;
             break;
+        }
         h *= 1.5;
     }
     ncell = ncx * ncy;
