@@ -14,6 +14,7 @@
 #include "sbc/generate.h"
 #include "sbc/homogenize.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -77,6 +78,67 @@ static void mixed_preset(void)
         CHECK_REL(rows[2][8], -1.05e6, 5e-2); /* P22 at the end of the stress stage */
 }
 
+/* A flat-bottomed frictionless 6 x 6 lattice layer (spacing 2^-9 m, touching
+ * discs: binary-exact coordinates) under P22* = -100 N/m in 2 increments, then
+ * F12 = 0.01 in 2: stage 1 ends at the closed form F22 = 1 - p (N - 3/2) /
+ * (kn (N - 1)) = 0.991 (the side columns, periodic images of each other, each
+ * carry half a column's load); the shear stage keeps P22 = P22* (eq. 23
+ * normalized by G = sum X (x) A as eq. 15 is, after the reference renewal);
+ * Hill-Mandel holds at every increment; the layer translated by (2^-7, 2^-6) m
+ * gives the same rows. tol_relative 1e-11, so that the servo's own tolerance
+ * does not hide a 1e-9 difference. */
+static void lattice_layer(void)
+{
+    static const char *const words = "servo_bc mixed F 1 0.01 0 1 increments 2 stress P22 -100 2 accuracy tight "
+                                     "tol_relative 1e-11";
+    static double rows[2][8][CSV_COLS];
+    char csv[2][512], packing[512], script[1024];
+    sbc_packing p;
+    sbc_error err;
+    int k, c, n[2];
+    double worst = 0.0, hm = 0.0;
+    CHECK(sbc_packing_lattice_square(&p, 6, 6, 0.001953125, 0.0009765625, &err) == SBC_OK);
+    for (k = 0; k < p.n; ++k) {
+        p.x[2 * k] += 0.0078125;
+        p.x[2 * k + 1] += 0.015625;
+    }
+    snprintf(packing, sizeof packing, "%s/layer_shifted.txt", test_tmpdir);
+    CHECK(sbc_packing_write_text(&p, packing, &err) == SBC_OK);
+    sbc_packing_free(&p);
+    for (k = 0; k < 2; ++k) {
+        char source[600];
+        snprintf(csv[k], sizeof csv[k], "%s/layer%d.csv", test_tmpdir, k);
+        if (k == 0)
+            snprintf(source, sizeof source, "lattice square 6 6 spacing 0.001953125 radius 0.0009765625");
+        else
+            snprintf(source, sizeof source, "read_packing %s", packing);
+        snprintf(script, sizeof script,
+                 "dimension 2\n%s\ncontact frictional kn 1e4 ks 0 mu 0\ndensity 2e3\ntimestep 1e-5\n%s file %s\nrun\n",
+                 source, words, csv[k]);
+        CHECK(sbc_script_run_string(script, "layer", NULL, &err) == SBC_OK);
+        n[k] = csv_read(csv[k], rows[k], 8);
+        CHECK(n[k] == 5);
+    }
+    if (n[0] != 5 || n[1] != 5)
+        return;
+    CHECK_REL(rows[0][2][4], 1.0 - 100.0 * 4.5 / (1e4 * 5.0), 1e-9); /* F22 = 0.991 */
+    CHECK_REL(rows[0][2][8], -100.0, 1e-9);
+    CHECK_REL(rows[0][3][8], -100.0, 1e-4); /* the shear stage keeps P22* */
+    CHECK_REL(rows[0][4][8], -100.0, 1e-4);
+    CHECK_REL(rows[0][4][2], 0.01, 1e-9);
+    for (k = 0; k < 5; ++k) {
+        if (fabs(rows[0][k][22]) > hm) hm = fabs(rows[0][k][22]);
+        for (c = 1; c <= 12; ++c) { /* F, P and sigma, against the stress scale 100 N/m or 1 */
+            double d = fabs(rows[0][k][c] - rows[1][k][c]) / (c <= 4 ? 1.0 : 100.0);
+            if (d > worst) worst = d;
+        }
+    }
+    CHECK(hm <= 1e-6);
+    CHECK(worst <= 1e-9);
+    printf("  mixed lattice layer: F22 %.12f after the stress stage, P22 %.9f N/m at F12 = 0.01, Hill-Mandel <= %.1e, "
+           "translated layer %.1e apart\n", rows[0][2][4], rows[0][4][8], hm, worst);
+}
+
 void test_mixed(void)
 {
     static const char *words[] = {"mixed", "F", "1", "0.004", "0", "1", "increments", "2", "stress", "P22",
@@ -95,6 +157,7 @@ void test_mixed(void)
     double *mass, *a, *m, *X0;
     int nrows = 0, q, k, bottom_fixed = 1;
     long step;
+    lattice_layer();
     g.n = 25;
     g.r_min = 0.8e-3;
     g.polydispersity = 1.5;

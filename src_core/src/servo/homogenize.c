@@ -44,10 +44,14 @@ void sbc_homogenize_F(const sbc_frame *f, const double *x, double F[4])
     F[3] = (-s[2] * G[1] + s[3] * G[0]) / det;
 }
 
-/* eq. 23: P_ij = (1/V) sum_q a_qi X_qj */
+/* eq. 23: P_ij = (1/V) sum_q a_qi X_qj, with V generalized to G as in eq. 15:
+ * P = (sum_q a_q (x) X_q) G^-T, so that a uniform traction a_q = P* A_q gives
+ * back P = P* exactly (sum_q A_q (x) X_q = G^T). For G = V I this is eq. 23;
+ * after the reference renewal of a mixed BC, eq. 23 taken literally returned
+ * P* G/V (-99.598 N/m for P22* = -100 N/m on a 6 x 6 lattice layer). */
 void sbc_homogenize_P(const sbc_frame *f, const double *a, double P[4])
 {
-    double s[4] = {0.0, 0.0, 0.0, 0.0};
+    double s[4] = {0.0, 0.0, 0.0, 0.0}, G[4], det;
     int q;
     for (q = 0; q < f->n; ++q) {
         const double *aq = &a[2 * q], *X = &f->X[2 * q];
@@ -56,8 +60,18 @@ void sbc_homogenize_P(const sbc_frame *f, const double *a, double P[4])
         s[2] += aq[1] * X[0];
         s[3] += aq[1] * X[1];
     }
-    for (q = 0; q < 4; ++q)
-        P[q] = s[q] / f->V;
+    moment(f, f->X, G);
+    det = sbc_det2(G);
+    if (!(fabs(det) > 0.0)) { /* degenerate frame: eq. 23 as written */
+        for (q = 0; q < 4; ++q)
+            P[q] = s[q] / f->V;
+        return;
+    }
+    /* P = s G^-T: (G^-T)_kj = (G^-1)_jk, G^-1 = [G3 -G1; -G2 G0] / det */
+    P[0] = (s[0] * G[3] - s[1] * G[1]) / det;
+    P[1] = (-s[0] * G[2] + s[1] * G[0]) / det;
+    P[2] = (s[2] * G[3] - s[3] * G[1]) / det;
+    P[3] = (-s[2] * G[2] + s[3] * G[0]) / det;
 }
 
 /* eq. 31: sigma = (1/det F) P F^T, i.e. sigma_ij = P_ik F_jk / det F */

@@ -1,6 +1,7 @@
 /* Servo control of (P) and (T): residuals (eqs. 32, 35), normalizations
  * (eq. 37) and corrections (eqs. 33, 34, 36). */
 #include "servo.h"
+#include "sbc/homogenize.h"
 
 #include <math.h>
 
@@ -233,12 +234,7 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
     raw_sums w = no_sums(kn, floor);
     int q, k;
     o->max_step = 0.0;
-    for (q = 0; q < f->n; ++q) { /* eq. 23 */
-        P[0] += a[2 * q] * f->X[2 * q] / f->V;
-        P[1] += a[2 * q] * f->X[2 * q + 1] / f->V;
-        P[2] += a[2 * q + 1] * f->X[2 * q] / f->V;
-        P[3] += a[2 * q + 1] * f->X[2 * q + 1] / f->V;
-    }
+    sbc_homogenize_P(f, a, P); /* eq. 23 */
     for (k = 0; k < 4; ++k)
         if (P_fixed[k])
             P[k] = P_star[k];
