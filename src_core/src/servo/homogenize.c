@@ -26,22 +26,28 @@ static void moment(const sbc_frame *f, const double *y, double s[4])
  * mixed BC, whose top edge is no longer a periodic copy of the bottom, G
  * departs from V I by ~5e-4 and eq. 15 taken literally would report
  * F = diag(0.9995, ...) for the undeformed reference itself. */
+/* out = s M^-1 for 2x2 s and M (row-major); 0 when M is singular */
+static int right_divide(const double s[4], const double M[4], double out[4])
+{
+    const double det = sbc_det2(M);
+    if (!(fabs(det) > 0.0))
+        return 0;
+    out[0] = (s[0] * M[3] - s[1] * M[2]) / det;
+    out[1] = (-s[0] * M[1] + s[1] * M[0]) / det;
+    out[2] = (s[2] * M[3] - s[3] * M[2]) / det;
+    out[3] = (-s[2] * M[1] + s[3] * M[0]) / det;
+    return 1;
+}
+
 void sbc_homogenize_F(const sbc_frame *f, const double *x, double F[4])
 {
-    double s[4], G[4], det;
+    double s[4], G[4];
+    int q;
     moment(f, x, s);
     moment(f, f->X, G);
-    det = sbc_det2(G);
-    if (!(fabs(det) > 0.0)) { /* degenerate frame: eq. 15 as written */
-        int q;
+    if (!right_divide(s, G, F)) /* degenerate frame: eq. 15 as written */
         for (q = 0; q < 4; ++q)
             F[q] = s[q] / f->V;
-        return;
-    }
-    F[0] = (s[0] * G[3] - s[1] * G[2]) / det;
-    F[1] = (-s[0] * G[1] + s[1] * G[0]) / det;
-    F[2] = (s[2] * G[3] - s[3] * G[2]) / det;
-    F[3] = (-s[2] * G[1] + s[3] * G[0]) / det;
 }
 
 /* eq. 23: P_ij = (1/V) sum_q a_qi X_qj, with V generalized to G as in eq. 15:
@@ -51,7 +57,7 @@ void sbc_homogenize_F(const sbc_frame *f, const double *x, double F[4])
  * P* G/V (-99.598 N/m for P22* = -100 N/m on a 6 x 6 lattice layer). */
 void sbc_homogenize_P(const sbc_frame *f, const double *a, double P[4])
 {
-    double s[4] = {0.0, 0.0, 0.0, 0.0}, G[4], det;
+    double s[4] = {0.0, 0.0, 0.0, 0.0}, G[4], Gt[4];
     int q;
     for (q = 0; q < f->n; ++q) {
         const double *aq = &a[2 * q], *X = &f->X[2 * q];
@@ -61,17 +67,13 @@ void sbc_homogenize_P(const sbc_frame *f, const double *a, double P[4])
         s[3] += aq[1] * X[1];
     }
     moment(f, f->X, G);
-    det = sbc_det2(G);
-    if (!(fabs(det) > 0.0)) { /* degenerate frame: eq. 23 as written */
+    Gt[0] = G[0];
+    Gt[1] = G[2];
+    Gt[2] = G[1];
+    Gt[3] = G[3];
+    if (!right_divide(s, Gt, P)) /* degenerate frame: eq. 23 as written */
         for (q = 0; q < 4; ++q)
             P[q] = s[q] / f->V;
-        return;
-    }
-    /* P = s G^-T: (G^-T)_kj = (G^-1)_jk, G^-1 = [G3 -G1; -G2 G0] / det */
-    P[0] = (s[0] * G[3] - s[1] * G[1]) / det;
-    P[1] = (-s[0] * G[2] + s[1] * G[0]) / det;
-    P[2] = (s[2] * G[3] - s[3] * G[1]) / det;
-    P[3] = (-s[2] * G[2] + s[3] * G[0]) / det;
 }
 
 /* eq. 31: sigma = (1/det F) P F^T, i.e. sigma_ij = P_ik F_jk / det F */
