@@ -13,6 +13,10 @@ void sbc_homogenize_F(const sbc_frame *frame, const double *x, double F[4]);
 /* First Piola-Kirchhoff stress, eq. 23: P = (1/V) sum_q a_q (x) X_q.
  * a is [2Q], the boundary forces a_q in N; P in N/m (2D). */
 void sbc_homogenize_P(const sbc_frame *frame, const double *a, double P[4]);
+/* The same with X_q - centre for X_q: equal to it when the forces balance
+ * (sum a_q = 0), independent of where the frame lies while they do not (the
+ * mixed servo's stress target, controller.c). */
+void sbc_homogenize_P_about(const sbc_frame *f, const double *a, const double centre[2], double P[4]);
 
 /* Cauchy stress, eq. 31: sigma = P F^T / det F. Fails with SBC_ERR_GEOMETRY
  * when det F <= 0. */

@@ -22,6 +22,10 @@ struct sbc_controller {
     unsigned char *mode; /* [2Q] mixed: sbc_mode of each component of each frame position */
     double P_star[4];    /* mixed: prescribed stress of this increment, N/m */
     unsigned char P_fixed[4]; /* mixed: 1 where P_star holds (prescribed, or 0 in the stress stage) */
+    double P_shift[4];   /* mixed: the top's traction targets P_star + P_shift, so that the measured
+                            P of eq. 23 (which the support's reactions enter) meets P_star, N/m */
+    double P_miss;       /* mixed: |P measured - P_star| over |P_star| in the traction rows */
+    double *a_hat;       /* [2Q] mixed: the boundary forces with the top's traction components at their targets */
     sbc_settings s;
     double dt;           /* s */
     double kn;           /* the host's normal contact stiffness, N/m (0: unknown) */
@@ -52,24 +56,91 @@ struct sbc_controller {
     sbc_result result;
 };
 
-/* Table 5, 1.1 / 2.1: D components follow the prescribed F path; P pairs and
+/* Mixed: row i of F (F_i1, F_i2) is a result of the (T) condition, eq. 45,
+ * when some edge controls component i by traction (the layer: row 2). */
+static int row_measured(const sbc_controller *c, int i)
+{
+    int e;
+    for (e = 0; e < 4; ++e)
+        if (c->s.edge_mode[e][i] == SBC_MODE_T)
+            return 1;
+    return 0;
+}
+
+/* Mixed: the point the D components deform about, x = c + F (X - c): the
+ * centroid of the bottom edge's reference centres (corners included), so
+ * that the support keeps its place on average while it follows F, and a
+ * translated packing gives the same results. */
+static void support_centre(const sbc_controller *c, double centre[2])
+{
+    const sbc_frame *f = c->frame;
+    int q, n = 0;
+    centre[0] = centre[1] = 0.0;
+    for (q = 0; q < f->n; ++q)
+        if (f->side[q] == SBC_SIDE_BOTTOM || q == f->corner[SBC_CORNER_BL] || q == f->corner[SBC_CORNER_BR]) {
+            centre[0] += f->X[2 * q];
+            centre[1] += f->X[2 * q + 1];
+            ++n;
+        }
+    centre[0] /= n;
+    centre[1] /= n;
+}
+
+/* Mixed, Sect. 5.1: the D components follow F, x_q = c + F (X_q - c) (eqs. 17,
+ * 43_1), and the periodic pairs keep x_r - x_l = F (X_r - X_l) (eq. 19) about
+ * their servo-controlled midpoint, with F the imposed components and, in the
+ * rows of eq. 45, the measured ones (F_now holds both). With the measured F
+ * every boundary term of eq. 46 vanishes: w_q = 0 on D components, periodic w
+ * on the pairs (the proof of Sect. 5.1). */
+static void mixed_follow_F(sbc_controller *c)
+{
+    const sbc_frame *f = c->frame;
+    const double *F = c->F_now;
+    double centre[2];
+    int q, k;
+    support_centre(c, centre);
+    for (q = 0; q < f->n; ++q) {
+        const double d0 = f->X[2 * q] - centre[0], d1 = f->X[2 * q + 1] - centre[1];
+        for (k = 0; k < 2; ++k)
+            if (c->mode[2 * q + k] == SBC_MODE_D)
+                c->x_cmd[2 * q + k] = centre[k] + F[2 * k] * d0 + F[2 * k + 1] * d1;
+        if (c->mode[2 * q] == SBC_MODE_P && (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)) {
+            const int p = f->partner[q];
+            const double D0 = f->X[2 * q] - f->X[2 * p], D1 = f->X[2 * q + 1] - f->X[2 * p + 1];
+            for (k = 0; k < 2; ++k) {
+                const double mid = 0.5 * (c->x_cmd[2 * q + k] + c->x_cmd[2 * p + k]);
+                const double half = 0.5 * (F[2 * k] * D0 + F[2 * k + 1] * D1);
+                c->x_cmd[2 * q + k] = mid + half;
+                c->x_cmd[2 * p + k] = mid - half;
+            }
+        }
+    }
+}
+
+/* Table 5, 1.1 / 2.1: D components follow F (mixed_follow_F); P pairs and
  * T components carry on from the previous converged state, shifted by the
- * change of F (which keeps x+ - x- = F (X+ - X-) exact); rotations are free on
- * edges with a T component, held at zero on D edges, servo-controlled on P. */
+ * change of F; rotations are free on edges with a T component, held at zero
+ * on D edges, servo-controlled on P. The measured rows of F carry on from the
+ * previous converged increment. */
 static void start_mixed(sbc_controller *c)
 {
     const sbc_frame *f = c->frame;
-    const double *F = c->F_now, *G = c->F_prev;
+    double *F = c->F_now;
+    const double *G = c->F_prev;
+    double centre[2];
     int q, k;
+    for (k = 0; k < 2; ++k)
+        if (row_measured(c, k)) {
+            F[2 * k] = G[2 * k];
+            F[2 * k + 1] = G[2 * k + 1];
+        }
+    support_centre(c, centre);
     for (q = 0; q < f->n; ++q) {
-        const double *X = &f->X[2 * q];
+        const double d0 = f->X[2 * q] - centre[0], d1 = f->X[2 * q + 1] - centre[1];
         int any_t = 0;
         for (k = 0; k < 2; ++k) {
-            double target = F[2 * k] * X[0] + F[2 * k + 1] * X[1];
-            double shift = target - (G[2 * k] * X[0] + G[2 * k + 1] * X[1]);
-            if (c->mode[2 * q + k] == SBC_MODE_D || c->increment == 0)
-                c->x_cmd[2 * q + k] = target;
-            else
+            double shift = (F[2 * k] - G[2 * k]) * d0 + (F[2 * k + 1] - G[2 * k + 1]) * d1;
+            if (c->mode[2 * q + k] != SBC_MODE_D && c->increment > 0)
                 c->x_cmd[2 * q + k] = c->x_prev[2 * q + k] + shift;
             any_t |= c->mode[2 * q + k] == SBC_MODE_T;
         }
@@ -77,15 +148,25 @@ static void start_mixed(sbc_controller *c)
         if (c->mode[2 * q] == SBC_MODE_D && c->mode[2 * q + 1] == SBC_MODE_D)
             c->theta_cmd[q] = 0.0;
     }
+    mixed_follow_F(c);
 }
 
+/* The prescribed stresses of this increment: `stress` components ramp to
+ * their values over the stress stage and hold after it; the others are
+ * measured (eq. 23). Sect. 5.2 prescribes P21 = 0 during the stress stage,
+ * "to avoid the initial development of a shear stress"; the proof of eqs.
+ * 46-47 needs the measured P21 in the top's traction, and prescribing 0 does
+ * not keep the measured P21 at 0 (the support's reactions make it): on a
+ * 37-disc layer at accuracy tight, P21 = -3.5e4 N/m either way (P22* =
+ * -1.05e6), Hill-Mandel 1.6e-5 with P21 = 0 prescribed and 1.2e-10 with P21
+ * measured; 120 discs: 1.0e-7 against 5e-11 (docs/servo_bc.md). */
 static void mixed_stress_targets(sbc_controller *c)
 {
-    int k, stage1 = c->increment <= c->s.stress_increments;
     double t = c->s.stress_increments > 0 ? fmin(1.0, (double)c->increment / c->s.stress_increments) : 1.0;
+    int k;
     for (k = 0; k < 4; ++k) {
         c->P_star[k] = 0.0;
-        c->P_fixed[k] = (unsigned char)stage1; /* P21 = 0 while the stress is applied (Sect. 5.2) */
+        c->P_fixed[k] = 0;
     }
     for (k = 0; k < c->s.nstress; ++k) {
         int ij = 2 * c->s.stress[k].i + c->s.stress[k].j;
@@ -213,9 +294,10 @@ static void start_increment(sbc_controller *c)
     begin_move(c, c->increment == 0, c->s.bc == SBC_BC_D ? relax_tol(&c->s) : first_tol(c));
 }
 
-/* Modes of each frame position from the edge modes of the settings. Corners
- * belong to their horizontal edge (bottom: BL, BR; top: TR, TL); on a periodic
- * horizontal edge they follow F (D), as the corners of (P) do (eq. 17). */
+/* Modes of each frame position from the edge modes of the settings. The
+ * corners follow F in both components (D), as the paper's four corner nodes
+ * do (Sect. 5.1: "the macroscopic deformation gradient F, which is followed
+ * by the four corner nodes"), and as the corners of (P) do (eq. 17). */
 static void assign_modes(sbc_controller *c)
 {
     static const int edge_of_side[5] = {-1, SBC_EDGE_BOTTOM, SBC_EDGE_RIGHT, SBC_EDGE_TOP, SBC_EDGE_LEFT};
@@ -339,10 +421,11 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     c->m = malloc(sizeof(double) * q);
     c->x_prev = malloc(sizeof(double) * 2 * q);
     c->du = calloc(2 * q, sizeof(double));
+    c->a_hat = calloc(2 * q, sizeof(double));
     c->dtheta = calloc(q, sizeof(double));
     c->d_prev = calloc(3 * q, sizeof(double));
     c->lambda = 1.0;
-    if (!sbc_motion_alloc(&c->motion, frame->n) || !c->d_prev || !c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du ||
+    if (!sbc_motion_alloc(&c->motion, frame->n) || !c->d_prev || !c->mass || !c->x_cmd || !c->theta_cmd || !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du || !c->a_hat ||
         !c->dtheta || !c->mode) {
         sbc_controller_free(c);
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
@@ -391,6 +474,7 @@ void sbc_controller_free(sbc_controller *c)
     free(c->m);
     free(c->x_prev);
     free(c->du);
+    free(c->a_hat);
     free(c->dtheta);
     free(c->d_prev);
     sbc_motion_free(&c->motion);
@@ -523,10 +607,68 @@ static double tol_moment(const sbc_controller *c)
     return c->s.tol_relative > 0.0 ? c->s.tol_relative : c->s.tol_moment;
 }
 
+/* Mixed: how far (in radii) the frame's D components and pair offsets may
+ * lag behind the measured rows of F (eq. 45) at a converged increment: the
+ * relative tolerance of the preset, or 1e-6 with absolute tolerances. */
+static double mixed_lag_tol(const sbc_controller *c)
+{
+    return c->s.tol_relative > 0.0 ? c->s.tol_relative : 1e-6;
+}
+
+/* Mixed: measures F (eq. 15 on the positions x) and returns the largest
+ * displacement, in radii, by which the D components and the pair offsets
+ * lag behind it in the measured rows; Fm receives the measured F. */
+static double mixed_lag(const sbc_controller *c, const double *x, double Fm[4])
+{
+    const sbc_frame *f = c->frame;
+    double centre[2], lag = 0.0;
+    int q, k;
+    sbc_homogenize_F(f, x, Fm);
+    support_centre(c, centre);
+    for (q = 0; q < f->n; ++q)
+        for (k = 0; k < 2; ++k)
+            if (row_measured(c, k) && c->mode[2 * q + k] != SBC_MODE_T) {
+                const double d = (Fm[3 * k] - c->F_now[3 * k]) * (f->X[2 * q + k] - centre[k]);
+                if (fabs(d) / f->R[q] > lag)
+                    lag = fabs(d) / f->R[q];
+            }
+    return lag;
+}
+
+/* Mixed: P of eq. 23 from the boundary forces (into P), and how far it misses
+ * the prescribed components of the traction rows, relative to |P_star|
+ * there. P_hat: eq. 23 with the traction components of the top at their
+ * targets (P_star + P_shift, measured where not prescribed), which measures
+ * what the support and the pairs add to P apart from the top's lag. */
+static double mixed_stress_miss(sbc_controller *c, double P[4], double P_hat[4])
+{
+    const sbc_frame *f = c->frame;
+    double miss = 0.0, scale = 0.0, Pt[4], centre[2];
+    int q, k;
+    support_centre(c, centre);
+    sbc_homogenize_P_about(f, c->a, centre, P);
+    for (k = 0; k < 4; ++k)
+        Pt[k] = c->P_fixed[k] ? c->P_star[k] + c->P_shift[k] : P[k];
+    memcpy(c->a_hat, c->a, sizeof(double) * 2 * (size_t)f->n);
+    for (q = 0; q < f->n; ++q)
+        for (k = 0; k < 2; ++k)
+            if (c->mode[2 * q + k] == SBC_MODE_T)
+                c->a_hat[2 * q + k] = Pt[2 * k] * f->A[2 * q] + Pt[2 * k + 1] * f->A[2 * q + 1];
+    sbc_homogenize_P_about(f, c->a_hat, centre, P_hat);
+    for (k = 0; k < 2; ++k)
+        if (c->P_fixed[3 * k] && row_measured(c, k)) {
+            miss = fmax(miss, fabs(P[3 * k] - c->P_star[3 * k]));
+            scale = fmax(scale, fabs(c->P_star[3 * k]));
+        }
+    return scale > 0.0 ? miss / scale : 0.0;
+}
+
 static double residual_ratio(const sbc_controller *c, const sbc_servo_norms *n)
 {
     double r = n->r_force / tol_force(c);
-    if (c->s.bc == SBC_BC_P || c->s.bc == SBC_BC_MIXED)
+    if (c->s.bc == SBC_BC_MIXED) /* r_deformation: the frame's lag behind the measured F, in radii */
+        return fmax(fmax(r, n->r_moment / tol_moment(c)), fmax(n->r_deformation, c->P_miss) / mixed_lag_tol(c));
+    if (c->s.bc == SBC_BC_P)
         return fmax(r, n->r_moment / tol_moment(c));
     return fmax(r, n->r_deformation / c->s.tol_deformation);
 }
@@ -587,8 +729,15 @@ static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *
         return SBC_EVENT_FAILED;
     memcpy(c->x_prev, snap->x, sizeof(double) * 2 * (size_t)c->frame->n);
     memcpy(c->F_prev, c->F_now, sizeof c->F_prev);
-    if (c->s.bc == SBC_BC_MIXED && c->s.stress_increments > 0 && c->increment == c->s.stress_increments)
+    if (c->s.bc == SBC_BC_MIXED && c->s.stress_increments > 0 && c->increment == c->s.stress_increments) {
+        int k;
         new_reference(c, snap->x);
+        for (k = 0; k < 2; ++k) /* F of the state after stage 1 on itself: I */
+            if (row_measured(c, k)) {
+                c->F_prev[2 * k] = k == 0 ? 1.0 : 0.0;
+                c->F_prev[2 * k + 1] = k == 1 ? 1.0 : 0.0;
+            }
+    }
     if (c->increment == c->total) {
         c->increment++;
         return SBC_EVENT_FINISHED;
@@ -799,13 +948,20 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
     c->steps += c->relax.steps;
     if (c->s.bc != SBC_BC_D) {
         sbc_servo_norms nrm;
-        double ratio;
+        double ratio, F_measured[4], P_measured[4], P_hat[4];
         const int first = !c->servo;
+        int k;
         /* Tables 2-3: after the initial relaxation (1.2) correct at once (1.3);
          * after each later relaxation (1.4) check the residuals (1.5-1.6). */
-        if (c->s.bc == SBC_BC_MIXED)
-            sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->kn, c->relax.floor_force, c->P_star, c->P_fixed, c->a, c->m, c->du,
+        if (c->s.bc == SBC_BC_MIXED) {
+            double target[4];
+            for (k = 0; k < 4; ++k)
+                target[k] = c->P_star[k] + c->P_shift[k];
+            sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->kn, c->relax.floor_force, target, c->P_fixed, c->a, c->m, c->du,
                             c->dtheta, &nrm);
+            nrm.r_deformation = mixed_lag(c, snap->x, F_measured);
+            c->P_miss = mixed_stress_miss(c, P_measured, P_hat);
+        }
         else
             sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->kn, c->relax.floor_force, c->F_now, c->a, c->m, snap->x, c->du,
                                 c->dtheta, &nrm);
@@ -851,7 +1007,6 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
         }
         {
             const int moved = correction_moves_frame(c);
-            int k;
             save_commands(c);
             for (k = 0; k < 2 * c->frame->n; ++k)
                 c->x_cmd[k] += c->du[k];
@@ -861,6 +1016,15 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
             c->iteration++;
             if (c->s.bc == SBC_BC_T && c->s.update != SBC_UPDATE_FIXED)
                 restore_eq15(c);
+            if (c->s.bc == SBC_BC_MIXED) { /* the frame follows the measured rows of F */
+                for (k = 0; k < 2; ++k)
+                    if (row_measured(c, k))
+                        c->F_now[3 * k] = F_measured[3 * k];
+                for (k = 0; k < 2; ++k) /* the measured P_kk towards P_star (the normal stress of the traction row) */
+                    if (c->P_fixed[3 * k] && row_measured(c, k))
+                        c->P_shift[3 * k] += c->P_star[3 * k] - P_hat[3 * k];
+                mixed_follow_F(c);
+            }
             begin_move(c, !moved, inexact_tol(c, nrm.relative_force));
         }
         return SBC_EVENT_CORRECTED;
@@ -871,12 +1035,12 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
 /* Restart layout (doubles): version, Q, bc, increments, F (4), dt | increment, servo,
  * iteration, r_first, steps, norms (4), relax (steps, count, rising, past_peak,
  * ek_prev, at_rest), lambda, have_prev, win_min, prev_min, F_prev (4), F_now (4), relax (tol, known_step, ep_known,
- * ek_known, fc_known, unbalanced), motion (steps, done) | result (23) | x_cmd (2Q),
+ * ek_known, fc_known, unbalanced), motion (steps, done), P_shift (4) | result (23) | x_cmd (2Q),
  * theta_cmd (Q), free_rot (Q), x_prev (2Q), reference X (2Q), d_prev (3Q), motion (x_from, x_goal 4Q,
  * th_from, th_goal 2Q). */
-#define STATE_VERSION 6.0
+#define STATE_VERSION 7.0
 #define STATE_HEAD 9
-#define STATE_SCALARS 35
+#define STATE_SCALARS 39
 #define STATE_RESULT 23
 
 size_t sbc_controller_state_size(const sbc_controller *c)
@@ -965,6 +1129,7 @@ void sbc_controller_save(const sbc_controller *c, double *o)
     *o++ = c->relax.unbalanced;
     *o++ = (double)c->motion.steps;
     *o++ = (double)c->motion.done;
+    for (k = 0; k < 4; ++k) *o++ = c->P_shift[k];
     o = put_result(&c->result, o);
     for (k = 0; k < 2 * q; ++k) *o++ = c->x_cmd[k];
     for (k = 0; k < q; ++k) *o++ = c->theta_cmd[k];
@@ -1047,6 +1212,7 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     c->relax.unbalanced = sbc_saved_real(&rd, "relaxation unbalanced");
     c->motion.steps = sbc_saved_int(&rd, "motion steps", 0, SAVED_COUNT);
     c->motion.done = sbc_saved_int(&rd, "motion done", 0, SAVED_COUNT);
+    for (k = 0; k < 4; ++k) c->P_shift[k] = sbc_saved_real(&rd, "P_shift");
     get_result(&c->result, &rd, c->total);
     for (k = 0; k < 2 * q; ++k) c->x_cmd[k] = sbc_saved_real(&rd, "x_cmd");
     for (k = 0; k < q; ++k) c->theta_cmd[k] = sbc_saved_real(&rd, "theta_cmd");

@@ -55,16 +55,16 @@ void sbc_homogenize_F(const sbc_frame *f, const double *x, double F[4])
  * back P = P* exactly (sum_q A_q (x) X_q = G^T). For G = V I this is eq. 23;
  * after the reference renewal of a mixed BC, eq. 23 taken literally returned
  * P* G/V (-99.598 N/m for P22* = -100 N/m on a 6 x 6 lattice layer). */
-void sbc_homogenize_P(const sbc_frame *f, const double *a, double P[4])
+void sbc_homogenize_P_about(const sbc_frame *f, const double *a, const double centre[2], double P[4])
 {
     double s[4] = {0.0, 0.0, 0.0, 0.0}, G[4], Gt[4];
     int q;
     for (q = 0; q < f->n; ++q) {
-        const double *aq = &a[2 * q], *X = &f->X[2 * q];
-        s[0] += aq[0] * X[0];
-        s[1] += aq[0] * X[1];
-        s[2] += aq[1] * X[0];
-        s[3] += aq[1] * X[1];
+        const double *aq = &a[2 * q], X0 = f->X[2 * q] - centre[0], X1 = f->X[2 * q + 1] - centre[1];
+        s[0] += aq[0] * X0;
+        s[1] += aq[0] * X1;
+        s[2] += aq[1] * X0;
+        s[3] += aq[1] * X1;
     }
     moment(f, f->X, G);
     Gt[0] = G[0];
@@ -74,6 +74,12 @@ void sbc_homogenize_P(const sbc_frame *f, const double *a, double P[4])
     if (!right_divide(s, Gt, P)) /* degenerate frame: eq. 23 as written */
         for (q = 0; q < 4; ++q)
             P[q] = s[q] / f->V;
+}
+
+void sbc_homogenize_P(const sbc_frame *f, const double *a, double P[4])
+{
+    static const double origin[2] = {0.0, 0.0};
+    sbc_homogenize_P_about(f, a, origin, P);
 }
 
 /* eq. 31: sigma = (1/det F) P F^T, i.e. sigma_ij = P_ik F_jk / det F */
