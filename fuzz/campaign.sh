@@ -14,7 +14,10 @@ for name in "$@"; do
   mkdir -p "$work" "$dir/findings/$name"
   log="$dir/$name.log"
   start=$(date +%s)
-  "$dir/${name}_fuzzer" -runs="$runs" -max_len=4096 -timeout=20 -rss_limit_mb=4096 -print_final_stats=1 \
+  # inputs up to 1 KB (a script of ~40 lines); restart blocks up to 4 KB (a 16-particle frame and its state)
+  len=1024
+  [ "$name" = restart ] && len=4096
+  "$dir/${name}_fuzzer" -runs="$runs" -max_len=$len -timeout=20 -rss_limit_mb=4096 -print_final_stats=1 \
     -artifact_prefix="$dir/findings/$name/" "$work" "$here/corpus/$name" > "$log" 2>&1
   rc=$?
   secs=$(( $(date +%s) - start ))
