@@ -6,6 +6,7 @@
 
 #include "sbc/controller.h"
 #include "sbc/engine.h"
+#include "sbc/generate.h"
 #include "sbc/packing.h"
 
 #include <math.h>
@@ -72,6 +73,88 @@ static void corrupted_states(const double *fstate, size_t nf, const double *stat
     CHECK(nonfinite_accepted == 0 && bad_commands == 0);
     printf("  restart: %ld of %ld corrupted saved values refused by name, the rest in range\n", refused, tried);
     free(copy);
+}
+
+/* Mixed on a 37-disc layer, saved in the middle of the first shear
+ * increment's servo iterations (the support following the measured F22, the
+ * top's shifted traction target): a controller loaded from the saved state
+ * continues with the same commands and rows, bit for bit. */
+static void mixed_continues(void)
+{
+    sbc_generate_def g = sbc_generate_def_default();
+    sbc_engine_def d = sbc_engine_def_default();
+    sbc_packing p;
+    sbc_frame f, h;
+    sbc_settings s;
+    sbc_error err;
+    sbc_engine *e;
+    sbc_controller *a, *b = NULL;
+    double *mass, *state = NULL, *fstate = NULL;
+    size_t n = 0, nf = 0;
+    long step, mismatches = 0;
+    int corrections = 0, done = 0;
+    g.n = 25;
+    g.r_min = 0.8e-3;
+    g.polydispersity = 1.5;
+    parse(&s, "mixed F 1 0.004 0 1 increments 2 stress P22 -1.05e6 2 accuracy tight");
+    CHECK(sbc_generate_periodic(&g, &p, NULL, &err) == SBC_OK);
+    CHECK(sbc_frame_detect_packing(&f, &p, &err) == SBC_OK);
+    d.n = p.n;
+    d.x = p.x;
+    d.r = p.r;
+    d.density = 1e4;
+    d.law.kn = 1e8;
+    d.law.ks = 4e7;
+    d.law.mu = 0.6;
+    d.dt = 5e-6;
+    d.fire = 1;
+    e = sbc_engine_create(&d, &err);
+    sbc_engine_set_frame(e, &f);
+    mass = malloc(sizeof(double) * (size_t)f.n);
+    sbc_engine_frame_masses(e, mass);
+    a = sbc_controller_create(&f, &s, mass, d.dt, d.law.kn, &err);
+    CHECK(a != NULL);
+    for (step = 0; a && step < 2000000 && !done; ++step) {
+        sbc_snapshot snap;
+        sbc_commands ca;
+        sbc_event ea, eb = SBC_EVENT_RELAXING;
+        sbc_engine_step(e, &err);
+        sbc_engine_snapshot(e, &snap);
+        ea = sbc_controller_step(a, &snap, &err);
+        if (b) {
+            sbc_commands cb;
+            eb = sbc_controller_step(b, &snap, &err);
+            cb = sbc_controller_commands(b);
+            ca = sbc_controller_commands(a);
+            mismatches += ea != eb || memcmp(ca.x, cb.x, sizeof(double) * 2 * (size_t)f.n) != 0;
+            if (ea == SBC_EVENT_INCREMENT || ea == SBC_EVENT_FINISHED)
+                mismatches += memcmp(sbc_controller_result(a), sbc_controller_result(b), sizeof(sbc_result)) != 0;
+        } else if (ea == SBC_EVENT_CORRECTED && sbc_controller_increment(a) == 3 && ++corrections == 5) {
+            nf = sbc_frame_state_size(sbc_controller_frame(a));
+            n = sbc_controller_state_size(a);
+            fstate = malloc(sizeof(double) * nf);
+            state = malloc(sizeof(double) * n);
+            sbc_frame_save(sbc_controller_frame(a), fstate);
+            sbc_controller_save(a, state);
+            CHECK(sbc_frame_load(&h, fstate, nf, &err) == SBC_OK);
+            b = sbc_controller_create(&f, &s, mass, d.dt, d.law.kn, &err);
+            CHECK(b != NULL && sbc_controller_load(b, state, n, &err) == SBC_OK);
+        }
+        done = ea == SBC_EVENT_FINISHED || ea == SBC_EVENT_FAILED;
+        ca = sbc_controller_commands(a);
+        sbc_engine_move_frame(e, &ca);
+    }
+    CHECK(b != NULL && done && mismatches == 0);
+    printf("  restart: mixed, saved in the first shear increment, continued with %ld mismatches\n", mismatches);
+    sbc_controller_free(a);
+    sbc_controller_free(b);
+    sbc_engine_free(e);
+    if (b) sbc_frame_free(&h);
+    sbc_frame_free(&f);
+    sbc_packing_free(&p);
+    free(mass);
+    free(state);
+    free(fstate);
 }
 
 void test_restart(void)
@@ -166,6 +249,7 @@ void test_restart(void)
     CHECK(sbc_controller_load(b, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "time step"));
     sbc_controller_free(b);
     corrupted_states(fstate, nf, state, n, &g, &s, mass, def.dt, def.law.kn);
+    mixed_continues();
     free(state);
     free(fstate);
     sbc_controller_free(a);
