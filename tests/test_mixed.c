@@ -7,6 +7,7 @@
 #include "check.h"
 #include "sbc/script.h"
 #include "csv_read.h"
+#include "layer.h"
 #include "tests.h"
 
 #include "sbc/controller.h"
@@ -173,8 +174,6 @@ void test_mixed(void)
     static const char *words[] = {"mixed", "F", "1", "0.004", "0", "1", "increments", "2", "stress", "P22",
                                   "-1.05e6", "2", "gain_force", "1", "gain_moment", "1", "tol_force", "1e-6",
                                   "tol_moment", "1e-6"};
-    sbc_generate_def g = sbc_generate_def_default();
-    sbc_engine_def d = sbc_engine_def_default();
     sbc_packing p;
     sbc_frame f;
     sbc_settings s;
@@ -183,35 +182,20 @@ void test_mixed(void)
     sbc_controller *c;
     sbc_snapshot snap;
     sbc_result rows[8];
-    double *mass, *a, *m, *X0;
+    double *mass, *a, *m;
     int nrows = 0, k, bottom_follows = 1;
     long step;
     lattice_layer();
-    g.n = 25;
-    g.r_min = 0.8e-3;
-    g.polydispersity = 1.5;
-    CHECK(sbc_generate_periodic(&g, &p, NULL, &err) == SBC_OK);
-    CHECK(sbc_frame_detect_packing(&f, &p, &err) == SBC_OK);
+    e = test_layer(&p, &f, 0);
+    CHECK(e != NULL);
+    if (!e) return;
     CHECK(sbc_settings_parse(&s, (int)(sizeof words / sizeof words[0]), words, &err) == SBC_OK);
     CHECK(sbc_settings_total_increments(&s) == 4);
-    d.n = p.n;
-    d.x = p.x;
-    d.r = p.r;
-    d.density = 1e4;
-    d.law.kn = 1e8;
-    d.law.ks = 4e7;
-    d.law.mu = 0.6;
-    d.dt = DT;
-    d.alpha = d.beta = 0.7;
-    e = sbc_engine_create(&d, &err);
-    sbc_engine_set_frame(e, &f);
     mass = malloc(sizeof(double) * (size_t)f.n);
     a = malloc(sizeof(double) * 2 * (size_t)f.n);
     m = malloc(sizeof(double) * (size_t)f.n);
-    X0 = malloc(sizeof(double) * 2 * (size_t)f.n);
-    memcpy(X0, f.X, sizeof(double) * 2 * (size_t)f.n);
     sbc_engine_frame_masses(e, mass);
-    c = sbc_controller_create(&f, &s, mass, DT, d.law.kn, &err);
+    c = sbc_controller_create(&f, &s, mass, DT, LAYER_KN, &err);
     CHECK(c != NULL);
     if (!c) return;
     sbc_engine_step(e, &err);
@@ -273,6 +257,6 @@ void test_mixed(void)
     sbc_engine_free(e);
     sbc_frame_free(&f);
     sbc_packing_free(&p);
-    free(mass); free(a); free(m); free(X0);
+    free(mass); free(a); free(m);
     mixed_preset();
 }

@@ -2,11 +2,11 @@
 /* Restart: the frame and the controller saved mid-run and loaded into new
  * objects continue exactly as the originals; contradicting settings fail. */
 #include "check.h"
+#include "layer.h"
 #include "tests.h"
 
 #include "sbc/controller.h"
 #include "sbc/engine.h"
-#include "sbc/generate.h"
 #include "sbc/packing.h"
 
 #include <math.h>
@@ -81,8 +81,6 @@ static void corrupted_states(const double *fstate, size_t nf, const double *stat
  * continues with the same commands and rows, bit for bit. */
 static void mixed_continues(void)
 {
-    sbc_generate_def g = sbc_generate_def_default();
-    sbc_engine_def d = sbc_engine_def_default();
     sbc_packing p;
     sbc_frame f, h;
     sbc_settings s;
@@ -93,26 +91,13 @@ static void mixed_continues(void)
     size_t n = 0, nf = 0;
     long step, mismatches = 0;
     int corrections = 0, done = 0;
-    g.n = 25;
-    g.r_min = 0.8e-3;
-    g.polydispersity = 1.5;
     parse(&s, "mixed F 1 0.004 0 1 increments 2 stress P22 -1.05e6 2 accuracy tight");
-    CHECK(sbc_generate_periodic(&g, &p, NULL, &err) == SBC_OK);
-    CHECK(sbc_frame_detect_packing(&f, &p, &err) == SBC_OK);
-    d.n = p.n;
-    d.x = p.x;
-    d.r = p.r;
-    d.density = 1e4;
-    d.law.kn = 1e8;
-    d.law.ks = 4e7;
-    d.law.mu = 0.6;
-    d.dt = 5e-6;
-    d.fire = 1;
-    e = sbc_engine_create(&d, &err);
-    sbc_engine_set_frame(e, &f);
+    e = test_layer(&p, &f, 1);
+    CHECK(e != NULL);
+    if (!e) return;
     mass = malloc(sizeof(double) * (size_t)f.n);
     sbc_engine_frame_masses(e, mass);
-    a = sbc_controller_create(&f, &s, mass, d.dt, d.law.kn, &err);
+    a = sbc_controller_create(&f, &s, mass, LAYER_DT, LAYER_KN, &err);
     CHECK(a != NULL);
     for (step = 0; a && step < 2000000 && !done; ++step) {
         sbc_snapshot snap;
@@ -137,7 +122,7 @@ static void mixed_continues(void)
             sbc_frame_save(sbc_controller_frame(a), fstate);
             sbc_controller_save(a, state);
             CHECK(sbc_frame_load(&h, fstate, nf, &err) == SBC_OK);
-            b = sbc_controller_create(&f, &s, mass, d.dt, d.law.kn, &err);
+            b = sbc_controller_create(&f, &s, mass, LAYER_DT, LAYER_KN, &err);
             CHECK(b != NULL && sbc_controller_load(b, state, n, &err) == SBC_OK);
         }
         done = ea == SBC_EVENT_FINISHED || ea == SBC_EVENT_FAILED;

@@ -1,0 +1,37 @@
+#include "layer.h"
+
+#include "sbc/generate.h"
+
+sbc_engine *test_layer(sbc_packing *p, sbc_frame *f, int fire)
+{
+    sbc_generate_def g = sbc_generate_def_default();
+    sbc_engine_def d = sbc_engine_def_default();
+    sbc_error err;
+    sbc_engine *e;
+    g.n = 25;
+    g.r_min = 0.8e-3;
+    g.polydispersity = 1.5;
+    if (sbc_generate_periodic(&g, p, NULL, &err) != SBC_OK)
+        return NULL;
+    if (sbc_frame_detect_packing(f, p, &err) != SBC_OK) {
+        sbc_packing_free(p);
+        return NULL;
+    }
+    d.n = p->n;
+    d.x = p->x;
+    d.r = p->r;
+    d.density = 1e4;
+    d.law.kn = LAYER_KN;
+    d.law.ks = 4e7;
+    d.law.mu = 0.6;
+    d.dt = LAYER_DT;
+    d.fire = fire;
+    d.alpha = d.beta = fire ? 0.0 : 0.7;
+    if (!(e = sbc_engine_create(&d, &err))) {
+        sbc_frame_free(f);
+        sbc_packing_free(p);
+        return NULL;
+    }
+    sbc_engine_set_frame(e, f);
+    return e;
+}

@@ -1,0 +1,19 @@
+/* Test helper: the 37-disc mixed layer of Sect. 5.3 used by several tests
+ * (generated periodic packing n0 = 25, R_min = 0.8 mm, polydispersity 1.5,
+ * seed 1; Table 6 frictional physics, dt = 5e-6 s). */
+#ifndef SBC_TEST_LAYER_H
+#define SBC_TEST_LAYER_H
+
+#include "sbc/engine.h"
+#include "sbc/frame.h"
+#include "sbc/packing.h"
+
+#define LAYER_DT 5e-6
+#define LAYER_KN 1e8
+
+/* Fills p and its detected frame f and returns the engine on them (frame
+ * set), damped by FIRE (fire = 1) or eq. 10 with 0.7 (fire = 0); NULL on
+ * failure. The caller frees all three. */
+sbc_engine *test_layer(sbc_packing *p, sbc_frame *f, int fire);
+
+#endif
