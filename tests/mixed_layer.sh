@@ -9,7 +9,7 @@
 # stress scale (max |sigma| of the run). Measured: LAMMPS 0.018 % in the stress
 # stage, 0.037 % once sheared; LIGGGHTS (sphere inertia 2/5 m r^2) 0.030 %, 0.024 %
 # (with the support held at x2 = X2 and P21 = 0 in the stress stage, before the
-# mixed condition followed the proof of eqs. 46-47: 0.17 %, 0.22 %; 0.23 %, 0.26 %).
+# mixed condition followed the proof of eqs. 46-47: 0.097 %, 0.13 %; 0.056 %, 0.042 %).
 # With this check's earlier words (relax 1e-5 20, fixed gains 1) LAMMPS was 0.02 % and 0.59 %: once
 # frictional contacts slide, the engines reach the sliding state along
 # different relaxation trajectories (LAMMPS integrates by velocity Verlet and
