@@ -294,10 +294,12 @@ static void start_increment(sbc_controller *c)
     begin_move(c, c->increment == 0, c->s.bc == SBC_BC_D ? relax_tol(&c->s) : first_tol(c));
 }
 
-/* Modes of each frame position from the edge modes of the settings. The
- * corners follow F in both components (D), as the paper's four corner nodes
- * do (Sect. 5.1: "the macroscopic deformation gradient F, which is followed
- * by the four corner nodes"), and as the corners of (P) do (eq. 17). */
+/* Modes of each frame position from the edge modes of the settings. Corners
+ * belong to their horizontal edge (bottom: BL, BR; top: TR, TL); on a periodic
+ * horizontal edge they follow F (D), as the corners of (P) do (eq. 17). The
+ * top corners of the layer stay T in y: made D (Sect. 5.1's "followed by the
+ * four corner nodes"), their reactions put 8 % into eq. 23's P22 on 120 discs
+ * (docs/servo_bc.md, "Mixed"). */
 static void assign_modes(sbc_controller *c)
 {
     static const int edge_of_side[5] = {-1, SBC_EDGE_BOTTOM, SBC_EDGE_RIGHT, SBC_EDGE_TOP, SBC_EDGE_LEFT};
