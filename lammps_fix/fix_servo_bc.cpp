@@ -16,6 +16,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <algorithm>
@@ -42,11 +43,12 @@ const double RESTART_MAGIC = 8.020001e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), per_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0)
+    Fix(lmp, narg, arg), ctl(nullptr), per_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0), seal_on(0), seal_energy(0.0)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
   std::memset(&last, 0, sizeof last);
+  std::memset(&seal, 0, sizeof seal);
   sbc_fire_start(&fire);
   if (sbc_settings_parse(&settings, narg - 3, arg + 3, &err) != SBC_OK)
     fail(err.message);
@@ -93,6 +95,7 @@ FixServoBC::~FixServoBC()
   atom->delete_callback(id, CALLBACK_RESTART);
   memory->destroy(per_atom);
   sbc_controller_free(ctl);
+  sbc_seal_free(&seal);
   sbc_frame_free(&frame);
   if (csv) fclose(csv);
 }
@@ -249,6 +252,13 @@ void FixServoBC::init()
   }
 
 
+  if (settings.seal && !seal_on) {    // the Verlet margin: a quarter of the smallest frame radius
+    sbc_error err;
+    if (sbc_seal_init(&seal, &frame, 0.25 * *std::min_element(frame.R, frame.R + frame.n), &err) != SBC_OK)
+      fail(err.message);
+    seal_on = 1;
+    seal_reaction.assign(2 * frame.n, 0.0);
+  }
   if (!ctl) {
     sbc_error err;
     ctl = sbc_controller_create(&frame, &settings, frame_mass.data(), update->dt, law.kn, &err);
@@ -316,6 +326,31 @@ void FixServoBC::initial_integrate(int)
       per_atom[i][1] = cmd.theta[q];
     }
   }
+}
+
+/* seal.h: the walls of the frame's polygon (at the commanded frame centres,
+   where initial_integrate put the frame atoms) on this rank's atoms; their
+   reactions on the frame wait in seal_reaction for frame_pass's sum */
+int FixServoBC::seal_slot(const void *self, int i)
+{
+  const FixServoBC *me = static_cast<const FixServoBC *>(self);
+  const int mask = me->atom->mask[i];
+  if (mask & me->frame_bit) return me->slot.at(me->atom->tag[i]);
+  return (mask & me->interior_bit) ? -1 : -2;
+}
+
+void FixServoBC::seal_pass()
+{
+  std::fill(seal_reaction.begin(), seal_reaction.end(), 0.0);
+  seal_energy = 0.0;
+  if (!seal_on || atom->nlocal == 0) return;
+  sbc_commands cmd = sbc_controller_commands(ctl);
+  sbc_seal_particles p = {atom->nlocal, &atom->x[0][0], &atom->f[0][0], 3, atom->radius, seal_slot, this};
+  sbc_error err;
+  // local indices change when LAMMPS re-neighbours: collect the candidates again
+  if (sbc_seal_forces(&seal, &frame, cmd.x, &p, law.kn, neighbor->ago == 0, seal_reaction.data(), &seal_energy,
+                      &err) != SBC_OK)
+    fail(err.message);
 }
 
 /* damping fire: the interior's sums of fire_damping.h over all ranks, and
@@ -423,7 +458,7 @@ void FixServoBC::contact_pass(double out[4])
       nc += 1.0;
     }
   }
-  out[0] = ep;
+  out[0] = ep + seal_energy;
   out[1] = ov;
   out[2] = nc;
   out[3] = fc;
@@ -451,6 +486,7 @@ void FixServoBC::frame_pass()
     rot += std::fabs(per_atom[i][1]);
     npart += 1.0;
   }
+  for (int k = 0; k < 2 * Q && seal_on; k++) buf[2 * Q + k] += seal_reaction[k];
   buf[6 * Q] = rot;
   buf[6 * Q + 1] = npart;
 }
@@ -494,6 +530,7 @@ void FixServoBC::post_force(int)
   const bool again = update->ntimestep == last_step;
   double interior_local[2], interior[2];
   sbc_fire_mix mix;
+  seal_pass();
   if (settings.damping == SBC_DAMPING_FIRE && !again) mix = fire_pass();
   interior_pass(again, settings.damping == SBC_DAMPING_FIRE && !again ? &mix : nullptr, interior_local);
   MPI_Allreduce(&interior_local[0], &interior[0], 1, MPI_DOUBLE, MPI_SUM, world);

@@ -34,6 +34,7 @@ extern "C" {
 #include "sbc/fire_damping.h"
 #include "sbc/frame.h"
 #include "sbc/saved.h"
+#include "sbc/seal.h"
 #include "sbc/time_step.h"
 #include "sbc/settings.h"
 }
@@ -86,7 +87,13 @@ class FixServoBC : public Fix {
   int any_free;                      // some frame rotation is free ((T)): integrated every step
   int since_check;                   // steps since the last confinement check (confine.h)
   sbc_fire_state fire;               // damping fire: FIRE's state (fire_damping.h)
+  sbc_seal seal;                     // keyword seal: walls on the frame's polygon (seal.h)
+  int seal_on;                       // seal initialised
+  std::vector<double> seal_reaction; // [2Q] the walls' reactions on the frame from this rank's atoms, N
+  double seal_energy;                // the walls' energy from this rank's atoms, J
 
+  void seal_pass();
+  static int seal_slot(const void *self, int i);
   sbc_fire_mix fire_pass();
   void interior_pass(bool again, const sbc_fire_mix *mix, double out[2]);
   void contact_pass(double out[4]);

@@ -19,4 +19,5 @@ void test_host(void);
 void test_decks(void);
 void test_bpm(void);
 void test_accuracy(void);
+void test_seal(void);
 #endif

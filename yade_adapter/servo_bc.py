@@ -79,6 +79,8 @@ def _library():
         'sbc_host_damping': (I, [P, pd, pd]),
         'sbc_host_fire_mix': (None, [P, pd, pd]),
         'sbc_host_confined': (I, [P, pd, I, ctypes.POINTER(L), pd, pd]),
+        'sbc_host_sealed': (I, [P]),
+        'sbc_host_seal': (I, [P, pd, pd, pd]),
     }
     for name, (res, args) in sig.items():
         fn = getattr(lib, name)
@@ -247,6 +249,12 @@ class ServoBC(object):
         self._row = (ctypes.c_double * ROW)()
         self._m = (ctypes.c_double * MEASURES)()
         self._fc_mean = 0.0       # the last measured mean |contact force|, N
+        # keyword seal (seal.h): the walls' forces, computed by the core each step
+        self._seal = lib.sbc_host_sealed(self._h) == 1
+        self._seal_states = [O.bodies[i].state for i in self.bodies]
+        self._seal_xy = (ctypes.c_double * (2 * n))()
+        self._seal_f = (ctypes.c_double * (2 * n))()
+        self._seal_energy = ctypes.c_double(0.0)
         _instances.append(self)
         # the PyRunner's command runs in __main__: a bound method placed there
         # costs a name lookup per step instead of an import and an index
@@ -415,9 +423,24 @@ class ServoBC(object):
                     if w != 0.0:
                         forces.addT(self.frame[q], (0.0, 0.0, -math.copysign(self._fire_beta * abs(t), w)))
 
+    def _seal_forces(self):
+        """keyword seal: the walls of the frame's polygon on the bodies (sbc_host_seal), added to
+        YADE's forces before anything is measured; the frame bodies' reactions included."""
+        self._seal_xy[:] = [c for st in self._seal_states for c in (st.pos[0], st.pos[1])]
+        touching = _core().sbc_host_seal(self._h, self._seal_xy, self._seal_f, ctypes.byref(self._seal_energy))
+        if touching < 0:
+            raise ServoBCError(_core().sbc_host_message(self._h).decode())
+        if touching:
+            f = self._seal_f
+            for k, i in enumerate(self.bodies):
+                if f[2 * k] != 0.0 or f[2 * k + 1] != 0.0:
+                    O.forces.addF(i, (f[2 * k], f[2 * k + 1], 0.0))
+
     def _step(self):
         lib = _core()
         m = self._m
+        if self._seal:
+            self._seal_forces()
         if self._fire:
             self._fire_mix()
         m[EK] = self._kinetic_energy()
@@ -425,7 +448,7 @@ class ServoBC(object):
         m[EP] = EP_UNMEASURED
         need = lib.sbc_host_needs(self._h, m)
         if need & NEED_CONTACTS:
-            m[EP] = self._potential_energy()
+            m[EP] = self._potential_energy() + (self._seal_energy.value if self._seal else 0.0)
             m[OVERLAP_SUM], m[CONTACT_COUNT], m[CONTACT_SUM] = self._contact_sums()
             self._fc_mean = m[CONTACT_SUM] / m[CONTACT_COUNT] if m[CONTACT_COUNT] > 0 else 0.0
             m[NET_MAX] = self._net_force_max(self._fc_mean)

@@ -45,6 +45,11 @@ void sbc_engine_free(sbc_engine *e);
  * for a free packing. The frame must outlive the engine. */
 void sbc_engine_set_frame(sbc_engine *e, const sbc_frame *frame);
 
+/* Switches the frame's seal on (seal.h: the edges of the polygon of the
+ * frame's centres are frictionless walls for the interior, kn of the contact
+ * law). After sbc_engine_set_frame, which switches it off again. */
+sbc_status sbc_engine_seal(sbc_engine *e, sbc_error *err);
+
 /* One time step: contact forces, moments and energies at the current
  * positions, and the interior particles advanced by the equations of motion
  * with damping. Frame particles keep their place (see sbc_engine_move_frame). */

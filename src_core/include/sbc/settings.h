@@ -62,6 +62,7 @@ typedef struct sbc_settings {
                                 (servo.h) must fall below this instead of tol_force, tol_moment; 0 */
     double predict;          /* inheritance factor n_f in [0, 1]; 0 = no prediction */
     int max_iterations;      /* servo iterations per increment; 10000 */
+    int seal;                /* 1: the edges of the frame's polygon are walls for the interior (seal.h); 0 */
     sbc_update update;       /* fixed (the paper's) or secant; fixed */
     char accuracy[16];       /* preset in force (keyword accuracy; balanced by default) */
     /* mixed only: edge_mode[edge][component] (SBC_EDGE_*, 0 = x, 1 = y); the

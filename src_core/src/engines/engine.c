@@ -1,6 +1,7 @@
 /* Embedded 2D disc engine (paper Sect. 2.2). */
 #include "sbc/engine.h"
 #include "sbc/fire_damping.h"
+#include "sbc/seal.h"
 
 #include "neighbor.h"
 
@@ -31,6 +32,10 @@ struct sbc_engine {
     sbc_pairs pairs;
     int stale; /* the pair list must be rebuilt before the next force evaluation */
     const sbc_frame *frame;
+    int sealed;              /* seal.h walls on the frame's polygon */
+    sbc_seal seal;
+    double *seal_reaction;   /* [2Q] N */
+    int *frame_slot;         /* [n] frame position of each particle, -1 interior */
     /* per-step measures */
     double ek, ep, overlap_sum, rotation_sum;
     double net_max, contact_force_sum; /* max |net force| on the interior, sum |f_c|, N */
@@ -59,6 +64,9 @@ void sbc_engine_free(sbc_engine *e)
     free(e->r); free(e->mass); free(e->inv_m); free(e->inv_I);
     free(e->kinematic);
     free(e->snap_x); free(e->snap_theta); free(e->snap_f); free(e->snap_tq);
+    sbc_seal_free(&e->seal);
+    free(e->seal_reaction);
+    free(e->frame_slot);
     sbc_pairs_free(&e->pairs);
     free(e);
 }
@@ -160,6 +168,12 @@ void sbc_engine_set_frame(sbc_engine *e, const sbc_frame *frame)
     int q;
     size_t nq = frame ? (size_t)frame->n : 0;
     memset(e->kinematic, 0, (size_t)e->n);
+    sbc_seal_free(&e->seal);
+    free(e->seal_reaction);
+    free(e->frame_slot);
+    e->seal_reaction = NULL;
+    e->frame_slot = NULL;
+    e->sealed = 0;
     free(e->snap_x); free(e->snap_theta); free(e->snap_f); free(e->snap_tq);
     e->snap_x = e->snap_theta = e->snap_f = e->snap_tq = NULL;
     e->frame = frame;
@@ -171,6 +185,57 @@ void sbc_engine_set_frame(sbc_engine *e, const sbc_frame *frame)
     e->snap_theta = malloc(sizeof(double) * nq);
     e->snap_f = malloc(sizeof(double) * 2 * nq);
     e->snap_tq = malloc(sizeof(double) * nq);
+}
+
+sbc_status sbc_engine_seal(sbc_engine *e, sbc_error *err)
+{
+    sbc_status st;
+    if (!e->frame)
+        return sbc_fail(err, SBC_ERR_INPUT, "engine: seal without a frame");
+    int k;
+    e->seal_reaction = malloc(sizeof(double) * 2 * (size_t)e->frame->n);
+    e->frame_slot = malloc(sizeof(int) * (size_t)e->n);
+    if (!e->seal_reaction || !e->frame_slot)
+        return sbc_fail(err, SBC_ERR_NOMEM, "engine: out of memory");
+    for (k = 0; k < e->n; ++k)
+        e->frame_slot[k] = -1;
+    for (k = 0; k < e->frame->n; ++k)
+        e->frame_slot[e->frame->particle[k]] = k;
+    st = sbc_seal_init(&e->seal, e->frame, e->pairs.skin, err);
+    e->sealed = st == SBC_OK;
+    return st;
+}
+
+static int frame_slot(const void *ctx, int k) { return ((const int *)ctx)[k]; }
+
+/* seal.h: the walls' forces on the interior, their reactions on the frame
+ * particles, and their energy in Ep */
+static sbc_status seal_step(sbc_engine *e, sbc_error *err)
+{
+    const sbc_frame *fr = e->frame;
+    sbc_seal_particles p;
+    double energy;
+    sbc_status st;
+    int q;
+    for (q = 0; q < fr->n; ++q) {
+        e->snap_x[2 * q] = e->x[2 * fr->particle[q]];
+        e->snap_x[2 * q + 1] = e->x[2 * fr->particle[q] + 1];
+    }
+    memset(e->seal_reaction, 0, sizeof(double) * 2 * (size_t)fr->n);
+    p.n = e->n;
+    p.x = e->x;
+    p.f = e->f;
+    p.stride = 2;
+    p.r = e->r;
+    p.frame = frame_slot;
+    p.ctx = e->frame_slot;
+    st = sbc_seal_forces(&e->seal, fr, e->snap_x, &p, e->law.kn, 0, e->seal_reaction, &energy, err);
+    for (q = 0; q < fr->n; ++q) {
+        e->f[2 * fr->particle[q]] += e->seal_reaction[2 * q];
+        e->f[2 * fr->particle[q] + 1] += e->seal_reaction[2 * q + 1];
+    }
+    e->ep += energy;
+    return st;
 }
 
 /* Velocities below 1e-120 (m/s, rad/s) and spring forces below 1e-120 N
@@ -371,6 +436,8 @@ sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err)
         pair_loop(e, 1, 0);
     else
         pair_loop(e, 0, 0);
+    if (e->sealed && seal_step(e, err) != SBC_OK)
+        return err->status;
     if (e->fire)
         integrate_interior(e, 2);
     else if (e->alpha > 0.0 || e->beta > 0.0)

@@ -360,6 +360,10 @@ static sbc_status cmd_run(script *s, sbc_error *err)
                         s->dt, s->settings.max_relax_steps, dtc);
     }
     sbc_engine_set_frame(r.engine, &r.frame);
+    if (s->settings.seal && sbc_engine_seal(r.engine, err) != SBC_OK) {
+        run_free(&r);
+        return err->status;
+    }
     r.mass = malloc(sizeof(double) * (size_t)r.frame.n);
     r.fx = malloc(sizeof(double) * 2 * (size_t)r.frame.n);
     if (!r.mass || !r.fx) {
@@ -441,6 +445,13 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         sbc_engine_move_frame(r.engine, &cmd);
         if ((st = sbc_engine_step(r.engine, err)) != SBC_OK) break;
         sbc_engine_snapshot(r.engine, &snap);
+    }
+    if (st != SBC_OK && s->vtk_every) { /* the state the run stopped in, for a look in ParaView */
+        sbc_error verr;
+        sbc_engine_view view = sbc_engine_get_view(r.engine);
+        if (sbc_vtk_write(s->vtk_prefix, r.increment_now, &view, &verr) == SBC_OK && s->log)
+            fprintf(s->log, "servo_bc: the state the run stopped in is %s_particles_%06d.vtk\n", s->vtk_prefix,
+                    r.increment_now);
     }
     {
         sbc_error perr;

@@ -5,6 +5,7 @@
 #include "sbc/confine.h"
 #include "sbc/packing.h"
 #include "sbc/results.h"
+#include "sbc/seal.h"
 #include "sbc/time_step.h"
 #include "io/words.h"
 
@@ -21,7 +22,42 @@ struct sbc_host {
     sbc_error err;
     int pending; /* a converged increment's row, written once sbc_host_confined passes it */
     sbc_fire_state fire; /* damping fire */
+    /* keyword seal (seal.h) */
+    int sealed, n;
+    sbc_seal seal;
+    double *r, kn;    /* [n] radii (m), N/m */
+    int *slot;        /* [n] frame position, -1 interior */
+    double *reaction; /* [2Q] N */
 };
+
+static int host_slot(const void *ctx, int k) { return ((const int *)ctx)[k]; }
+
+/* the seal's state at creation; 0, or 1 with the message in err */
+static int seal_start(sbc_host *h, int n, const double *r, double kn, sbc_error *err)
+{
+    int k;
+    double rmin = r[0];
+    h->n = n;
+    h->kn = kn;
+    h->r = malloc(sizeof(double) * (size_t)n);
+    h->slot = malloc(sizeof(int) * (size_t)n);
+    h->reaction = malloc(sizeof(double) * 2 * (size_t)h->frame.n);
+    if (!h->r || !h->slot || !h->reaction) {
+        sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
+        return 1;
+    }
+    for (k = 0; k < n; ++k) {
+        h->r[k] = r[k];
+        h->slot[k] = -1;
+        rmin = fmin(rmin, r[k]);
+    }
+    for (k = 0; k < h->frame.n; ++k)
+        h->slot[h->frame.particle[k]] = k;
+    if (sbc_seal_init(&h->seal, &h->frame, 0.25 * rmin, err) != SBC_OK)
+        return 1;
+    h->sealed = 1;
+    return 0;
+}
 
 /* the pending row to the CSV; 0, or 1 with the message in h->err */
 static int write_pending(sbc_host *h)
@@ -132,6 +168,8 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
     free(frame_mass);
     if (!h->ctl)
         return fail_create(h, &err, msg, cap);
+    if (h->settings.seal && seal_start(h, n, r, kn, &err))
+        return fail_create(h, &err, msg, cap);
     if (h->settings.file[0] && sbc_csv_open(&h->csv, h->settings.file, &err) != SBC_OK)
         return fail_create(h, &err, msg, cap);
     return h;
@@ -145,6 +183,10 @@ void sbc_host_free(sbc_host *h)
         write_pending(h);
     sbc_controller_free(h->ctl);
     sbc_frame_free(&h->frame);
+    sbc_seal_free(&h->seal);
+    free(h->r);
+    free(h->slot);
+    free(h->reaction);
     if (h->csv)
         fclose(h->csv);
     free(h);
@@ -164,6 +206,34 @@ void sbc_host_fire_mix(sbc_host *h, const double *sums, double *mix)
     mix[1] = m.push;
     mix[2] = m.spin;
     mix[3] = m.stop;
+}
+
+int sbc_host_sealed(const sbc_host *h) { return h->sealed; }
+
+int sbc_host_seal(sbc_host *h, const double *xy, double *force, double *energy)
+{
+    sbc_seal_particles p;
+    int q;
+    memset(force, 0, sizeof(double) * 2 * (size_t)h->n);
+    *energy = 0.0;
+    if (!h->sealed)
+        return 0;
+    memset(h->reaction, 0, sizeof(double) * 2 * (size_t)h->frame.n);
+    p.n = h->n;
+    p.x = xy;
+    p.f = force;
+    p.stride = 2;
+    p.r = h->r;
+    p.frame = host_slot;
+    p.ctx = h->slot;
+    if (sbc_seal_forces(&h->seal, &h->frame, sbc_controller_commands(h->ctl).x, &p, h->kn, 0, h->reaction, energy,
+                        &h->err) != SBC_OK)
+        return -1;
+    for (q = 0; q < h->frame.n; ++q) {
+        force[2 * h->frame.particle[q]] += h->reaction[2 * q];
+        force[2 * h->frame.particle[q] + 1] += h->reaction[2 * q + 1];
+    }
+    return h->seal.contacts;
 }
 
 int sbc_host_frame_size(const sbc_host *h) { return h->frame.n; }

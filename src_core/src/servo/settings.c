@@ -336,6 +336,12 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             else if (w)
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'update': mode '%s' is not valid (expected fixed or secant)",
                               w);
+        } else if (strcmp(key, "seal") == 0) {
+            const char *w = next_word(&c, "yes|no", &st);
+            if (w && (strcmp(w, "yes") == 0 || strcmp(w, "no") == 0))
+                s->seal = strcmp(w, "yes") == 0;
+            else if (w)
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'seal': value '%s' is not valid (expected yes or no)", w);
         } else if (strcmp(key, "max_iterations") == 0) {
             st = read_int(&c, "K", 1, 1000000000L, &iv);
             s->max_iterations = (int)iv;
@@ -370,7 +376,7 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
                 st = sbc_fail(err, SBC_ERR_INPUT,
                               "unknown keyword '%s' (expected F, increments, balance, relax, speed, max_relax_steps, damping, "
                               "gain_force, gain_moment, gain_deformation, tol_force, tol_moment, tol_deformation, "
-                              "predict, update, accuracy, tol_relative, stress, bottom, right, top, left, max_iterations, frame or file)",
+                              "predict, update, accuracy, tol_relative, stress, bottom, right, top, left, seal, max_iterations, frame or file)",
                               key);
         }
     }
