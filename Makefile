@@ -8,6 +8,7 @@
 #   make yade     the YADE engine's library (build/libservo_bc.so) and the Debian YADE package
 #   make compare CASE=FILE.sbc   one case on every engine, report in out/compare/ (docs/cross-host.md)
 #   make bench    benchmarks (prints figures; LAMMPS side when installed)
+#   make figures  every figure and table of docs/reproduction-*.md, regenerated (hours; FIGURES=... for some)
 #   make fuzz     libFuzzer campaigns over the core's input surfaces (FUZZ_RUNS per harness; docs/reliability.md)
 
 CC      ?= cc
@@ -35,13 +36,16 @@ FUZZ_RUNS  ?= 1000000
 FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src -DSBC_PACKING_MAX=64L
 
 .PHONY: all demo compare check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
-  check-yade lammps liggghts fuzz \
+  check-yade lammps liggghts fuzz figures \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
 $(B)/core/%.o: src_core/src/%.c $(CORE_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -c $< -o $@
+
+figures: all
+	bash scripts/figures.sh
 
 $(B)/libservo_bc.a: $(CORE_OBJ)
 	ar rcs $@ $^
@@ -78,7 +82,9 @@ deps:
 check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	$(B)/run_tests $(B)/servo-bc
 	bash tests/path_error.sh
+	bash tests/splice_tables.sh
 	bash tests/stability.sh $(B)
+	bash tests/traction_irregular.sh $(B)
 
 check-sanitize: $(B)/run_tests_san $(B)/servo-bc $(B)/servo-bc-plot $(FUZZ_REPLAY) $(B)/fuzz/corpus/restart/seed.bin
 	ASAN_OPTIONS=detect_leaks=1 $(B)/run_tests_san $(B)/servo-bc

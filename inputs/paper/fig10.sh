@@ -7,7 +7,7 @@
 # 1800). A run that stops early ((T) stagnates, see the docs) enters the
 # full-path table with its last F12; the second table integrates every run
 # over the range all of them reached, so that the norms compare.
-#   fig10.sh [SET]     SET = table4 (default) or active
+#   fig10.sh [SET]     SET = table4 (default), active or converged (irregular_case.sh)
 set -euo pipefail
 . "$(dirname "$0")/common.sh"
 set=${1:-table4}
@@ -38,6 +38,9 @@ for range in full common; do
     echo "$row$ends" >> "$table"
   done
   echo "$range path$([ $range = common ] && echo " (F12 <= $fc)"):"; cat "$table"
+  # the same as a table for the page (make figures): out/paper/fig10_SET_RANGE.md
+  awk -F, 'NR == 1 { print "| particles | (D) | (P) | (T) | (D) to F̄12 | (P) to | (T) to |"; print "| --- | --- | --- | --- | --- | --- | --- |"; next }
+    { printf "| %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, $6, $7 }' "$table" > "${table%.csv}.md"
   # one file per BC for the overlay: particles,norm
   series=()
   # a BC enters the full-path picture only when all its runs reached F12 = 0.5
