@@ -6,6 +6,7 @@
 #include "tests.h"
 
 #include "sbc/engine.h"
+#include "sbc/host.h"
 #include "sbc/script.h"
 #include "sbc/seal.h"
 #include "sbc/settings.h"
@@ -306,8 +307,53 @@ static void keyword(void)
     CHECK(sbc_settings_parse(&s, 5, no, &err) == SBC_ERR_INPUT && strstr(err.message, "seal"));
 }
 
+/* The host handle (YADE's way in): the walls' forces for all particles at
+ * once, reactions on the frame particles included. A 5 x 5 lattice without
+ * the bottom middle disc, the disc above the gap lowered to s = 0.3 r over
+ * the line of the bottom frame centres: kn (r/2 - 0.3 r) upwards on it, half
+ * of it downwards on each frame disc beside the gap; none before it is
+ * lowered; none without the keyword. */
+static void host_handle(void)
+{
+    const double r = 1e-3, kn = 1e4, m = 2e3 * M_PI * r * r;
+    double xy[48], rad[24], mass[24], f[48], e;
+    int i, j, n = 0, gap = -1, left = -1, right = -1, sealed, list[1] = {0};
+    char msg[256];
+    for (j = 0; j < 5; ++j)
+        for (i = 0; i < 5; ++i) {
+            if (i == 2 && j == 0)
+                continue;
+            if (i == 2 && j == 1) gap = n;
+            if (i == 1 && j == 0) left = n;
+            if (i == 3 && j == 0) right = n;
+            xy[2 * n] = 2e-3 * i;
+            xy[2 * n + 1] = 2e-3 * j;
+            rad[n] = r;
+            mass[n] = m;
+            ++n;
+        }
+    for (sealed = 0; sealed < 2; ++sealed) {
+        sbc_host *h = sbc_host_create(sealed ? "D F 1 0 0 0.99 seal yes" : "D F 1 0 0 0.99", n, xy, rad, mass, 0, list,
+                                      1e-5, kn, msg, sizeof msg);
+        CHECK(h != NULL);
+        if (!h)
+            continue;
+        CHECK(sbc_host_sealed(h) == sealed);
+        CHECK(sbc_host_seal(h, xy, f, &e) == 0 && f[2 * gap + 1] == 0.0 && e == 0.0);
+        xy[2 * gap + 1] = 0.3 * r;
+        CHECK(sbc_host_seal(h, xy, f, &e) == sealed);
+        CHECK_REL(f[2 * gap + 1], sealed ? kn * 0.2 * r : 0.0, 1e-12);
+        CHECK_REL(f[2 * left + 1], sealed ? -0.5 * kn * 0.2 * r : 0.0, 1e-12);
+        CHECK_REL(f[2 * right + 1], sealed ? -0.5 * kn * 0.2 * r : 0.0, 1e-12);
+        CHECK_REL(e, sealed ? 0.5 * kn * 0.04 * r * r : 0.0, 1e-12);
+        xy[2 * gap + 1] = 2e-3;
+        sbc_host_free(h);
+    }
+}
+
 void test_seal(void)
 {
+    host_handle();
     keyword();
     closed_form();
     energy_gradient();

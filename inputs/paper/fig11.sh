@@ -33,7 +33,7 @@ case $which in
 esac
 case $set in
   converged) words="seal yes max_iterations 100000" suffix= ;;
-  paper) words="relax 1e-3 20 damping 0.7 0.7 gain_force 1 gain_moment 1 tol_force 1e-6 tol_moment 1e-6 max_iterations 100000" suffix=_paper ;;
+  paper) words="accuracy paper relax 1e-3 20 damping 0.7 0.7 gain_force 1 gain_moment 1 tol_force 1e-6 tol_moment 1e-6 max_iterations 100000" suffix=_paper ;;
   *) echo "fig11.sh: SET must be converged or paper, got '$set'" >&2; exit 2 ;;
 esac
 for law in $laws; do

@@ -27,7 +27,7 @@ case "$set/$bc" in
   converged/*) servo="seal yes" iterations=200000 ;;
   *) echo "irregular_case.sh: SET must be table4, active or converged" >&2; exit 2 ;;
 esac
-packing="read_packing $out/packing_$n0.txt" dt=1e-6 paper_words="relax 1e-3 20 damping 0.7 0.7" iterations=${iterations:-100000}
+packing="read_packing $out/packing_$n0.txt" dt=1e-6 paper_words="accuracy paper relax 1e-3 20 damping 0.7 0.7" iterations=${iterations:-100000}
 if [ "$set" = converged ]; then
   packing="generate periodic n0 $n0 rmin 0.67e-3 polydispersity 2 seed 1 strain 0.01" dt=7.5e-5 paper_words=
 fi

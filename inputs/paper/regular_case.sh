@@ -26,7 +26,7 @@ lattice square $side $side spacing 2.0e-3 radius 1.02e-3
 contact frictional kn 1e4 ks 2e3 mu 0.4
 density 2e3
 timestep 1e-6
-servo_bc $bc F 0.97 -0.3 -0.3 0.97 increments 300 relax 1e-3 20 damping 0.7 0.7 $servo predict $predict max_iterations 100000 file $out/$name.csv
+servo_bc $bc F 0.97 -0.3 -0.3 0.97 increments 300 accuracy paper relax 1e-3 20 damping 0.7 0.7 $servo predict $predict max_iterations 100000 file $out/$name.csv
 run
 SBC
 "$top/build/servo-bc" "$out/$name.sbc" > "$out/$name.log"

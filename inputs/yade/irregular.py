@@ -12,7 +12,7 @@ n0, bc, out, *rest = args('N0 BC OUT.csv [INCREMENTS]', 3)
 inc = int(rest[0]) if rest else 100
 packing = runner_packing(['dimension 2', 'generate periodic n0 %s rmin 0.67e-3 polydispersity 2 seed 1' % n0],
                          out + '.packing')
-words = ('%s F 1 %.17g 0 1 increments %d relax 1e-3 20 damping 0.7 0.7 gain_force 1e2 gain_moment 2e2 '
+words = ('%s F 1 %.17g 0 1 increments %d accuracy paper relax 1e-3 20 damping 0.7 0.7 gain_force 1e2 gain_moment 2e2 '
          'gain_deformation 2e-5 tol_force 1e-6 tol_moment 1e-6 tol_deformation 1e-1 frame %d file %s'
          % (bc, 0.5 * inc / 100.0, inc, servo_bc.FRAME_MASK, out))
 servo_bc.run_case(packing, words, density=2e3, kn=1e4, ks=2e3, mu=0.4, dt=1e-6)
