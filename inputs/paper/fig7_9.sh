@@ -38,7 +38,7 @@ for bc in D P T; do runs+=("$out/irregular_${bc}_200_${set}.csv" "($bc)"); done
   echo "| BC | last F̄12 | path norm of eq. 42 |"
   echo "| --- | --- | --- |"
   for bc in D P T; do
-    echo "| ($bc) | $(last_F12 "$out/irregular_${bc}_200_${set}.csv") | $(path_norm "$out/irregular_${bc}_200_${set}.csv" "$scale") |"
+    echo "| ($bc) | $(printf %.3f "$(last_F12 "$out/irregular_${bc}_200_${set}.csv")") | $(path_norm "$out/irregular_${bc}_200_${set}.csv" "$scale") |"
   done
 } > "$out/fig7_9_$set.md"
 cat "$out/fig7_9_$set.md"
