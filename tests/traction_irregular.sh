@@ -12,7 +12,7 @@
 # Usage: traction_irregular.sh [BUILD-DIR]
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
-B=${1:-$top/build}
+B=$(cd "${1:-$top/build}" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cat > "$tmp/T.sbc" <<EOF

@@ -23,7 +23,7 @@ struct sbc_host {
     int pending; /* a converged increment's row, written once sbc_host_confined passes it */
     sbc_fire_state fire; /* damping fire */
     /* keyword seal (seal.h) */
-    int sealed, n;
+    int sealed, n;    /* n: the creation's particles */
     sbc_seal seal;
     double *r, kn;    /* [n] radii (m), N/m */
     int *slot;        /* [n] frame position, -1 interior */
@@ -37,7 +37,6 @@ static int seal_start(sbc_host *h, int n, const double *r, double kn, sbc_error 
 {
     int k;
     double rmin = r[0];
-    h->n = n;
     h->kn = kn;
     h->r = malloc(sizeof(double) * (size_t)n);
     h->slot = malloc(sizeof(int) * (size_t)n);
@@ -168,6 +167,7 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
     free(frame_mass);
     if (!h->ctl)
         return fail_create(h, &err, msg, cap);
+    h->n = n;
     if (h->settings.seal && seal_start(h, n, r, kn, &err))
         return fail_create(h, &err, msg, cap);
     if (h->settings.file[0] && sbc_csv_open(&h->csv, h->settings.file, &err) != SBC_OK)
