@@ -20,4 +20,5 @@ void test_decks(void);
 void test_bpm(void);
 void test_accuracy(void);
 void test_seal(void);
+void test_bpm_host(void);
 #endif

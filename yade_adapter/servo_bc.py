@@ -79,6 +79,12 @@ def _library():
         'sbc_host_damping': (I, [P, pd, pd]),
         'sbc_host_fire_mix': (None, [P, pd, pd]),
         'sbc_host_confined': (I, [P, pd, I, ctypes.POINTER(L), pd, pd]),
+        'sbc_bpm_host_create': (P, [ctypes.c_char_p, D, D, D, I, pd, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
+        'sbc_bpm_host_bond_count': (I, [P]),
+        'sbc_bpm_host_loads': (I, [P, pd, pd, pd, D, pd]),
+        'sbc_bpm_host_strain_energy': (D, [P]),
+        'sbc_bpm_critical_dt': (D, [P]),
+        'sbc_bpm_destroy': (None, [P]),
         'sbc_host_sealed': (I, [P]),
         'sbc_host_seal': (I, [P, pd, pd, pd]),
     }
@@ -585,3 +591,66 @@ class ServoBC(object):
     def plot_data(self):
         """The converged increments as columns, e.g. for yade.plot.data."""
         return {c: [row[c] for row in self.rows] for c in COLUMNS}
+
+
+class Bonds(object):
+    """The thesis' 3D bonded particle model on YADE spheres (bpm_host.h): bonds between the
+    bodies that touch, Timoshenko beams (model='beam', E_b = E Pa, nu_b = nu) or parallel
+    bonds (model='parallel', k^n = E / 2 r_min, k^s = k^n / 4.2), bond radius alpha r_min.
+    The core keeps the bonds and their state and runs the bond loop in C; `engine` (a
+    PyRunner for every step, between ForceResetter and NewtonIntegrator) hands it the
+    bodies' centres and velocities and adds the bonds' forces and moments to O.forces.
+    critical_dt(): eq. 48 of the thesis, 0.22 sqrt(m_min / k_max), s."""
+
+    def __init__(self, bodies, model='beam', E=4e9, nu=0.3, alpha=1.0):
+        lib = _core()
+        self.bodies = list(bodies)
+        n = len(self.bodies)
+        x, r, m = [], [], []
+        for i in self.bodies:
+            b = O.bodies[i]
+            if b is None or not hasattr(b.shape, 'radius'):
+                raise ServoBCError('servo_bc: bonds: body %r is not a sphere' % (i,))
+            x += [b.state.pos[0], b.state.pos[1], b.state.pos[2]]
+            r.append(b.shape.radius)
+            m.append(b.state.mass)
+        msg = ctypes.create_string_buffer(512)
+        self._h = lib.sbc_bpm_host_create(str(model).encode(), float(E), float(nu), float(alpha), n, _doubles(x),
+                                          _doubles(r), _doubles(m), msg, 512)
+        if not self._h:
+            raise ServoBCError('servo_bc: ' + msg.value.decode())
+        self.count = lib.sbc_bpm_host_bond_count(self._h)
+        self._states = [O.bodies[i].state for i in self.bodies]
+        self._x, self._v, self._w = [(ctypes.c_double * (3 * n))() for _ in range(3)]
+        self._load = (ctypes.c_double * (6 * n))()
+        _instances.append(self)
+        name = '_servo_bc_bonds_%d' % (len(_instances) - 1)
+        setattr(sys.modules['__main__'], name, self.step)
+        self.engine = PyRunner(command='%s()' % name, iterPeriod=1, label='servo_bc_bonds_%d' % (len(_instances) - 1))
+
+    def __del__(self):
+        if getattr(self, '_h', None) and _lib is not None:
+            _lib.sbc_bpm_destroy(self._h)
+            self._h = None
+
+    def critical_dt(self):
+        return _core().sbc_bpm_critical_dt(self._h)
+
+    def strain_energy(self):
+        """The bonds' strain energy (eq. 50, or the beams' u K u / 2), J."""
+        return _core().sbc_bpm_host_strain_energy(self._h)
+
+    def step(self):
+        """Called by the PyRunner each step: YADE's velocities here are v(t - dt/2)."""
+        st = self._states
+        self._x[:] = [c for s in st for c in (s.pos[0], s.pos[1], s.pos[2])]
+        self._v[:] = [c for s in st for c in (s.vel[0], s.vel[1], s.vel[2])]
+        self._w[:] = [c for s in st for c in (s.angVel[0], s.angVel[1], s.angVel[2])]
+        load = self._load
+        if _core().sbc_bpm_host_loads(self._h, self._x, self._v, self._w, O.dt, load):
+            raise ServoBCError('servo_bc: bonds: a load stopped being finite at step %d (time step %g s against '
+                               'the critical %g s)' % (O.iter, O.dt, self.critical_dt()))
+        forces = O.forces
+        for k, i in enumerate(self.bodies):
+            forces.addF(i, (load[6 * k], load[6 * k + 1], load[6 * k + 2]))
+            forces.addT(i, (load[6 * k + 3], load[6 * k + 4], load[6 * k + 5]))

@@ -35,6 +35,33 @@ else
   fail=$((fail + 1)); echo "FAIL yade batch mode with bad words (exit $status):"; tail -3 "$tmp/bad.log"
 fi
 
+# the thesis' Appendix B beam through the core's bonds (servo_bc.Bonds, bpm_host.h):
+# the midspan deflection of eq. B1 to 1e-4, and Table B1's delta_DEM (mm, 5 digits)
+beam=$here/../../inputs/yade/bpm_beam.py
+for pair in 3:0.0065436 5:0.038551 7:0.12148 11:0.54201; do
+  n=${pair%%:*} thesis=${pair#*:}
+  yade -n -x "$beam" "$n" "$tmp/beam_$n.txt" > "$tmp/beam_$n.log" 2>&1
+  got=$(awk '$1 == "deflection" { print $2 }' "$tmp/beam_$n.txt" 2>/dev/null)
+  verdict=$(awk -v n="$n" -v d="${got:-nan}" -v t="$thesis" 'BEGIN {
+      R = 0.1; E = 4e9; nu = 0.3; G = E / (2 * (1 + nu)); pi = atan2(0, -1); I = pi * R^4 / 4; A = pi * R * R
+      Le = 2 * R * (n - 1); b1 = 1e3 * Le^3 / (48 * E * I) + 1e3 * Le * (10 / 9) / (4 * G * A)
+      e1 = (d - b1) / b1; e2 = (1e3 * d - t) / t; if (e1 < 0) e1 = -e1; if (e2 < 0) e2 = -e2
+      printf "%s %.3g %.3g %.9g", (d == d + 0 && e1 <= 1e-4 && e2 <= 1.5e-4) ? "ok" : "bad", e1, e2, b1 }')
+  set -- $verdict
+  if [ "$1" = ok ]; then
+    pass=$((pass + 1)); echo "yade beam of $n spheres: deflection $got m, eq. B1 $4 m (relative $2), Table B1 $thesis mm (relative $3)"
+  else
+    fail=$((fail + 1)); echo "FAIL yade beam of $n spheres: deflection ${got:-none} m against eq. B1 $4 m:"; tail -3 "$tmp/beam_$n.log"
+  fi
+done
+yade -n -x "$beam" 4 "$tmp/beam_4.txt" > "$tmp/beam_4.log" 2>&1
+status=$?
+if [ $status -ne 0 ] && grep -q "N must be odd and at least 3, got 4" "$tmp/beam_4.log"; then
+  pass=$((pass + 1)); echo "yade beam refuses an even N (exit $status)"
+else
+  fail=$((fail + 1)); echo "FAIL yade beam with N = 4 (exit $status):"; tail -3 "$tmp/beam_4.log"
+fi
+
 rm -rf "$tmp"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

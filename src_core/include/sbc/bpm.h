@@ -114,6 +114,12 @@ sbc_status sbc_bpm_bond_touching(sbc_bpm *e, sbc_error *err);
  * there is no bond. */
 double sbc_bpm_critical_dt(const sbc_bpm *e);
 
+/* The bonds' loads (force, moment: 6 per sphere, N and N m) at the centres
+ * e->x, from the motion dt (v, w) of the step (eqs. 10-34), added to load;
+ * the bonds' state advances by that step and failing bonds break. The step
+ * of sbc_bpm_step, and the whole of a host's bond step (bpm_host.h). */
+void sbc_bpm_bond_loads(sbc_bpm *e, double *load);
+
 /* One time step of length e->dt. SBC_ERR_NUMERIC when a value stops being
  * finite (the step and the sphere are named). */
 sbc_status sbc_bpm_step(sbc_bpm *e, sbc_error *err);

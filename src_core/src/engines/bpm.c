@@ -328,7 +328,7 @@ static void break_bond(sbc_bpm *e, size_t k)
 
 /* Bond loads at t from the increments dt v(t - dt/2), eqs. 10-34; adds the
  * forces to load (6 per sphere). */
-static void bond_loads(sbc_bpm *e, double *load)
+void sbc_bpm_bond_loads(sbc_bpm *e, double *load)
 {
     double dt = e->dt;
     size_t k;
@@ -419,7 +419,7 @@ sbc_status sbc_bpm_step(sbc_bpm *e, sbc_error *err)
     if (!(dt > 0.0))
         return sbc_fail(err, SBC_ERR_INPUT, "3D engine: time step %g (expected > 0)", dt);
     memset(load, 0, 6 * e->n * sizeof *load);
-    bond_loads(e, load);
+    sbc_bpm_bond_loads(e, load);
     dashpot_forces(e, fdamp);
     for (i = 0; i < e->n; ++i) {
         for (k = 0; k < 6; ++k) {

@@ -1,0 +1,38 @@
+/* servo_bc: the 3D bond models (bpm.h, bpm_bond.h) for a host that
+ * integrates the spheres itself and reaches C through a foreign-function
+ * interface (YADE's Python via ctypes): plain types only.
+ *
+ * The host keeps positions, velocities and the integration; the core keeps
+ * the bonds and their state. Per host step, after the host's forces are
+ * reset and before its integrator: sbc_bpm_host_loads with the spheres'
+ * centres and their velocities of the step (v(t - dt/2) in a leapfrog
+ * scheme), then add the loads to the spheres. The bond loop runs in C. */
+#ifndef SBC_BPM_HOST_H
+#define SBC_BPM_HOST_H
+
+#include <stddef.h>
+
+#include "sbc/bpm.h"
+
+/* Bonds between every pair of the n spheres (centres x [3n], radii r [n],
+ * masses m [n]: m, kg) that touch (gap <= 1e-9 of the radii's sum), with
+ * model "beam" (Timoshenko beams, E_b = E Pa, nu_b = nu) or "parallel"
+ * (parallel bonds, k^n = E / 2 r_p with r_p the smallest radius, k^s =
+ * k^n / 4.2: thesis Table 3); bond radius alpha r_min (eq. 9). Returns NULL
+ * with the message in msg (cap bytes) on bad input or when no pair touches. */
+sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alpha, int n, const double *x,
+                             const double *r, const double *m, char *msg, size_t cap);
+
+/* Bonds formed (and intact: only a strength breaks them, none here). */
+int sbc_bpm_host_bond_count(const sbc_bpm *e);
+
+/* One host step of length dt (s): the bonds' loads at centres x [3n] (m)
+ * from velocities v [3n] (m/s) and angular velocities w [3n] (rad/s) into
+ * load [6n] (force N, moment N m per sphere; overwritten). Returns 0, or 1
+ * for a non-finite load. */
+int sbc_bpm_host_loads(sbc_bpm *e, const double *x, const double *v, const double *w, double dt, double *load);
+
+/* The bonds' strain energy (eq. 50 or the beams' 1/2 u K u), J. */
+double sbc_bpm_host_strain_energy(const sbc_bpm *e);
+
+#endif

@@ -1,0 +1,79 @@
+/* servo_bc: the 3D bond models behind a host's own integrator (bpm_host.h) */
+#include "sbc/bpm_host.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static sbc_bpm *fail_create(sbc_bpm *e, char *msg, size_t cap, const char *text)
+{
+    if (msg && cap > 0)
+        snprintf(msg, cap, "%s", text);
+    sbc_bpm_destroy(e);
+    return NULL;
+}
+
+sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alpha, int n, const double *x,
+                             const double *r, const double *m, char *msg, size_t cap)
+{
+    sbc_bpm_settings set = sbc_bpm_settings_default();
+    sbc_bpm *e = NULL;
+    sbc_error err;
+    char text[SBC_ERROR_LEN];
+    double rmin = HUGE_VAL;
+    int i;
+    if (!model || (strcmp(model, "beam") != 0 && strcmp(model, "parallel") != 0))
+        return fail_create(NULL, msg, cap, "bonds: model must be beam or parallel");
+    if (!(E > 0.0) || !isfinite(E) || !(nu > -1.0 && nu < 0.5) || !(alpha > 0.0) || !isfinite(alpha)) {
+        snprintf(text, sizeof text, "bonds: E %g Pa, nu %g, alpha %g (expected E > 0, -1 < nu < 0.5, alpha > 0)", E,
+                 nu, alpha);
+        return fail_create(NULL, msg, cap, text);
+    }
+    if (n < 2 || !x || !r || !m)
+        return fail_create(NULL, msg, cap, "bonds: fewer than 2 spheres, or their centres, radii or masses missing");
+    for (i = 0; i < n; ++i)
+        if (r[i] > 0.0 && r[i] < rmin)
+            rmin = r[i];
+    set.model = strcmp(model, "beam") == 0 ? SBC_BOND_BEAM : SBC_BOND_PARALLEL;
+    set.beam.E = E;
+    set.beam.nu = nu;
+    set.parallel = sbc_bpm_parallel_law(E, rmin, 4.2);
+    set.alpha = alpha;
+    if (sbc_bpm_create(&set, &e, &err) != SBC_OK)
+        return fail_create(e, msg, cap, err.message);
+    for (i = 0; i < n; ++i) {
+        double rho = m[i] / (4.0 / 3.0 * SBC_PI * r[i] * r[i] * r[i]);
+        if (!(r[i] > 0.0) || !(m[i] > 0.0) || !isfinite(rho) || !isfinite(x[3 * i]) || !isfinite(x[3 * i + 1]) ||
+            !isfinite(x[3 * i + 2])) {
+            snprintf(text, sizeof text, "bonds: sphere %d: radius %g m, mass %g kg (expected > 0) or a non-finite centre",
+                     i, r[i], m[i]);
+            return fail_create(e, msg, cap, text);
+        }
+        if (sbc_bpm_add(e, &x[3 * i], r[i], rho, NULL, &err) != SBC_OK)
+            return fail_create(e, msg, cap, err.message);
+    }
+    if (sbc_bpm_bond_touching(e, &err) != SBC_OK)
+        return fail_create(e, msg, cap, err.message);
+    if (e->nb == 0)
+        return fail_create(e, msg, cap, "bonds: no two spheres touch, so no bond formed");
+    return e;
+}
+
+int sbc_bpm_host_bond_count(const sbc_bpm *e) { return (int)e->nb; }
+
+int sbc_bpm_host_loads(sbc_bpm *e, const double *x, const double *v, const double *w, double dt, double *load)
+{
+    size_t i, n3 = 3 * e->n;
+    memcpy(e->x, x, n3 * sizeof *x);
+    memcpy(e->v, v, n3 * sizeof *v);
+    memcpy(e->w, w, n3 * sizeof *w);
+    memset(load, 0, 6 * e->n * sizeof *load);
+    e->dt = dt;
+    sbc_bpm_bond_loads(e, load);
+    for (i = 0; i < 6 * e->n; ++i)
+        if (!isfinite(load[i]))
+            return 1;
+    return 0;
+}
+
+double sbc_bpm_host_strain_energy(const sbc_bpm *e) { return sbc_bpm_energies(e).strain; }

@@ -1,0 +1,115 @@
+/* The 3D bond models behind a host's own integrator (bpm_host.h), as YADE
+ * uses them: one bond's axial force against E A / L and k^n A, a beam chain
+ * integrated here (a leapfrog with local damping, as YADE's NewtonIntegrator)
+ * against eq. B1, and the refusals. */
+#include "check.h"
+#include "tests.h"
+
+#include "sbc/bpm_host.h"
+
+#include <math.h>
+#include <string.h>
+
+static const double R = 0.1, EB = 4e9, NUB = 0.3;
+
+static void one_bond(void)
+{
+    const double x[6] = {0, 0, 0, 2 * R, 0, 0}, r[2] = {R, R}, m[2] = {1, 1}, dt = 1e-6, vb = 1e-3;
+    double v[6] = {0, 0, 0, vb, 0, 0}, w[6] = {0}, load[12];
+    const double A = SBC_PI * R * R;
+    int model;
+    for (model = 0; model < 2; ++model) {
+        char msg[256];
+        sbc_bpm *e = sbc_bpm_host_create(model ? "parallel" : "beam", EB, NUB, 1.0, 2, x, r, m, msg, sizeof msg);
+        /* beam: E A / L; parallel bond: k^n A with k^n = E / 2 r_p (Table 3) */
+        const double k = model ? EB / (2 * R) * A : EB * A / (2 * R);
+        CHECK(e != NULL);
+        if (!e)
+            continue;
+        CHECK(sbc_bpm_host_bond_count(e) == 1);
+        CHECK(sbc_bpm_host_loads(e, x, v, w, dt, load) == 0);
+        CHECK_REL(load[0], k * vb * dt, 1e-12);  /* A pulled towards B */
+        CHECK_REL(load[6], -k * vb * dt, 1e-12); /* B pulled back */
+        CHECK_ABS(load[1] + load[2] + load[7] + load[8], 0.0, 1e-12 * k * vb * dt);
+        CHECK_REL(sbc_bpm_host_strain_energy(e), 0.5 * k * vb * dt * vb * dt, 1e-9);
+        sbc_bpm_destroy(e);
+    }
+}
+
+/* a simply supported chain of n spheres (pinned left, roller right), 1 kN
+ * at midspan, settled: the midspan deflection of eq. B1 */
+static void chain(int n)
+{
+    double x[33], v[33] = {0}, w[33] = {0}, r[11], m[11], I[11], load[66];
+    const double F = 1e3, Le = 2 * R * (n - 1), G = EB / (2 * (1 + NUB)), rho = 925.0, damping = 0.2;
+    const double d_b1 = F * Le * Le * Le / (48 * EB * 0.25 * SBC_PI * R * R * R * R) +
+                        F * Le * (10.0 / 9.0) / (4 * G * SBC_PI * R * R);
+    /* blocked degrees of freedom, bits x y z, rot x y z (YADE's 'xyzXZ', 'yzXZ') */
+    const unsigned pinned = 1 | 2 | 4 | 8 | 32, roller = 2 | 4 | 8 | 32;
+    char msg[256];
+    sbc_bpm *e;
+    double dt, d = 0.0, prev;
+    int i, k, mid = n / 2, chunk = 0;
+    for (i = 0; i < n; ++i) {
+        x[3 * i] = 2 * R * i;
+        x[3 * i + 1] = x[3 * i + 2] = 0.0;
+        r[i] = R;
+        m[i] = rho * 4.0 / 3.0 * SBC_PI * R * R * R;
+        I[i] = 0.4 * m[i] * R * R;
+    }
+    e = sbc_bpm_host_create("beam", EB, NUB, 1.0, n, x, r, m, msg, sizeof msg);
+    CHECK(e != NULL && sbc_bpm_host_bond_count(e) == n - 1);
+    if (!e)
+        return;
+    dt = 0.5 * sbc_bpm_critical_dt(e);
+    do {
+        int t;
+        prev = d;
+        for (t = 0; t < 2000; ++t) {
+            if (sbc_bpm_host_loads(e, x, v, w, dt, load) != 0) {
+                CHECK(!"finite loads");
+                break;
+            }
+            load[6 * mid + 2] -= F;
+            for (i = 0; i < n; ++i) {
+                const unsigned blocked = i == 0 ? pinned : i == n - 1 ? roller : 0;
+                for (k = 0; k < 6; ++k) {
+                    double *vel = k < 3 ? &v[3 * i + k] : &w[3 * i + k - 3], f = load[6 * i + k];
+                    if (blocked & (1u << k))
+                        continue;
+                    if (*vel != 0.0) /* local non-viscous damping, as YADE's */
+                        f -= damping * fabs(f) * (*vel > 0.0 ? 1.0 : -1.0);
+                    *vel += dt * f / (k < 3 ? m[i] : I[i]);
+                }
+                for (k = 0; k < 3; ++k)
+                    x[3 * i + k] += dt * v[3 * i + k];
+            }
+        }
+        d = -x[3 * mid + 2];
+    } while (++chunk < 1000 && fabs(d - prev) > 1e-9 * d_b1);
+    CHECK(chunk < 1000);
+    CHECK_REL(d, d_b1, 1e-4);
+    sbc_bpm_destroy(e);
+}
+
+static void refusals(void)
+{
+    const double x[6] = {0, 0, 0, 1, 0, 0}, r[2] = {R, R}, m[2] = {1, 1};
+    char msg[256] = "";
+    CHECK(!sbc_bpm_host_create("rope", EB, NUB, 1.0, 2, x, r, m, msg, sizeof msg) &&
+          strstr(msg, "model must be beam or parallel"));
+    CHECK(!sbc_bpm_host_create("beam", EB, NUB, 1.0, 2, x, r, m, msg, sizeof msg) &&
+          strstr(msg, "no two spheres touch"));
+    CHECK(!sbc_bpm_host_create("beam", -1.0, NUB, 1.0, 2, x, r, m, msg, sizeof msg) && strstr(msg, "E -1 Pa"));
+    CHECK(!sbc_bpm_host_create("beam", EB, NUB, 1.0, 1, x, r, m, msg, sizeof msg) && strstr(msg, "fewer than 2"));
+}
+
+void test_bpm_host(void)
+{
+    static const int sizes[] = {3, 5, 7, 11};
+    size_t k;
+    one_bond();
+    for (k = 0; k < sizeof sizes / sizeof sizes[0]; ++k)
+        chain(sizes[k]);
+    refusals();
+}
