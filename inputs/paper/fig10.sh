@@ -40,7 +40,7 @@ for range in full common; do
   echo "$range path$([ $range = common ] && echo " (F12 <= $fc)"):"; cat "$table"
   # the same as a table for the page (make figures): out/paper/fig10_SET_RANGE.md
   awk -F, 'NR == 1 { print "| particles | (D) | (P) | (T) | (D) to F̄12 | (P) to | (T) to |"; print "| --- | --- | --- | --- | --- | --- | --- |"; next }
-    { printf "| %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, $6, $7 }' "$table" > "${table%.csv}.md"
+    { printf "| %s | %.3g | %.3g | %.3g | %.3f | %.3f | %.3f |\n", $1, $2, $3, $4, $5, $6, $7 }' "$table" > "${table%.csv}.md"
   # one file per BC for the overlay: particles,norm
   series=()
   # a BC enters the full-path picture only when all its runs reached F12 = 0.5
