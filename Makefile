@@ -125,7 +125,8 @@ check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 # Debian's liblammps-dev lacks are shipped in lammps_fix/debian_headers/ (README there).
 LMP_HDR = lammps_fix/debian_headers
 LMP_DEV = $(B)/lammps-dev.installed
-LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h lammps_fix/fix_servo_bc_lammps.h lammps_fix/lmp_servo.cpp
+LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h lammps_fix/fix_servo_bc_lammps.h lammps_fix/lmp_servo.cpp \
+  lammps_fix/fix_servo_bc_bonds.cpp lammps_fix/fix_servo_bc_bonds.h
 
 lammps: $(B)/lmp_servo $(B)/servo_bc_plugin.so
 
@@ -136,7 +137,8 @@ $(LMP_DEV):
 
 $(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
-	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -llammps -lm
+	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_bonds.cpp \
+	  $(B)/libservo_bc.a -llammps -lm
 
 # the plugin: for `plugin load` in LAMMPS builds with the PLUGIN package
 $(B)/servo_bc_plugin.so: $(LMP_SRC) lammps_fix/plugin.cpp $(B)/libservo_bc.a $(LMP_DEV)
@@ -149,6 +151,7 @@ $(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_DEV)
 
 check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_driver
 	bash tests/lammps/closed_form.sh $(B)/lmp_servo $(B)/plugin_driver $(B)/servo_bc_plugin.so
+	bash tests/lammps/bonds.sh $(B)/lmp_servo
 
 # LIGGGHTS adapter: the LAMMPS fix source compiled against LIGGGHTS 3.8
 # (lammps_fix/fix_servo_bc.cpp with -DSERVO_BC_LIGGGHTS; the differences are in

@@ -1,0 +1,172 @@
+/* ----------------------------------------------------------------------
+   fix servo_bc/bonds (see fix_servo_bc_bonds.h):
+     fix ID group servo_bc/bonds MODEL E nu alpha
+   MODEL = beam (Timoshenko beams, E_b = E Pa, nu_b = nu) or parallel
+   (parallel bonds, k^n = E / 2 r_min, k^s = k^n / 4.2); bond radius
+   alpha r_min. Bonds join the group's spheres that touch at the first run.
+   Outputs: f_ID (scalar) the bonds' strain energy (J); f_ID[1] the bond
+   count, f_ID[2] eq. 48's critical time step (s).
+------------------------------------------------------------------------- */
+
+#include "fix_servo_bc_bonds.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "update.h"
+
+#include <algorithm>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), bonds(nullptr), n(0), last_step(-1)
+{
+  if (narg != 7)
+    fail(std::string("expected 4 arguments after the style (MODEL E nu alpha), got ") + std::to_string(narg - 3));
+  model = arg[3];
+  if (model != "beam" && model != "parallel")
+    fail("model '" + model + "' is not valid (expected beam or parallel)");
+  const char *names[3] = {"E", "nu", "alpha"};
+  double *values[3] = {&E, &nu, &alpha};
+  for (int k = 0; k < 3; k++) {
+    char *end = nullptr;
+    *values[k] = std::strtod(arg[4 + k], &end);
+    if (end == arg[4 + k] || *end != '\0' || !std::isfinite(*values[k]))
+      fail(std::string("keyword ") + names[k] + ": '" + arg[4 + k] + "' is not a number");
+  }
+  if (!(E > 0.0) || !(nu > -1.0 && nu < 0.5) || !(alpha > 0.0))
+    fail("E " + std::string(arg[4]) + ", nu " + arg[5] + ", alpha " + arg[6] +
+         " (expected E > 0 Pa, -1 < nu < 0.5, alpha > 0)");
+  if (!atom->sphere_flag) fail("requires atom_style sphere");
+  if (domain->dimension != 3) fail("requires a 3d box (the bond models are 3D)");
+  scalar_flag = 1;
+  vector_flag = 1;
+  size_vector = 2;
+  global_freq = 1;
+  extscalar = 0;
+  extvector = 0;
+}
+
+FixServoBCBonds::~FixServoBCBonds() { sbc_bpm_destroy(bonds); }
+
+int FixServoBCBonds::setmask() { return POST_FORCE; }
+
+void FixServoBCBonds::fail(const std::string &message)
+{
+  error->all(FLERR, "Fix servo_bc/bonds: " + message);
+}
+
+void FixServoBCBonds::init()
+{
+  if (!bonds) create_bonds();
+}
+
+/* the group's atoms in ID order on every rank; the core bonds those that touch */
+void FixServoBCBonds::create_bonds()
+{
+  const int nlocal = atom->nlocal;
+  std::vector<double> pack;    // per atom: tag, x, y, z, radius, mass
+  for (int i = 0; i < nlocal; i++)
+    if (atom->mask[i] & groupbit)
+      pack.insert(pack.end(), {(double) atom->tag[i], atom->x[i][0], atom->x[i][1], atom->x[i][2], atom->radius[i],
+                               atom->rmass[i]});
+  int count = (int) pack.size(), nprocs = comm->nprocs;
+  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  std::vector<double> every(displs[nprocs - 1] + counts[nprocs - 1]);
+  MPI_Allgatherv(pack.data(), count, MPI_DOUBLE, every.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+  n = (int) every.size() / 6;
+  std::vector<int> order(n);
+  for (int k = 0; k < n; k++) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return every[6 * a] < every[6 * b]; });
+  std::vector<double> x(3 * n), r(n), m(n);
+  tags.assign(n, 0);
+  index.clear();
+  for (int k = 0; k < n; k++) {
+    const double *p = &every[6 * order[k]];
+    tags[k] = (tagint) p[0];
+    index[tags[k]] = k;
+    for (int c = 0; c < 3; c++) x[3 * k + c] = p[1 + c];
+    r[k] = p[4];
+    m[k] = p[5];
+  }
+  char msg[512] = "";
+  bonds = sbc_bpm_host_create(model.c_str(), E, nu, alpha, n, x.data(), r.data(), m.data(), msg, sizeof msg);
+  if (!bonds) fail(std::string(msg) + " (group " + group->names[igroup] + ")");
+  mine.assign(9 * n, 0.0);
+  all.assign(9 * n, 0.0);
+  load.assign(6 * n, 0.0);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "fix servo_bc/bonds: {} {} bonds between {} spheres, critical time step {:.6g} s\n",
+                   sbc_bpm_host_bond_count(bonds), model, n, sbc_bpm_critical_dt(bonds));
+}
+
+/* x, v, omega of the group in ID order, summed over ranks (each atom is owned once) */
+void FixServoBCBonds::gather()
+{
+  std::fill(mine.begin(), mine.end(), 0.0);
+  double **x = atom->x, **v = atom->v, **omega = atom->omega;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    auto it = index.find(atom->tag[i]);
+    if (it == index.end()) fail("atom " + std::to_string((long) atom->tag[i]) + " joined the group after set-up");
+    double *p = &mine[9 * it->second];
+    for (int c = 0; c < 3; c++) {
+      p[c] = x[i][c];
+      p[3 + c] = v[i][c];
+      p[6 + c] = omega[i][c];
+    }
+  }
+  MPI_Allreduce(mine.data(), all.data(), 9 * n, MPI_DOUBLE, MPI_SUM, world);
+}
+
+void FixServoBCBonds::setup(int) { post_force(0); }
+
+/* the bonds' loads: the motion of the step just taken is dt v(t + dt/2)
+   (velocity Verlet: v is at the half step here); the setup of a run sees the
+   last configuration again, whose loads are added once more, unchanged */
+void FixServoBCBonds::post_force(int)
+{
+  if (update->ntimestep != last_step) {
+    gather();
+    std::vector<double> x(3 * n), v(3 * n), w(3 * n);
+    for (int k = 0; k < n; k++)
+      for (int c = 0; c < 3; c++) {
+        x[3 * k + c] = all[9 * k + c];
+        // the first evaluation (no step taken yet) builds no increment
+        v[3 * k + c] = last_step < 0 ? 0.0 : all[9 * k + 3 + c];
+        w[3 * k + c] = last_step < 0 ? 0.0 : all[9 * k + 6 + c];
+      }
+    if (sbc_bpm_host_loads(bonds, x.data(), v.data(), w.data(), update->dt, load.data()))
+      fail("a bond load is not finite at step " + std::to_string((long) update->ntimestep) + " (time step " +
+           std::to_string(update->dt) + " s, eq. 48's critical step " + std::to_string(sbc_bpm_critical_dt(bonds)) +
+           " s)");
+    last_step = update->ntimestep;
+  }
+  double **f = atom->f, **torque = atom->torque;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double *l = &load[6 * index[atom->tag[i]]];
+    for (int c = 0; c < 3; c++) {
+      f[i][c] += l[c];
+      torque[i][c] += l[3 + c];
+    }
+  }
+}
+
+double FixServoBCBonds::compute_scalar() { return bonds ? sbc_bpm_host_strain_energy(bonds) : 0.0; }
+
+double FixServoBCBonds::compute_vector(int k)
+{
+  if (!bonds) return 0.0;
+  return k == 0 ? sbc_bpm_host_bond_count(bonds) : sbc_bpm_critical_dt(bonds);
+}

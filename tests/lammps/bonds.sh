@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# fix servo_bc/bonds (the thesis' 3D bond models through the core) in LAMMPS:
+# the Appendix B beam (inputs/lammps/bpm_beam.in) of 3, 5, 7 and 11 spheres
+# against eq. B1 (1e-4) and the thesis' Table B1 (5 digits); the 11-sphere
+# beam on 1, 2 and 4 ranks to 1e-10; bad input named by keyword.
+# Prints "N passed, N failed". Usage: bonds.sh LMP_SERVO
+set -u
+bin=$(cd "$(dirname "${1:?usage: bonds.sh LMP_SERVO}")" && pwd)/$(basename "$1")
+here=$(cd "$(dirname "$0")" && pwd)
+deck=$here/../../inputs/lammps/bpm_beam.in
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+ok() { pass=$((pass + 1)); echo "lammps bonds: $1"; }
+bad() { fail=$((fail + 1)); echo "FAIL lammps bonds: $1"; }
+beam() {  # NP N FILE
+  (cd "$tmp" && if [ "$1" = 1 ]; then timeout 300 "$bin" -in "$deck" -var n "$2" -var out "$3" -log none -screen none
+   else timeout 300 mpirun --allow-run-as-root --oversubscribe -np "$1" "$bin" -in "$deck" -var n "$2" -var out "$3" \
+     -log none -screen none; fi) > "$tmp/beam.log" 2>&1
+  awk '$1 == "deflection" { print $2 }' "$tmp/$3" 2>/dev/null
+}
+for pair in 3:0.0065436 5:0.038551 7:0.12148 11:0.54201; do
+  n=${pair%%:*} thesis=${pair#*:}
+  got=$(beam 1 "$n" "beam_$n.txt")
+  set -- $(awk -v n="$n" -v d="${got:-nan}" -v t="$thesis" 'BEGIN {
+      R = 0.1; E = 4e9; nu = 0.3; G = E / (2 * (1 + nu)); pi = atan2(0, -1); I = pi * R^4 / 4; A = pi * R * R
+      Le = 2 * R * (n - 1); b1 = 1e3 * Le^3 / (48 * E * I) + 1e3 * Le * (10 / 9) / (4 * G * A)
+      e1 = (d - b1) / b1; e2 = (1e3 * d - t) / t; if (e1 < 0) e1 = -e1; if (e2 < 0) e2 = -e2
+      printf "%s %.3g %.3g %.9g", (d == d + 0 && e1 <= 1e-4 && e2 <= 1.5e-4) ? "ok" : "bad", e1, e2, b1 }')
+  if [ "$1" = ok ]; then ok "beam of $n spheres: deflection $got m, eq. B1 $4 m (relative $2), Table B1 $thesis mm (relative $3)"
+  else bad "beam of $n spheres: deflection ${got:-none} m against eq. B1 $4 m: $(tail -2 "$tmp/beam.log")"; fi
+done
+one=$(beam 1 11 ranks1.txt)
+for np in 2 4; do
+  got=$(beam "$np" 11 "ranks$np.txt")
+  if awk -v a="${one:-nan}" -v b="${got:-nan}" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a == a + 0 && b == b + 0 && d <= 1e-10 * a) }'; then
+    ok "11 spheres on $np ranks: $got m, against 1 rank $one m (to 1e-10)"
+  else
+    bad "11 spheres on $np ranks: ${got:-none} m against 1 rank ${one:-none} m: $(tail -2 "$tmp/beam.log")"
+  fi
+done
+refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION]
+  printf 'units si\ndimension %s\nboundary f f f\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 0.5\ncreate_atoms 1 single 0.3 0.5 0.5\nset type 1 diameter 0.2\n%s\nrun 1\n' \
+    "${4:-3}" "$2" > "$tmp/bad.in"
+  (cd "$tmp" && timeout 60 "$bin" -in bad.in -log none) > "$tmp/bad.log" 2>&1
+  local status=$?
+  if [ $status -ne 0 ] && grep -qF "$3" "$tmp/bad.log"; then ok "refuses $1 (exit $status): $3"
+  else bad "$1 (exit $status), expected '$3': $(tail -2 "$tmp/bad.log")"; fi
+}
+refused "a missing alpha" "fix b all servo_bc/bonds beam 4e9 0.3" "expected 4 arguments after the style (MODEL E nu alpha), got 3"
+refused "an unknown model" "fix b all servo_bc/bonds rope 4e9 0.3 1" "model 'rope' is not valid (expected beam or parallel)"
+refused "a word for E" "fix b all servo_bc/bonds beam stiff 0.3 1" "keyword E: 'stiff' is not a number"
+refused "nu = 0.5" "fix b all servo_bc/bonds beam 4e9 0.5 1" "expected E > 0 Pa, -1 < nu < 0.5, alpha > 0"
+refused "spheres that do not touch" "set atom 2 x 0.6
+fix b all servo_bc/bonds beam 4e9 0.3 1" "no two spheres touch"
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
