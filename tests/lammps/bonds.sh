@@ -39,6 +39,61 @@ for np in 2 4; do
     bad "11 spheres on $np ranks: ${got:-none} m against 1 rank ${one:-none} m: $(tail -2 "$tmp/beam.log")"
   fi
 done
+# eqs. B2-B3: the three-sphere beam (central mass 7.4 kg, light ends 7.4 g,
+# L_e = 0.4 m) held at 1 mm by a static load with damping, then let go: its
+# frequency over 5 periods against 723.29 Hz (0.05 %), and below it (the
+# ends' remaining inertia can only slow it)
+kbeam=$(awk 'BEGIN { R = 0.1; E = 4e9; nu = 0.3; G = E / (2 * (1 + nu)); pi = atan2(0, -1); I = pi * R^4 / 4; A = pi * R * R
+  Le = 0.4; printf "%.17g", 192 * E * I * G * A / (4 * Le^3 * G * A + 48 * (10 / 9) * E * I * Le) }')
+cat > "$tmp/vib.in" <<LMP
+units si
+dimension 3
+boundary f f f
+atom_style sphere
+atom_modify map array
+region box block -0.2 0.6 -0.5 0.5 -0.5 0.5
+create_box 1 box
+create_atoms 1 single 0 0 0
+create_atoms 1 single 0.2 0 0
+create_atoms 1 single 0.4 0 0
+set type 1 diameter 0.2
+set atom 2 mass 7.4
+set atom 1 mass 7.4e-3
+set atom 3 mass 7.4e-3
+group left id 1
+group right id 3
+group middle id 2
+fix bonds all servo_bc/bonds beam 4e9 0.3 1.0
+fix integrate all nve/sphere
+fix pin left setforce 0 0 0
+fix roll right setforce NULL 0 0
+fix load middle addforce 0 0 $(awk -v k="$kbeam" 'BEGIN { printf "%.17g", -k * 1e-3 }')
+fix damp middle viscous 60000
+run 0
+variable dt equal 0.5*f_bonds[2]
+timestep \${dt}
+run 40000
+print "held \$(-z[2]:%.17g)"
+unfix load
+unfix damp
+variable z equal z[2]
+variable t equal time
+fix trace all print 1 "\${t} \${z}" file trace.txt screen no
+run \$(round(5.5/723.29/v_dt))
+LMP
+(cd "$tmp" && timeout 300 "$bin" -in vib.in -log none) > "$tmp/vib.log" 2>&1
+held=$(awk '$1 == "held" { print $2 }' "$tmp/vib.log")
+set -- $(awk -v k="$kbeam" 'NR > 1 && $1 !~ /#/ { t = $1; z = $2
+    if (n++ && zp < 0 && z >= 0) { tc = tp + (t - tp) * (-zp) / (z - zp); if (t0 == "") t0 = tc; else { p++; tl = tc } }
+    zp = z; tp = t }
+  END { pi = atan2(0, -1); fn = sqrt(k / 7.4) / (2 * pi); f = p > 0 ? p / (tl - t0) : 0
+    printf "%d %.6f %.6f %.3g", p, f, fn, (f - fn) / fn }' "$tmp/trace.txt" 2>/dev/null)
+if [ "${1:-0}" = 5 ] && awk -v f="$2" -v fn="$3" -v h="${held:-0}" 'BEGIN { d = (f - fn) / fn; if (d < 0) d = -d
+    e = (h - 1e-3) / 1e-3; if (e < 0) e = -e; exit !(d <= 5e-4 && f < fn && e <= 1e-6 && fn > 723.285 && fn < 723.295) }'; then
+  ok "three-sphere beam held at $held m, free vibration $2 Hz over 5 periods, eqs. B2-B3 $3 Hz (relative $4)"
+else
+  bad "three-sphere beam: held at ${held:-?} m, ${1:-0} periods, ${2:-?} Hz against ${3:-?} Hz: $(tail -2 "$tmp/vib.log")"
+fi
 refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION]
   printf 'units si\ndimension %s\nboundary f f f\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 0.5\ncreate_atoms 1 single 0.3 0.5 0.5\nset type 1 diameter 0.2\n%s\nrun 1\n' \
     "${4:-3}" "$2" > "$tmp/bad.in"
