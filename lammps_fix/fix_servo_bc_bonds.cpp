@@ -46,6 +46,8 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     fail("E " + std::string(arg[4]) + ", nu " + arg[5] + ", alpha " + arg[6] +
          " (expected E > 0 Pa, -1 < nu < 0.5, alpha > 0)");
   if (!atom->sphere_flag) fail("requires atom_style sphere");
+  if (std::strcmp(update->unit_style, "si") != 0)
+    fail(std::string("requires units si (E in Pa; this script has units ") + update->unit_style + ")");
   if (domain->dimension != 3) fail("requires a 3d box (the bond models are 3D)");
   scalar_flag = 1;
   vector_flag = 1;

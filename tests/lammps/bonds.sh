@@ -94,9 +94,9 @@ if [ "${1:-0}" = 5 ] && awk -v f="$2" -v fn="$3" -v h="${held:-0}" 'BEGIN { d = 
 else
   bad "three-sphere beam: held at ${held:-?} m, ${1:-0} periods, ${2:-?} Hz against ${3:-?} Hz: $(tail -2 "$tmp/vib.log")"
 fi
-refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION]
-  printf 'units si\ndimension %s\nboundary f f f\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 0.5\ncreate_atoms 1 single 0.3 0.5 0.5\nset type 1 diameter 0.2\n%s\nrun 1\n' \
-    "${4:-3}" "$2" > "$tmp/bad.in"
+refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION [UNITS]]
+  printf 'units %s\ndimension %s\nboundary f f f\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 0.5\ncreate_atoms 1 single 0.3 0.5 0.5\nset type 1 diameter 0.2\n%s\nrun 1\n' \
+    "${5:-si}" "${4:-3}" "$2" > "$tmp/bad.in"
   (cd "$tmp" && timeout 60 "$bin" -in bad.in -log none) > "$tmp/bad.log" 2>&1
   local status=$?
   if [ $status -ne 0 ] && grep -qF "$3" "$tmp/bad.log"; then ok "refuses $1 (exit $status): $3"
@@ -108,5 +108,6 @@ refused "a word for E" "fix b all servo_bc/bonds beam stiff 0.3 1" "keyword E: '
 refused "nu = 0.5" "fix b all servo_bc/bonds beam 4e9 0.5 1" "expected E > 0 Pa, -1 < nu < 0.5, alpha > 0"
 refused "spheres that do not touch" "set atom 2 x 0.6
 fix b all servo_bc/bonds beam 4e9 0.3 1" "no two spheres touch"
+refused "units metal" "fix b all servo_bc/bonds beam 4e9 0.3 1" "requires units si (E in Pa; this script has units metal)" 3 metal
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
