@@ -157,7 +157,7 @@ check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_d
 # (lammps_fix/fix_servo_bc.cpp with -DSERVO_BC_LIGGGHTS; the differences are in
 # liggghts_fix/fix_servo_bc_liggghts.h)
 LIG_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h liggghts_fix/fix_servo_bc_liggghts.h \
-  liggghts_fix/liggghts_servo.cpp
+  liggghts_fix/liggghts_servo.cpp lammps_fix/fix_servo_bc_bonds.cpp lammps_fix/fix_servo_bc_bonds.h
 
 liggghts: $(B)/liggghts_servo
 
@@ -167,10 +167,11 @@ liggghts: $(B)/liggghts_servo
 $(B)/liggghts_servo: $(LIG_SRC) $(B)/libservo_bc.a /usr/include/liggghts/pair_gran.h
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -DSERVO_BC_LIGGGHTS -Wall -Wextra -isystem /usr/include/liggghts \
 	  -Iliggghts_fix -Ilammps_fix -Isrc_core/include -o $@ liggghts_fix/liggghts_servo.cpp lammps_fix/fix_servo_bc.cpp \
-	  $(B)/libservo_bc.a -lliggghts -lm
+	  lammps_fix/fix_servo_bc_bonds.cpp $(B)/libservo_bc.a -lliggghts -lm
 
 check-liggghts: $(B)/liggghts_servo $(B)/servo-bc
 	bash tests/liggghts/closed_form.sh $(B)/liggghts_servo $(B)/servo-bc
+	bash tests/lammps/bonds.sh $(B)/liggghts_servo liggghts
 
 # every engine on the same case (through the compare command), and the mixed
 # layer in LAMMPS and LIGGGHTS against the embedded engine

@@ -20,6 +20,7 @@
 #include <algorithm>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -63,7 +64,8 @@ int FixServoBCBonds::setmask() { return POST_FORCE; }
 
 void FixServoBCBonds::fail(const std::string &message)
 {
-  error->all(FLERR, "Fix servo_bc/bonds: " + message);
+  last_error = "Fix servo_bc/bonds: " + message;    // kept: LIGGGHTS' error->all takes a C string
+  error->all(FLERR, last_error.c_str());
 }
 
 void FixServoBCBonds::init()
@@ -107,9 +109,13 @@ void FixServoBCBonds::create_bonds()
   mine.assign(9 * n, 0.0);
   all.assign(9 * n, 0.0);
   load.assign(6 * n, 0.0);
-  if (comm->me == 0)
-    utils::logmesg(lmp, "fix servo_bc/bonds: {} {} bonds between {} spheres, critical time step {:.6g} s\n",
-                   sbc_bpm_host_bond_count(bonds), model, n, sbc_bpm_critical_dt(bonds));
+  if (comm->me == 0) {
+    char line[256];
+    std::snprintf(line, sizeof line, "fix servo_bc/bonds: %d %s bonds between %d spheres, critical time step %.6g s\n",
+                  sbc_bpm_host_bond_count(bonds), model.c_str(), n, sbc_bpm_critical_dt(bonds));
+    if (screen) fputs(line, screen);
+    if (logfile) fputs(line, logfile);
+  }
 }
 
 /* x, v, omega of the group in ID order, summed over ranks (each atom is owned once) */

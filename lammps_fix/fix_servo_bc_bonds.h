@@ -46,6 +46,7 @@ class FixServoBCBonds : public Fix {
   std::unordered_map<tagint, int> index;   // atom ID -> sphere
   std::vector<double> mine, all, load;     // gather buffers: x, v, omega (9 per sphere); loads (6)
   bigint last_step;                        // the step whose loads are in `load`
+  std::string last_error;
   void create_bonds();
   void gather();
   void fail(const std::string &message);
