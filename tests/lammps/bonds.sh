@@ -3,7 +3,8 @@
 # or LIGGGHTS: the Appendix B beam (inputs/HOST/bpm_beam.in) of 3, 5, 7 and 11
 # spheres against eq. B1 (1e-4) and the thesis' Table B1 (5 digits); the
 # 11-sphere beam on 1, 2 and 4 ranks to 1e-10; in LAMMPS the three-sphere
-# beam's free vibration (723.29 Hz); bad input named by keyword.
+# beam's free vibration (723.29 Hz) and the uniform packing's modulus pi E_b / 4;
+# bad input named by keyword.
 # Prints "N passed, N failed". Usage: bonds.sh BINARY [lammps|liggghts]
 set -u
 bin=$(cd "$(dirname "${1:?usage: bonds.sh BINARY [lammps|liggghts]}")" && pwd)/$(basename "$1")
@@ -96,6 +97,18 @@ if [ "${1:-0}" = 5 ] && awk -v f="$2" -v fn="$3" -v h="${held:-0}" 'BEGIN { d = 
   ok "three-sphere beam held at $held m, free vibration $2 Hz over 5 periods, eqs. B2-B3 $3 Hz (relative $4)"
 else
   bad "three-sphere beam: held at ${held:-?} m, ${1:-0} periods, ${2:-?} Hz against ${3:-?} Hz: $(tail -2 "$tmp/vib.log")"
+fi
+}
+# the uniform (simple cubic) packing's modulus under uniaxial tension: pi E_b / 4
+# (inputs/lammps/bpm_uniaxial.in; LAMMPS only: the deck uses immediate variables)
+[ "$host" = lammps ] && {
+(cd "$tmp" && timeout 300 "$bin" -in "$here/../../inputs/lammps/bpm_uniaxial.in" -var nx 5 -var ny 3 -var nz 3 \
+  -var out uni.txt -log none -screen none) > "$tmp/uni.log" 2>&1
+got=$(awk '$1 == "modulus" { print $2 }' "$tmp/uni.txt" 2>/dev/null)
+if awk -v e="${got:-nan}" 'BEGIN { t = atan2(0, -1) * 4e9 / 4; d = (e - t) / t; if (d < 0) d = -d; exit !(e == e + 0 && d <= 1e-6) }'; then
+  ok "uniform packing 5 x 3 x 3 under uniaxial tension: E = $got Pa, pi E_b / 4 = 3141592653.6 Pa"
+else
+  bad "uniform packing: E = ${got:-none} Pa against pi E_b / 4: $(tail -2 "$tmp/uni.log")"
 fi
 }
 refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION [UNITS]]

@@ -54,6 +54,13 @@ for pair in 3:0.0065436 5:0.038551 7:0.12148 11:0.54201; do
     fail=$((fail + 1)); echo "FAIL yade beam of $n spheres: deflection ${got:-none} m against eq. B1 $4 m:"; tail -3 "$tmp/beam_$n.log"
   fi
 done
+yade -n -x "$here/../../inputs/yade/bpm_uniaxial.py" 5 3 3 "$tmp/uni.txt" > "$tmp/uni.log" 2>&1
+got=$(awk '$1 == "modulus" { print $2 }' "$tmp/uni.txt" 2>/dev/null)
+if awk -v e="${got:-nan}" 'BEGIN { t = atan2(0, -1) * 4e9 / 4; d = (e - t) / t; if (d < 0) d = -d; exit !(e == e + 0 && d <= 1e-6) }'; then
+  pass=$((pass + 1)); echo "yade uniform packing 5 x 3 x 3 under uniaxial tension: E = $got Pa, pi E_b / 4 = 3141592653.6 Pa"
+else
+  fail=$((fail + 1)); echo "FAIL yade uniform packing: E = ${got:-none} Pa against pi E_b / 4:"; tail -3 "$tmp/uni.log"
+fi
 yade -n -x "$beam" 4 "$tmp/beam_4.txt" > "$tmp/beam_4.log" 2>&1
 status=$?
 if [ $status -ne 0 ] && grep -q "N must be odd and at least 3, got 4" "$tmp/beam_4.log"; then
