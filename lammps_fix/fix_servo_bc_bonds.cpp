@@ -50,6 +50,7 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
   if (std::strcmp(update->unit_style, "si") != 0)
     fail(std::string("requires units si (E in Pa; this script has units ") + update->unit_style + ")");
   if (domain->dimension != 3) fail("requires a 3d box (the bond models are 3D)");
+  restart_global = 1;
   scalar_flag = 1;
   vector_flag = 1;
   size_vector = 2;
@@ -70,7 +71,58 @@ void FixServoBCBonds::fail(const std::string &message)
 
 void FixServoBCBonds::init()
 {
-  if (!bonds) create_bonds();
+  if (bonds) return;
+  if (tags.empty()) create_bonds();
+  else bond_spheres();    // from a restart file
+}
+
+namespace {
+// marks fix servo_bc/bonds' restart block (bump on any change of its layout)
+const double BONDS_MAGIC = 8.020002e7;
+}
+
+/* rank 0: model, E, nu, alpha, the reference spheres (ID, centre, radius,
+   mass) and every bond's state */
+void FixServoBCBonds::write_restart(FILE *fp)
+{
+  if (comm->me != 0 || !bonds) return;
+  const int nb = sbc_bpm_host_bond_count(bonds), per = sbc_bpm_host_state_doubles(bonds);
+  std::vector<double> list = {BONDS_MAGIC, model == "beam" ? 1.0 : 2.0, E, nu, alpha, (double) n, (double) nb,
+                              (double) per};
+  for (int k = 0; k < n; k++)
+    list.insert(list.end(), {(double) tags[k], ref_x[3 * k], ref_x[3 * k + 1], ref_x[3 * k + 2], ref_r[k], ref_m[k]});
+  std::vector<double> state(per);
+  for (int k = 0; k < nb; k++) {
+    sbc_bpm_host_state_get(bonds, k, state.data());
+    list.insert(list.end(), state.begin(), state.end());
+  }
+  int size = (int) (list.size() * sizeof(double));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list.data(), sizeof(double), list.size(), fp);
+}
+
+void FixServoBCBonds::restart(char *raw)
+{
+  const double *list = (const double *) raw;
+  if (list[0] != BONDS_MAGIC) fail("restart: this fix's block in the restart file is not fix servo_bc/bonds'");
+  const std::string saved_model = list[1] == 1.0 ? "beam" : "parallel";
+  if (saved_model != model || list[2] != E || list[3] != nu || list[4] != alpha)
+    fail("restart: the file's bonds are " + saved_model + " " + std::to_string(list[2]) + " " +
+         std::to_string(list[3]) + " " + std::to_string(list[4]) + "; this fix asks for other ones");
+  n = (int) list[5];
+  const int nb = (int) list[6], per = (int) list[7];
+  const double *p = &list[8];
+  tags.assign(n, 0);
+  ref_x.assign(3 * n, 0.0);
+  ref_r.assign(n, 0.0);
+  ref_m.assign(n, 0.0);
+  for (int k = 0; k < n; k++, p += 6) {
+    tags[k] = (tagint) p[0];
+    for (int c = 0; c < 3; c++) ref_x[3 * k + c] = p[1 + c];
+    ref_r[k] = p[4];
+    ref_m[k] = p[5];
+  }
+  saved.assign(p, p + (size_t) nb * per);
 }
 
 /* the group's atoms in ID order on every rank; the core bonds those that touch */
@@ -92,20 +144,38 @@ void FixServoBCBonds::create_bonds()
   std::vector<int> order(n);
   for (int k = 0; k < n; k++) order[k] = k;
   std::sort(order.begin(), order.end(), [&](int a, int b) { return every[6 * a] < every[6 * b]; });
-  std::vector<double> x(3 * n), r(n), m(n);
+  ref_x.assign(3 * n, 0.0);
+  ref_r.assign(n, 0.0);
+  ref_m.assign(n, 0.0);
   tags.assign(n, 0);
-  index.clear();
   for (int k = 0; k < n; k++) {
     const double *p = &every[6 * order[k]];
     tags[k] = (tagint) p[0];
-    index[tags[k]] = k;
-    for (int c = 0; c < 3; c++) x[3 * k + c] = p[1 + c];
-    r[k] = p[4];
-    m[k] = p[5];
+    for (int c = 0; c < 3; c++) ref_x[3 * k + c] = p[1 + c];
+    ref_r[k] = p[4];
+    ref_m[k] = p[5];
   }
+  bond_spheres();
+}
+
+/* the core's bonds on the reference spheres (at the first run, or those of a
+   restart file, whose bond states are then put back) */
+void FixServoBCBonds::bond_spheres()
+{
+  index.clear();
+  for (int k = 0; k < n; k++) index[tags[k]] = k;
   char msg[512] = "";
-  bonds = sbc_bpm_host_create(model.c_str(), E, nu, alpha, n, x.data(), r.data(), m.data(), msg, sizeof msg);
+  bonds = sbc_bpm_host_create(model.c_str(), E, nu, alpha, n, ref_x.data(), ref_r.data(), ref_m.data(), msg,
+                              sizeof msg);
   if (!bonds) fail(std::string(msg) + " (group " + group->names[igroup] + ")");
+  if (!saved.empty()) {
+    const int nb = sbc_bpm_host_bond_count(bonds), per = sbc_bpm_host_state_doubles(bonds);
+    if ((int) saved.size() != nb * per)
+      fail("restart: the saved bonds (" + std::to_string(saved.size()) + " values) are not the " +
+           std::to_string(nb) + " bonds these spheres form");
+    for (int k = 0; k < nb; k++) sbc_bpm_host_state_set(bonds, k, &saved[(size_t) k * per]);
+    saved.clear();
+  }
   mine.assign(9 * n, 0.0);
   all.assign(9 * n, 0.0);
   load.assign(6 * n, 0.0);

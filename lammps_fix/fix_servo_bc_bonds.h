@@ -36,6 +36,8 @@ class FixServoBCBonds : public Fix {
   void post_force(int) override;
   double compute_scalar() override;
   double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
 
  private:
   std::string model;
@@ -43,11 +45,14 @@ class FixServoBCBonds : public Fix {
   sbc_bpm *bonds;
   int n;                                   // spheres of the group
   std::vector<tagint> tags;                // atom IDs in order (the core's sphere order)
+  std::vector<double> ref_x, ref_r, ref_m; // the spheres at bond creation (restart rebuilds from them)
+  std::vector<double> saved;               // bond states from a restart file, set in init()
   std::unordered_map<tagint, int> index;   // atom ID -> sphere
   std::vector<double> mine, all, load;     // gather buffers: x, v, omega (9 per sphere); loads (6)
   bigint last_step;                        // the step whose loads are in `load`
   std::string last_error;
   void create_bonds();
+  void bond_spheres();
   void gather();
   void fail(const std::string &message);
 };

@@ -92,6 +92,42 @@ static void chain(int n)
     sbc_bpm_destroy(e);
 }
 
+/* restart: a bond set created again from the same spheres, given the saved
+ * states, continues with the same loads as the original */
+static void state_roundtrip(void)
+{
+    const double x[9] = {0, 0, 0, 2 * R, 0, 0, 4 * R, 0, 0}, r[3] = {R, R, R}, m[3] = {1, 1, 1}, dt = 1e-6;
+    const double v[9] = {0, 0, 0, 1e-3, 2e-4, -3e-4, 0, 0, 0}, w[9] = {0, 1e-3, 0, 0, 0, 2e-3, 0, 0, 0};
+    double la[18], lb[18], state[64];
+    int model;
+    for (model = 0; model < 2; ++model) {
+        const char *name = model ? "parallel" : "beam";
+        sbc_bpm *a = sbc_bpm_host_create(name, EB, NUB, 1.0, 3, x, r, m, NULL, 0);
+        sbc_bpm *b = sbc_bpm_host_create(name, EB, NUB, 1.0, 3, x, r, m, NULL, 0);
+        int k, per, same = 1;
+        CHECK(a && b);
+        if (!a || !b)
+            continue;
+        per = sbc_bpm_host_state_doubles(a);
+        CHECK(per == (model ? 13 : 28));
+        for (k = 0; k < 5; ++k)
+            sbc_bpm_host_loads(a, x, v, w, dt, la);
+        for (k = 0; k < sbc_bpm_host_bond_count(a); ++k) {
+            sbc_bpm_host_state_get(a, k, state);
+            sbc_bpm_host_state_set(b, k, state);
+        }
+        sbc_bpm_host_loads(a, x, v, w, dt, la);
+        sbc_bpm_host_loads(b, x, v, w, dt, lb);
+        for (k = 0; k < 18; ++k)
+            same &= la[k] == lb[k];
+        CHECK(same);
+        CHECK(la[0] != 0.0);
+        CHECK_REL(sbc_bpm_host_strain_energy(b), sbc_bpm_host_strain_energy(a), 1e-15);
+        sbc_bpm_destroy(a);
+        sbc_bpm_destroy(b);
+    }
+}
+
 static void refusals(void)
 {
     const double x[6] = {0, 0, 0, 1, 0, 0}, r[2] = {R, R}, m[2] = {1, 1};
@@ -111,5 +147,6 @@ void test_bpm_host(void)
     one_bond();
     for (k = 0; k < sizeof sizes / sizeof sizes[0]; ++k)
         chain(sizes[k]);
+    state_roundtrip();
     refusals();
 }

@@ -2,7 +2,7 @@
 # fix servo_bc/bonds (the thesis' 3D bond models through the core) in LAMMPS
 # or LIGGGHTS: the Appendix B beam (inputs/HOST/bpm_beam.in) of 3, 5, 7 and 11
 # spheres against eq. B1 (1e-4) and the thesis' Table B1 (5 digits); the
-# 11-sphere beam on 1, 2 and 4 ranks to 1e-10; in LAMMPS the three-sphere
+# 11-sphere beam on 1, 2 and 4 ranks to 1e-10, and split by a restart; in LAMMPS the three-sphere
 # beam's free vibration (723.29 Hz) and the uniform packing's modulus pi E_b / 4;
 # bad input named by keyword.
 # Prints "N passed, N failed". Usage: bonds.sh BINARY [lammps|liggghts]
@@ -25,7 +25,7 @@ beam() {  # NP N FILE
 for pair in 3:0.0065436 5:0.038551 7:0.12148 11:0.54201; do
   n=${pair%%:*} thesis=${pair#*:}
   got=$(beam 1 "$n" "beam_$n.txt")
-  set -- $(awk -v n="$n" -v d="${got:-nan}" -v t="$thesis" 'BEGIN {
+  set -- $(awk -v n="$n" -v d="${got:-none}" -v t="$thesis" 'BEGIN {
       R = 0.1; E = 4e9; nu = 0.3; G = E / (2 * (1 + nu)); pi = atan2(0, -1); I = pi * R^4 / 4; A = pi * R * R
       Le = 2 * R * (n - 1); b1 = 1e3 * Le^3 / (48 * E * I) + 1e3 * Le * (10 / 9) / (4 * G * A)
       e1 = (d - b1) / b1; e2 = (1e3 * d - t) / t; if (e1 < 0) e1 = -e1; if (e2 < 0) e2 = -e2
@@ -36,7 +36,7 @@ done
 one=$(beam 1 11 ranks1.txt)
 for np in 2 4; do
   got=$(beam "$np" 11 "ranks$np.txt")
-  if awk -v a="${one:-nan}" -v b="${got:-nan}" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a == a + 0 && b == b + 0 && d <= 1e-10 * a) }'; then
+  if awk -v a="${one:-none}" -v b="${got:-none}" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a == a + 0 && b == b + 0 && d <= 1e-10 * a) }'; then
     ok "11 spheres on $np ranks: $got m, against 1 rank $one m (to 1e-10)"
   else
     bad "11 spheres on $np ranks: ${got:-none} m against 1 rank ${one:-none} m: $(tail -2 "$tmp/beam.log")"
@@ -105,12 +105,45 @@ fi
 (cd "$tmp" && timeout 300 "$bin" -in "$here/../../inputs/lammps/bpm_uniaxial.in" -var nx 5 -var ny 3 -var nz 3 \
   -var out uni.txt -log none -screen none) > "$tmp/uni.log" 2>&1
 got=$(awk '$1 == "modulus" { print $2 }' "$tmp/uni.txt" 2>/dev/null)
-if awk -v e="${got:-nan}" 'BEGIN { t = atan2(0, -1) * 4e9 / 4; d = (e - t) / t; if (d < 0) d = -d; exit !(e == e + 0 && d <= 1e-6) }'; then
+if awk -v e="${got:-none}" 'BEGIN { t = atan2(0, -1) * 4e9 / 4; d = (e - t) / t; if (d < 0) d = -d; exit !(e == e + 0 && d <= 1e-6) }'; then
   ok "uniform packing 5 x 3 x 3 under uniaxial tension: E = $got Pa, pi E_b / 4 = 3141592653.6 Pa"
 else
   bad "uniform packing: E = ${got:-none} Pa against pi E_b / 4: $(tail -2 "$tmp/uni.log")"
 fi
 }
+# restart: the 11-sphere beam run 1500 + 1500 steps straight through, and
+# split by write_restart / read_restart, ends at the same midspan position
+# (the bond states travel in the restart file)
+fixes="fix bonds all servo_bc/bonds beam 4e9 0.3 1.0
+fix integrate all nve/sphere
+fix pin left setforce 0 0 0
+fix roll right setforce NULL 0 0
+fix load middle addforce 0 0 -1000
+fix damp all viscous 5000"
+{
+  printf 'units si\ndimension 3\nboundary f f f\natom_style sphere\natom_modify map array%s\n' \
+    "$([ "$host" = liggghts ] && echo ' sort 0 0.0')"
+  printf 'region box block -0.2 2.2 -0.5 0.5 -0.5 0.5\ncreate_box 1 box\n'
+  for i in 0 1 2 3 4 5 6 7 8 9 10; do echo "create_atoms 1 single $(awk -v i=$i 'BEGIN { print 0.2 * i }') 0 0"; done
+  printf 'set type 1 diameter 0.2\nset type 1 density 925\ngroup left id 1\ngroup right id 11\ngroup middle id 6\n'
+  echo "$fixes"
+  printf 'timestep 8e-6\nrun 1500\nwrite_restart split.restart\nrun 1500\nvariable z equal xcm(middle,z)\nprint "z ${z}" file straight.txt\n'
+} > "$tmp/straight.in"
+{
+  printf 'read_restart split.restart\n'
+  [ "$host" = liggghts ] && printf 'atom_modify sort 0 0.0\ntimestep 8e-6\n'
+  echo "$fixes"
+  printf 'run 1500\nvariable z equal xcm(middle,z)\nprint "z ${z}" file split.txt\n'
+} > "$tmp/split.in"
+(cd "$tmp" && timeout 120 "$bin" -in straight.in -log none -screen none && timeout 120 "$bin" -in split.in -log none -screen none) \
+  > "$tmp/restart.log" 2>&1
+a=$(awk '$1 == "z" { print $2 }' "$tmp/straight.txt" 2>/dev/null) b=$(awk '$1 == "z" { print $2 }' "$tmp/split.txt" 2>/dev/null)
+if [ -n "$a" ] && [ -n "$b" ] && awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a
+    exit !(a == a + 0 && b == b + 0 && s > 1e-6 && d <= 1e-10 * s) }'; then
+  ok "restart mid-run: midspan at $b m after the split, $a m straight through (to 1e-10)"
+else
+  bad "restart mid-run: ${b:-none} m after the split, ${a:-none} m straight through: $(tail -3 "$tmp/restart.log")"
+fi
 refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION [UNITS]]
   printf 'units %s\ndimension %s\nboundary f f f\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 0.5\ncreate_atoms 1 single 0.3 0.5 0.5\nset type 1 diameter 0.2\n%s\nrun 1\n' \
     "${5:-si}" "${4:-3}" "$2" > "$tmp/bad.in"

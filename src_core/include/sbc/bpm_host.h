@@ -35,4 +35,13 @@ int sbc_bpm_host_loads(sbc_bpm *e, const double *x, const double *v, const doubl
 /* The bonds' strain energy (eq. 50 or the beams' 1/2 u K u), J. */
 double sbc_bpm_host_strain_energy(const sbc_bpm *e);
 
+/* Restart: one bond's state as doubles (28 for a beam: its frame, stiffness
+ * terms, end loads and energy; 13 for a parallel bond), read out of (get)
+ * or written into (set) bond k, 0 <= k < sbc_bpm_host_bond_count. Bonds are
+ * numbered as sbc_bpm_host_create formed them: created again from the same
+ * centres, radii and masses, they come back in the same order. */
+int sbc_bpm_host_state_doubles(const sbc_bpm *e);
+void sbc_bpm_host_state_get(const sbc_bpm *e, int k, double *state);
+void sbc_bpm_host_state_set(sbc_bpm *e, int k, const double *state);
+
 #endif

@@ -77,3 +77,25 @@ int sbc_bpm_host_loads(sbc_bpm *e, const double *x, const double *v, const doubl
 }
 
 double sbc_bpm_host_strain_energy(const sbc_bpm *e) { return sbc_bpm_energies(e).strain; }
+
+/* the bond states are structs of doubles only (bpm_bond.h) */
+int sbc_bpm_host_state_doubles(const sbc_bpm *e)
+{
+    return (int)((e->set.model == SBC_BOND_BEAM ? sizeof(sbc_beam_bond) : sizeof(sbc_parallel_bond)) / sizeof(double));
+}
+
+void sbc_bpm_host_state_get(const sbc_bpm *e, int k, double *state)
+{
+    if (e->set.model == SBC_BOND_BEAM)
+        memcpy(state, &e->beam[k], sizeof e->beam[k]);
+    else
+        memcpy(state, &e->parallel[k], sizeof e->parallel[k]);
+}
+
+void sbc_bpm_host_state_set(sbc_bpm *e, int k, const double *state)
+{
+    if (e->set.model == SBC_BOND_BEAM)
+        memcpy(&e->beam[k], state, sizeof e->beam[k]);
+    else
+        memcpy(&e->parallel[k], state, sizeof e->parallel[k]);
+}
