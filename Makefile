@@ -202,6 +202,7 @@ bench: $(B)/bench_engine
 	@bash scripts/install-deps.sh lammps || echo "bench: LAMMPS not available; measuring the embedded engine only"
 	bash bench/engine_vs_lammps.sh $(B)/bench_engine
 	bash bench/bpm.sh
+	bash bench/bpm_hosts.sh
 
 clean:
 	rm -rf $(B) out
