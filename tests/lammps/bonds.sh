@@ -3,7 +3,7 @@
 # or LIGGGHTS: the Appendix B beam (inputs/HOST/bpm_beam.in) of 3, 5, 7 and 11
 # spheres against eq. B1 (1e-4) and the thesis' Table B1 (5 digits); the
 # 11-sphere beam on 1, 2 and 4 ranks to 1e-10, and split by a restart; in LAMMPS the three-sphere
-# beam's free vibration (723.29 Hz) and the uniform packing's modulus pi E_b / 4;
+# beam's free vibration (723.29 Hz); the uniform packing's modulus pi E_b / 4;
 # bad input named by keyword.
 # Prints "N passed, N failed". Usage: bonds.sh BINARY [lammps|liggghts]
 set -u
@@ -100,9 +100,9 @@ else
 fi
 }
 # the uniform (simple cubic) packing's modulus under uniaxial tension: pi E_b / 4
-# (inputs/lammps/bpm_uniaxial.in; LAMMPS only: the deck uses immediate variables)
-[ "$host" = lammps ] && {
-(cd "$tmp" && timeout 300 "$bin" -in "$here/../../inputs/lammps/bpm_uniaxial.in" -var nx 5 -var ny 3 -var nz 3 \
+# (inputs/HOST/bpm_uniaxial.in)
+{
+(cd "$tmp" && timeout 300 "$bin" -in "$here/../../inputs/$host/bpm_uniaxial.in" -var nx 5 -var ny 3 -var nz 3 \
   -var out uni.txt -log none -screen none) > "$tmp/uni.log" 2>&1
 got=$(awk '$1 == "modulus" { print $2 }' "$tmp/uni.txt" 2>/dev/null)
 if awk -v e="${got:-none}" 'BEGIN { t = atan2(0, -1) * 4e9 / 4; d = (e - t) / t; if (d < 0) d = -d; exit !(e == e + 0 && d <= 1e-6) }'; then
