@@ -159,5 +159,13 @@ refused "nu = 0.5" "fix b all servo_bc/bonds beam 4e9 0.5 1" "expected E > 0 Pa,
 refused "spheres that do not touch" "set atom 2 x 0.6
 fix b all servo_bc/bonds beam 4e9 0.3 1" "no two spheres touch"
 refused "units metal" "fix b all servo_bc/bonds beam 4e9 0.3 1" "requires units si (E in Pa; this script has units metal)" 3 metal
+printf 'units si\ndimension 3\nboundary f f f\natom_style atomic\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 0.5\nmass 1 1\nfix b all servo_bc/bonds beam 4e9 0.3 1\n' > "$tmp/atomic.in"
+(cd "$tmp" && timeout 60 "$bin" -in atomic.in -log none) > "$tmp/atomic.log" 2>&1
+status=$?
+if [ $status -ne 0 ] && grep -qF "Fix servo_bc/bonds: requires atom_style sphere" "$tmp/atomic.log"; then
+  ok "refuses atom_style atomic (exit $status): requires atom_style sphere"
+else
+  bad "atom_style atomic (exit $status): $(tail -2 "$tmp/atomic.log")"
+fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
