@@ -188,7 +188,8 @@ void FixServoBCBonds::bond_spheres()
   }
 }
 
-/* x, v, omega of the group in ID order, summed over ranks (each atom is owned once) */
+/* x, v, omega of the group in ID order, as three blocks of 3n (x | v | omega),
+   summed over ranks (each atom is owned once) */
 void FixServoBCBonds::gather()
 {
   std::fill(mine.begin(), mine.end(), 0.0);
@@ -197,11 +198,11 @@ void FixServoBCBonds::gather()
     if (!(atom->mask[i] & groupbit)) continue;
     auto it = index.find(atom->tag[i]);
     if (it == index.end()) fail("atom " + std::to_string((long) atom->tag[i]) + " joined the group after set-up");
-    double *p = &mine[9 * it->second];
+    const int k = it->second;
     for (int c = 0; c < 3; c++) {
-      p[c] = x[i][c];
-      p[3 + c] = v[i][c];
-      p[6 + c] = omega[i][c];
+      mine[3 * k + c] = x[i][c];
+      mine[3 * (n + k) + c] = v[i][c];
+      mine[3 * (2 * n + k) + c] = omega[i][c];
     }
   }
   MPI_Allreduce(mine.data(), all.data(), 9 * n, MPI_DOUBLE, MPI_SUM, world);
@@ -216,15 +217,9 @@ void FixServoBCBonds::post_force(int)
 {
   if (update->ntimestep != last_step) {
     gather();
-    std::vector<double> x(3 * n), v(3 * n), w(3 * n);
-    for (int k = 0; k < n; k++)
-      for (int c = 0; c < 3; c++) {
-        x[3 * k + c] = all[9 * k + c];
-        // the first evaluation (no step taken yet) builds no increment
-        v[3 * k + c] = last_step < 0 ? 0.0 : all[9 * k + 3 + c];
-        w[3 * k + c] = last_step < 0 ? 0.0 : all[9 * k + 6 + c];
-      }
-    if (sbc_bpm_host_loads(bonds, x.data(), v.data(), w.data(), update->dt, load.data()))
+    // the first evaluation (no step taken yet) builds no increment
+    if (last_step < 0) std::fill(all.begin() + 3 * n, all.end(), 0.0);
+    if (sbc_bpm_host_loads(bonds, &all[0], &all[3 * n], &all[6 * n], update->dt, load.data()))
       fail("a bond load is not finite at step " + std::to_string((long) update->ntimestep) + " (time step " +
            std::to_string(update->dt) + " s, eq. 48's critical step " + std::to_string(sbc_bpm_critical_dt(bonds)) +
            " s)");

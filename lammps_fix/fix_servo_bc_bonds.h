@@ -48,7 +48,7 @@ class FixServoBCBonds : public Fix {
   std::vector<double> ref_x, ref_r, ref_m; // the spheres at bond creation (restart rebuilds from them)
   std::vector<double> saved;               // bond states from a restart file, set in init()
   std::unordered_map<tagint, int> index;   // atom ID -> sphere
-  std::vector<double> mine, all, load;     // gather buffers: x, v, omega (9 per sphere); loads (6)
+  std::vector<double> mine, all, load;     // gather buffers: x | v | omega (3n each); loads (6 per sphere)
   bigint last_step;                        // the step whose loads are in `load`
   std::string last_error;
   void create_bonds();
