@@ -21,4 +21,5 @@ void test_bpm(void);
 void test_accuracy(void);
 void test_seal(void);
 void test_bpm_host(void);
+void test_cohesive_host(void);
 #endif

@@ -96,6 +96,13 @@ typedef struct sbc_cohesive {
  * m_u 0.2 N m, mu 0.6. */
 sbc_cohesive sbc_cohesive_default(void);
 
+/* The law's words "kn KN ks KS kr KR fn FN fs FS mr MR mu MU" (w [nw], in
+ * this order), shared by the runner's `contact cohesive` and the hosts'
+ * `servo_bc/bonds cohesive`; cmd names the command in the messages (which
+ * keyword, which value, what was expected). */
+#include "sbc/status.h"
+sbc_status sbc_cohesive_parse(int nw, char *const *w, const char *cmd, sbc_cohesive *law, sbc_error *err);
+
 /* Per-pair state of a cohesive contact. */
 typedef struct sbc_bond {
     double fs;  /* tangential spring force, N */

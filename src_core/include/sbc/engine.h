@@ -84,6 +84,27 @@ sbc_engine_view sbc_engine_get_view(const sbc_engine *e);
 /* Masses of the frame particles in frame order, [Q] kg (for the controller). */
 void sbc_engine_frame_masses(const sbc_engine *e, double *mass);
 
+/* The host path (cohesive_host.h): a host that integrates the discs itself
+ * hands its centres x [2n] (m), the velocities of the step just taken v [2n]
+ * (m/s) and omega [n] (rad/s, v(t - dt/2) in a leapfrog scheme) and its time
+ * step dt (s); the engine runs its pair loop (eq. 6, eqs. 7-8) at those
+ * positions, rebuilding the pair list when a disc has moved half the skin.
+ * The loads are then in sbc_engine_get_view (f, torque), the sums of relax.h
+ * in sbc_engine_snapshot. Nothing is integrated. */
+sbc_status sbc_engine_host_loads(sbc_engine *e, const double *x, const double *v, const double *omega, double dt,
+                                 sbc_error *err);
+
+/* Restart of the pair state: one record of SBC_PAIR_RECORD doubles
+ * (i, j, intact bond 0/1, tangential spring fs N, bond moment m N m) per pair
+ * that carries state. sbc_engine_pair_records writes them into out (NULL:
+ * only counts) and returns their number; sbc_engine_set_pair_records clears
+ * every pair's state and puts the records back into a list built at the
+ * present centres (bonds_initial: the count at creation). */
+#define SBC_PAIR_RECORD 5
+int sbc_engine_pair_records(const sbc_engine *e, double *out);
+sbc_status sbc_engine_set_pair_records(sbc_engine *e, const double *rec, int count, int bonds_initial,
+                                       sbc_error *err);
+
 /* Critical time step estimate 2 sqrt(M_min / (2 kn)) (s): the period limit
  * of the stiffest particle-contact oscillator; with bonds also
  * 2 sqrt(I_min / (2 kr)) for the bending spring, whichever is smaller. */

@@ -541,6 +541,110 @@ sbc_engine_view sbc_engine_get_view(const sbc_engine *e)
     return w;
 }
 
+sbc_status sbc_engine_host_loads(sbc_engine *e, const double *x, const double *v, const double *omega, double dt,
+                                 sbc_error *err)
+{
+    const double lim = 0.25 * e->pairs.skin * e->pairs.skin;
+    const size_t n = (size_t)e->n;
+    int k;
+    if (!(dt > 0.0) || !isfinite(dt))
+        return sbc_fail(err, SBC_ERR_INPUT, "engine: time step %g s (expected > 0)", dt);
+    memcpy(e->x, x, sizeof(double) * 2 * n);
+    memcpy(e->v, v, sizeof(double) * 2 * n);
+    memcpy(e->omega, omega, sizeof(double) * n);
+    e->dt = dt;
+    for (k = 0; k < e->n && !e->stale; ++k) {
+        const double ddx = x[2 * k] - e->pairs.x_build[2 * k], ddy = x[2 * k + 1] - e->pairs.x_build[2 * k + 1];
+        if (!(ddx * ddx + ddy * ddy <= lim)) /* also a non-finite centre: the build reports it */
+            e->stale = 1;
+    }
+    if (e->stale && sbc_pairs_build(&e->pairs, e->x, e->r, e->rmax, err) != SBC_OK)
+        return err->status;
+    e->stale = 0;
+    memset(e->f, 0, sizeof(double) * 2 * n);
+    memset(e->tq, 0, sizeof(double) * n);
+    if (e->bonded)
+        pair_loop(e, 1, 1);
+    else if (e->history)
+        pair_loop(e, 1, 0);
+    else
+        pair_loop(e, 0, 0);
+    e->step++;
+    return SBC_OK;
+}
+
+int sbc_engine_pair_records(const sbc_engine *e, double *out)
+{
+    const sbc_pairs *p = &e->pairs;
+    int k, count = 0;
+    for (k = 0; p->fs && k < p->count; ++k) {
+        const int bond = p->bond ? p->bond[k] : 0;
+        const double m = p->m ? p->m[k] : 0.0;
+        if (!bond && p->fs[k] == 0.0 && m == 0.0)
+            continue;
+        if (out) {
+            double *o = &out[SBC_PAIR_RECORD * count];
+            o[0] = p->i[k];
+            o[1] = p->j[k];
+            o[2] = bond;
+            o[3] = p->fs[k];
+            o[4] = m;
+        }
+        ++count;
+    }
+    return count;
+}
+
+sbc_status sbc_engine_set_pair_records(sbc_engine *e, const double *rec, int count, int bonds_initial,
+                                       sbc_error *err)
+{
+    sbc_pairs *p = &e->pairs;
+    int k, c, bonds = 0;
+    if (!p->fs)
+        return count ? sbc_fail(err, SBC_ERR_INPUT, "engine: %d pair records for a scene without pair state", count)
+                     : SBC_OK;
+    for (k = 0; k < p->count; ++k) {
+        p->fs[k] = 0.0;
+        if (p->bond) {
+            p->bond[k] = 0;
+            p->m[k] = 0.0;
+        }
+    }
+    if (sbc_pairs_build(p, e->x, e->r, e->rmax, err) != SBC_OK)
+        return err->status;
+    e->stale = 0;
+    for (c = 0; c < count; ++c) {
+        const double *o = &rec[SBC_PAIR_RECORD * c];
+        const int i = (int)o[0], j = (int)o[1];
+        int lo, hi;
+        if (!(o[0] >= 0.0 && o[0] < o[1] && o[1] < e->n) || !(o[2] == 0.0 || (o[2] == 1.0 && p->bond)) ||
+            !isfinite(o[3]) || !isfinite(o[4]))
+            return sbc_fail(err, SBC_ERR_INPUT, "engine: pair record %d (%g %g %g %g %g) is not valid", c, o[0], o[1],
+                            o[2], o[3], o[4]);
+        /* pairs of i are sorted by j (neighbor.h) */
+        for (lo = p->start[i], hi = p->start[i + 1]; lo < hi;) {
+            const int mid = lo + (hi - lo) / 2;
+            if (p->j[mid] < j)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        if (lo == p->start[i + 1] || p->j[lo] != j)
+            return sbc_fail(err, SBC_ERR_INPUT,
+                            "engine: pair record %d: particles %d and %d are farther apart than the pair list reaches",
+                            c, i, j);
+        p->fs[lo] = o[3];
+        if (p->bond) {
+            p->bond[lo] = (unsigned char)o[2];
+            p->m[lo] = o[4];
+            bonds += p->bond[lo];
+        }
+    }
+    e->bond_count = bonds;
+    e->bonds_initial = bonds_initial;
+    return SBC_OK;
+}
+
 void sbc_engine_frame_masses(const sbc_engine *e, double *mass)
 {
     int q;

@@ -100,7 +100,6 @@ static sbc_status keyed_real(char **w, int k, const char *key, int positive, con
 static sbc_status cmd_contact(script *s, int nw, char **w, sbc_error *err)
 {
     static const char usage_f[] = "contact frictional kn KN ks KS mu MU";
-    static const char usage_c[] = "contact cohesive kn KN ks KS kr KR fn FN fs FS mr MR mu MU";
     sbc_cohesive c;
     sbc_status st;
     if (nw >= 2 && strcmp(w[1], "frictional") == 0) {
@@ -115,14 +114,7 @@ static sbc_status cmd_contact(script *s, int nw, char **w, sbc_error *err)
     if (nw < 2 || strcmp(w[1], "cohesive") != 0)
         return sbc_fail(err, SBC_ERR_INPUT, "contact: law '%s' is not known (expected 'frictional' or 'cohesive')",
                         nw >= 2 ? w[1] : "");
-    if ((st = sbc_script_expect_count(nw, w, 16, usage_c, err)) != SBC_OK) return st;
-    if ((st = keyed_real(w, 2, "kn", 1, usage_c, &c.kn, err)) != SBC_OK) return st;
-    if ((st = keyed_real(w, 4, "ks", 0, usage_c, &c.ks, err)) != SBC_OK) return st;
-    if ((st = keyed_real(w, 6, "kr", 0, usage_c, &c.kr, err)) != SBC_OK) return st;
-    if ((st = keyed_real(w, 8, "fn", 1, usage_c, &c.fn_u, err)) != SBC_OK) return st;
-    if ((st = keyed_real(w, 10, "fs", 1, usage_c, &c.fs_u, err)) != SBC_OK) return st;
-    if ((st = keyed_real(w, 12, "mr", 1, usage_c, &c.m_u, err)) != SBC_OK) return st;
-    if ((st = keyed_real(w, 14, "mu", 0, usage_c, &c.mu, err)) != SBC_OK) return st;
+    if ((st = sbc_cohesive_parse(nw - 2, w + 2, "contact cohesive", &c, err)) != SBC_OK) return st;
     s->bond_law = c;
     s->law.kn = c.kn; /* broken bonds and new contacts follow eq. 6 with these */
     s->law.ks = c.ks;
