@@ -6,6 +6,7 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_servo_bc.h"
+#include "fix_servo_bc_bonds.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -43,7 +44,7 @@ const double RESTART_MAGIC = 8.020001e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), per_atom(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0), seal_on(0), seal_energy(0.0)
+    Fix(lmp, narg, arg), ctl(nullptr), per_atom(nullptr), contacts(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0), seal_on(0), seal_energy(0.0)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
@@ -180,13 +181,41 @@ void FixServoBC::make_buffers()
   for (int q = 0; q < frame.n; q++) slot[frame_tag[q]] = q;
 }
 
+/* a fix servo_bc/bonds cohesive on this fix's atoms owns their contacts
+   (eqs. 6-8 in the core): the contact sums and kn come from it, and its
+   loads must be on the atoms before this fix measures them */
+void FixServoBC::find_contacts()
+{
+  contacts = nullptr;
+  int me = -1, other = -1;
+  for (int k = 0; k < modify->nfix; k++) {
+    if (modify->fix[k] == this) me = k;
+    auto *b = dynamic_cast<FixServoBCBonds *>(modify->fix[k]);
+    if (b && b->owns_contacts()) {
+      if (contacts) fail("more than one fix servo_bc/bonds cohesive (one owns the contacts)");
+      contacts = b;
+      other = k;
+    }
+  }
+  if (!contacts) return;
+  if (other > me)
+    fail(std::string("fix servo_bc/bonds ") + contacts->id + " must come before fix servo_bc " + id +
+         " in the input (its contact loads are part of what this fix measures)");
+  if (contacts->igroup != igroup && contacts->igroup != 0)    // 0: group all
+    fail(std::string("fix servo_bc/bonds ") + contacts->id + " must act on this fix's group or on all");
+  law.kn = contacts->contact_kn();
+}
+
 void FixServoBC::init()
 {
   if (frame.n == 0)
     fail(std::string("groups ") + id + "_frame and " + id + "_interior exist but no restart data of fix " + id +
          " restored the frame (re-use the fix ID of the restart file, or delete the groups)");
-  std::string missing = law.attach(lmp);
-  if (!missing.empty()) fail(missing);
+  find_contacts();
+  if (!contacts) {
+    std::string missing = law.attach(lmp);
+    if (!missing.empty()) fail(missing);
+  }
   {    // the time step against the lightest atom's critical step (sbc/time_step.h)
     struct {
       double mass;
@@ -426,6 +455,12 @@ void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2
    on both ranks, and the lower tag counts it. */
 void FixServoBC::contact_pass(double out[4])
 {
+  if (contacts) {    // the core's sums over every contact, the same on every rank: rank 0 gives them
+    if (comm->me == 0) contacts->contact_sums(out);
+    else std::fill(out, out + 4, 0.0);
+    out[0] += seal_energy;
+    return;
+  }
   const int nlocal = atom->nlocal, *mask = atom->mask, newton = force->newton_pair;
   const tagint *tag = atom->tag;
   double **x = atom->x;

@@ -41,6 +41,8 @@ extern "C" {
 
 namespace LAMMPS_NS {
 
+class FixServoBCBonds;
+
 class FixServoBC : public Fix {
  public:
   FixServoBC(class LAMMPS *, int, char **);
@@ -76,6 +78,7 @@ class FixServoBC : public Fix {
   double **per_atom;               // per atom: frame flag (1 frame, 0 other), accumulated rotation (rad)
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
   servo_bc_host::ContactLaw law;   // kn, kt, shear history of the pair style
+  FixServoBCBonds *contacts;       // fix servo_bc/bonds cohesive, which owns the contacts instead (or null)
   FILE *csv;
   int finished;
   sbc_result last;
@@ -92,6 +95,7 @@ class FixServoBC : public Fix {
   std::vector<double> seal_reaction; // [2Q] the walls' reactions on the frame from this rank's atoms, N
   double seal_energy;                // the walls' energy from this rank's atoms, J
 
+  void find_contacts();
   void seal_pass();
   static int seal_slot(const void *self, int i);
   sbc_fire_mix fire_pass();

@@ -1,11 +1,15 @@
 /* ----------------------------------------------------------------------
    fix servo_bc/bonds (see fix_servo_bc_bonds.h):
-     fix ID group servo_bc/bonds MODEL E nu alpha
+     fix ID group servo_bc/bonds MODEL E nu alpha                    (3D)
+     fix ID group servo_bc/bonds cohesive kn KN ks KS kr KR fn FN fs FS mr MR mu MU   (2D)
    MODEL = beam (Timoshenko beams, E_b = E Pa, nu_b = nu) or parallel
    (parallel bonds, k^n = E / 2 r_min, k^s = k^n / 4.2); bond radius
-   alpha r_min. Bonds join the group's spheres that touch at the first run.
-   Outputs: f_ID (scalar) the bonds' strain energy (J); f_ID[1] the bond
-   count, f_ID[2] eq. 48's critical time step (s).
+   alpha r_min. cohesive: the paper's eqs. 7-8 with Table 6's quantities
+   (N/m, N/m, N m/rad, N, N, N m, -), eq. 6 after failure. Bonds join the
+   group's particles that touch at the first run.
+   Outputs: f_ID (scalar) the bonds' strain energy (J; cohesive: eq. 12's Ep
+   of every contact, bonds included); f_ID[1] the intact bond count;
+   f_ID[2] eq. 48's critical time step (s; cohesive: the bonds formed).
 ------------------------------------------------------------------------- */
 
 #include "fix_servo_bc_bonds.h"
@@ -28,28 +32,42 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), bonds(nullptr), n(0), last_step(-1)
+    Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), kn(0.0), bonds(nullptr), contacts(nullptr), n(0), dim(3), last_step(-1)
 {
-  if (narg != 7)
-    fail(std::string("expected 4 arguments after the style (MODEL E nu alpha), got ") + std::to_string(narg - 3));
+  if (narg < 4) fail("expected a model after the style (beam, parallel or cohesive)");
   model = arg[3];
-  if (model != "beam" && model != "parallel")
-    fail("model '" + model + "' is not valid (expected beam or parallel)");
-  const char *names[3] = {"E", "nu", "alpha"};
-  double *values[3] = {&E, &nu, &alpha};
-  for (int k = 0; k < 3; k++) {
-    char *end = nullptr;
-    *values[k] = std::strtod(arg[4 + k], &end);
-    if (end == arg[4 + k] || *end != '\0' || !std::isfinite(*values[k]))
-      fail(std::string("keyword ") + names[k] + ": '" + arg[4 + k] + "' is not a number");
+  if (model == "cohesive") {
+    // the words are checked by the core (sbc_cohesive_parse) when the fix is created
+    for (int k = 4; k < narg; k++) words += std::string(k > 4 ? " " : "") + arg[k];
+    dim = 2;
+    sbc_cohesive law;
+    sbc_error err;
+    if (sbc_cohesive_parse(narg - 4, arg + 4, "cohesive", &law, &err) != SBC_OK) fail(err.message);
+    kn = law.kn;
+  } else {
+    if (model != "beam" && model != "parallel")
+      fail("model '" + model + "' is not valid (expected beam, parallel or cohesive)");
+    if (narg != 7)
+      fail(std::string("expected 4 arguments after the style (MODEL E nu alpha), got ") + std::to_string(narg - 3));
+    const char *names[3] = {"E", "nu", "alpha"};
+    double *values[3] = {&E, &nu, &alpha};
+    for (int k = 0; k < 3; k++) {
+      char *end = nullptr;
+      *values[k] = std::strtod(arg[4 + k], &end);
+      if (end == arg[4 + k] || *end != '\0' || !std::isfinite(*values[k]))
+        fail(std::string("keyword ") + names[k] + ": '" + arg[4 + k] + "' is not a number");
+    }
+    if (!(E > 0.0) || !(nu > -1.0 && nu < 0.5) || !(alpha > 0.0))
+      fail("E " + std::string(arg[4]) + ", nu " + arg[5] + ", alpha " + arg[6] +
+           " (expected E > 0 Pa, -1 < nu < 0.5, alpha > 0)");
   }
-  if (!(E > 0.0) || !(nu > -1.0 && nu < 0.5) || !(alpha > 0.0))
-    fail("E " + std::string(arg[4]) + ", nu " + arg[5] + ", alpha " + arg[6] +
-         " (expected E > 0 Pa, -1 < nu < 0.5, alpha > 0)");
   if (!atom->sphere_flag) fail("requires atom_style sphere");
   if (std::strcmp(update->unit_style, "si") != 0)
-    fail(std::string("requires units si (E in Pa; this script has units ") + update->unit_style + ")");
-  if (domain->dimension != 3) fail("requires a 3d box (the bond models are 3D)");
+    fail(std::string("requires units si (the laws' quantities are SI; this script has units ") + update->unit_style +
+         ")");
+  if (domain->dimension != dim)
+    fail(dim == 3 ? "requires a 3d box (the bond models are 3D)"
+                  : "cohesive requires a 2d box (the paper's cohesive bonds are 2D: dimension 2)");
   restart_global = 1;
   scalar_flag = 1;
   vector_flag = 1;
@@ -59,7 +77,11 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
   extvector = 0;
 }
 
-FixServoBCBonds::~FixServoBCBonds() { sbc_bpm_destroy(bonds); }
+FixServoBCBonds::~FixServoBCBonds()
+{
+  sbc_bpm_destroy(bonds);
+  sbc_cohesive_host_free(contacts);
+}
 
 int FixServoBCBonds::setmask() { return POST_FORCE; }
 
@@ -71,9 +93,9 @@ void FixServoBCBonds::fail(const std::string &message)
 
 void FixServoBCBonds::init()
 {
-  if (bonds) return;
-  if (tags.empty()) create_bonds();
-  else bond_spheres();    // from a restart file
+  if (bonds || contacts) return;
+  if (tags.empty()) create_bonds();    // cohesive: also from a restart file, at the present centres
+  else bond_spheres();                 // from a restart file
 }
 
 namespace {
@@ -82,19 +104,30 @@ const double BONDS_MAGIC = 8.020002e7;
 }
 
 /* rank 0: model, E, nu, alpha, the reference spheres (ID, centre, radius,
-   mass) and every bond's state */
+   mass) and every bond's state; cohesive: model, the atom IDs and the pair
+   state (cohesive_host.h; the law's words are the fix's) */
 void FixServoBCBonds::write_restart(FILE *fp)
 {
-  if (comm->me != 0 || !bonds) return;
-  const int nb = sbc_bpm_host_bond_count(bonds), per = sbc_bpm_host_state_doubles(bonds);
-  std::vector<double> list = {BONDS_MAGIC, model == "beam" ? 1.0 : 2.0, E, nu, alpha, (double) n, (double) nb,
-                              (double) per};
-  for (int k = 0; k < n; k++)
-    list.insert(list.end(), {(double) tags[k], ref_x[3 * k], ref_x[3 * k + 1], ref_x[3 * k + 2], ref_r[k], ref_m[k]});
-  std::vector<double> state(per);
-  for (int k = 0; k < nb; k++) {
-    sbc_bpm_host_state_get(bonds, k, state.data());
+  if (comm->me != 0 || (!bonds && !contacts)) return;
+  std::vector<double> list;
+  if (contacts) {
+    list = {BONDS_MAGIC, 3.0, (double) n};
+    for (int k = 0; k < n; k++) list.push_back((double) tags[k]);
+    std::vector<double> state(sbc_cohesive_host_state_size(contacts));
+    sbc_cohesive_host_state_get(contacts, state.data());
+    list.push_back((double) state.size());
     list.insert(list.end(), state.begin(), state.end());
+  } else {
+    const int nb = sbc_bpm_host_bond_count(bonds), per = sbc_bpm_host_state_doubles(bonds);
+    list = {BONDS_MAGIC, model == "beam" ? 1.0 : 2.0, E, nu, alpha, (double) n, (double) nb, (double) per};
+    for (int k = 0; k < n; k++)
+      list.insert(list.end(),
+                  {(double) tags[k], ref_x[3 * k], ref_x[3 * k + 1], ref_x[3 * k + 2], ref_r[k], ref_m[k]});
+    std::vector<double> state(per);
+    for (int k = 0; k < nb; k++) {
+      sbc_bpm_host_state_get(bonds, k, state.data());
+      list.insert(list.end(), state.begin(), state.end());
+    }
   }
   int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
@@ -105,7 +138,16 @@ void FixServoBCBonds::restart(char *raw)
 {
   const double *list = (const double *) raw;
   if (list[0] != BONDS_MAGIC) fail("restart: this fix's block in the restart file is not fix servo_bc/bonds'");
-  const std::string saved_model = list[1] == 1.0 ? "beam" : "parallel";
+  const std::string saved_model = list[1] == 1.0 ? "beam" : list[1] == 2.0 ? "parallel" : "cohesive";
+  if (saved_model == "cohesive" || model == "cohesive") {
+    if (saved_model != model) fail("restart: the file's bonds are " + saved_model + "; this fix asks for " + model);
+    const int count = (int) list[2];
+    saved_tags.assign(count, 0);
+    for (int k = 0; k < count; k++) saved_tags[k] = (tagint) list[3 + k];
+    const double *p = &list[3 + count];
+    saved.assign(p + 1, p + 1 + (size_t) p[0]);
+    return;
+  }
   if (saved_model != model || list[2] != E || list[3] != nu || list[4] != alpha)
     fail("restart: the file's bonds are " + saved_model + " " + std::to_string(list[2]) + " " +
          std::to_string(list[3]) + " " + std::to_string(list[4]) + "; this fix asks for other ones");
@@ -155,7 +197,42 @@ void FixServoBCBonds::create_bonds()
     ref_r[k] = p[4];
     ref_m[k] = p[5];
   }
-  bond_spheres();
+  if (contacts || model == "cohesive") bond_discs();
+  else bond_spheres();
+}
+
+/* cohesive: the core's contacts on the group's discs at their present
+   centres; from a restart file, its pair state replaces the new bonds */
+void FixServoBCBonds::bond_discs()
+{
+  index.clear();
+  for (int k = 0; k < n; k++) index[tags[k]] = k;
+  std::vector<double> xy(2 * n);
+  for (int k = 0; k < n; k++) {
+    xy[2 * k] = ref_x[3 * k];
+    xy[2 * k + 1] = ref_x[3 * k + 1];
+  }
+  char msg[512] = "";
+  contacts = sbc_cohesive_host_create(words.c_str(), n, xy.data(), ref_r.data(), msg, sizeof msg);
+  if (!contacts) fail(std::string(msg) + " (group " + group->names[igroup] + ")");
+  if (!saved.empty()) {
+    if (saved_tags != tags)
+      fail("restart: the group's atoms (" + std::to_string(n) + ") are not the " + std::to_string(saved_tags.size()) +
+           " atoms of the restart file's pair state");
+    if (sbc_cohesive_host_state_set(contacts, saved.data(), saved.size()))
+      fail(std::string("restart: ") + sbc_cohesive_host_message(contacts));
+    saved.clear();
+  }
+  mine.assign(5 * n, 0.0);
+  all.assign(5 * n, 0.0);
+  load.assign(3 * n, 0.0);
+  if (comm->me == 0) {
+    char line[256];
+    std::snprintf(line, sizeof line, "fix servo_bc/bonds: %d cohesive bonds (%d formed) between %d discs\n",
+                  sbc_cohesive_host_bond_count(contacts), sbc_cohesive_host_bonds_initial(contacts), n);
+    if (screen) fputs(line, screen);
+    if (logfile) fputs(line, logfile);
+  }
 }
 
 /* the core's bonds on the reference spheres (at the first run, or those of a
@@ -188,24 +265,26 @@ void FixServoBCBonds::bond_spheres()
   }
 }
 
-/* x, v, omega of the group in ID order, as three blocks of 3n (x | v | omega),
+/* x, v, omega of the group in ID order as three blocks, x | v | omega (3n
+   each; cohesive: 2n | 2n | n, the plane's components and the spin about z),
    summed over ranks (each atom is owned once) */
 void FixServoBCBonds::gather()
 {
   std::fill(mine.begin(), mine.end(), 0.0);
   double **x = atom->x, **v = atom->v, **omega = atom->omega;
+  const int spins = dim == 3 ? 3 : 1, first_spin = dim == 3 ? 0 : 2;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     auto it = index.find(atom->tag[i]);
     if (it == index.end()) fail("atom " + std::to_string((long) atom->tag[i]) + " joined the group after set-up");
     const int k = it->second;
-    for (int c = 0; c < 3; c++) {
-      mine[3 * k + c] = x[i][c];
-      mine[3 * (n + k) + c] = v[i][c];
-      mine[3 * (2 * n + k) + c] = omega[i][c];
+    for (int c = 0; c < dim; c++) {
+      mine[dim * k + c] = x[i][c];
+      mine[dim * (n + k) + c] = v[i][c];
     }
+    for (int c = 0; c < spins; c++) mine[2 * dim * n + spins * k + c] = omega[i][first_spin + c];
   }
-  MPI_Allreduce(mine.data(), all.data(), 9 * n, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(mine.data(), all.data(), (int) mine.size(), MPI_DOUBLE, MPI_SUM, world);
 }
 
 void FixServoBCBonds::setup(int) { post_force(0); }
@@ -218,8 +297,12 @@ void FixServoBCBonds::post_force(int)
   if (update->ntimestep != last_step) {
     gather();
     // the first evaluation (no step taken yet) builds no increment
-    if (last_step < 0) std::fill(all.begin() + 3 * n, all.end(), 0.0);
-    if (sbc_bpm_host_loads(bonds, &all[0], &all[3 * n], &all[6 * n], update->dt, load.data()))
+    if (last_step < 0) std::fill(all.begin() + dim * n, all.end(), 0.0);
+    const double *x = &all[0], *v = &all[dim * n], *w = &all[2 * dim * n];
+    if (contacts) {
+      if (sbc_cohesive_host_loads(contacts, x, v, w, update->dt, load.data()))
+        fail("step " + std::to_string((long) update->ntimestep) + ": " + sbc_cohesive_host_message(contacts));
+    } else if (sbc_bpm_host_loads(bonds, x, v, w, update->dt, load.data()))
       fail("a bond load is not finite at step " + std::to_string((long) update->ntimestep) + " (time step " +
            std::to_string(update->dt) + " s, eq. 48's critical step " + std::to_string(sbc_bpm_critical_dt(bonds)) +
            " s)");
@@ -228,7 +311,15 @@ void FixServoBCBonds::post_force(int)
   double **f = atom->f, **torque = atom->torque;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    const double *l = &load[6 * index[atom->tag[i]]];
+    const int k = index[atom->tag[i]];
+    if (contacts) {
+      const double *l = &load[3 * k];
+      f[i][0] += l[0];
+      f[i][1] += l[1];
+      torque[i][2] += l[2];
+      continue;
+    }
+    const double *l = &load[6 * k];
     for (int c = 0; c < 3; c++) {
       f[i][c] += l[c];
       torque[i][c] += l[3 + c];
@@ -236,10 +327,25 @@ void FixServoBCBonds::post_force(int)
   }
 }
 
-double FixServoBCBonds::compute_scalar() { return bonds ? sbc_bpm_host_strain_energy(bonds) : 0.0; }
+void FixServoBCBonds::contact_sums(double out[4]) const
+{
+  if (contacts) sbc_cohesive_host_sums(contacts, out);
+  else std::fill(out, out + 4, 0.0);
+}
+
+double FixServoBCBonds::compute_scalar()
+{
+  if (contacts) {
+    double sums[4];
+    sbc_cohesive_host_sums(contacts, sums);
+    return sums[0];
+  }
+  return bonds ? sbc_bpm_host_strain_energy(bonds) : 0.0;
+}
 
 double FixServoBCBonds::compute_vector(int k)
 {
+  if (contacts) return k == 0 ? sbc_cohesive_host_bond_count(contacts) : sbc_cohesive_host_bonds_initial(contacts);
   if (!bonds) return 0.0;
   return k == 0 ? sbc_bpm_host_bond_count(bonds) : sbc_bpm_critical_dt(bonds);
 }
