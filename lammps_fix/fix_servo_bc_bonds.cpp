@@ -32,7 +32,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), kn(0.0), bonds(nullptr), contacts(nullptr), n(0), dim(3), last_step(-1)
+    Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), kn(0.0), bonds(nullptr), contacts(nullptr), n(0), dim(3), last_step(-1), reported(-1)
 {
   if (narg < 4) fail("expected a model after the style (beam, parallel or cohesive)");
   model = arg[3];
@@ -83,7 +83,21 @@ FixServoBCBonds::~FixServoBCBonds()
   sbc_cohesive_host_free(contacts);
 }
 
-int FixServoBCBonds::setmask() { return POST_FORCE; }
+int FixServoBCBonds::setmask() { return POST_FORCE | POST_RUN; }
+
+/* cohesive: how many bonds are left, at the end of a run where some broke */
+void FixServoBCBonds::post_run()
+{
+  if (!contacts || comm->me != 0) return;
+  const int intact = sbc_cohesive_host_bond_count(contacts);
+  if (intact == reported) return;
+  reported = intact;
+  char line[128];
+  std::snprintf(line, sizeof line, "fix servo_bc/bonds: cohesive bonds intact %d of %d\n", intact,
+                sbc_cohesive_host_bonds_initial(contacts));
+  if (screen) fputs(line, screen);
+  if (logfile) fputs(line, logfile);
+}
 
 void FixServoBCBonds::fail(const std::string &message)
 {

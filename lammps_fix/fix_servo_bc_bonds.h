@@ -42,6 +42,7 @@ class FixServoBCBonds : public Fix {
   void init() override;
   void setup(int) override;
   void post_force(int) override;
+  void post_run() override;
   double compute_scalar() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -68,6 +69,7 @@ class FixServoBCBonds : public Fix {
   std::unordered_map<tagint, int> index;   // atom ID -> sphere
   std::vector<double> mine, all, load;     // gather buffers: x | v | omega; loads (6 per sphere in 3D, 3 per disc in 2D)
   bigint last_step;                        // the step whose loads are in `load`
+  int reported;                            // cohesive: the intact bonds post_run last printed
   std::string last_error;
   void create_bonds();
   void bond_spheres();

@@ -114,15 +114,27 @@ void test_decks(void)
         CHECK(contains(dir, "yade.py", yade));
         CHECK(contains(dir, "packing.txt", box));
     }
-    /* what the hosts cannot run, and a folder that is not there */
+    /* a cohesive case: every host hands its contacts to the core, with the same law words */
     snprintf(script, sizeof script,
              "dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\n"
-             "contact cohesive kn 1e4 ks 2e3 kr 1e-3 fn 1 fs 1 mr 1e-3 mu 0.4\ndensity 2e3\ntimestep 1e-6\n"
+             "contact cohesive kn 1e4 ks 2e3 kr 0.001 fn 1 fs 1 mr 0.001 mu 0.4\ndensity 2e3\ntimestep 1e-6\n"
              "servo_bc D F 1 0.01 0 1\nrun\n");
     snprintf(path, sizeof path, "%s/case_cohesive.sbc", test_tmpdir);
     CHECK(write_text(path, script) == 0);
-    CHECK(sbc_script_decks_file(path, dir, NULL, &err) == SBC_ERR_INPUT && strstr(err.message, "case_cohesive.sbc:7") &&
-          strstr(err.message, "'contact cohesive' has no counterpart"));
+    CHECK(sbc_script_decks_file(path, dir, NULL, &err) == SBC_OK);
+    {
+        const char *embedded[] = {"contact cohesive kn 10000 ks 2000 kr 0.001 fn 1 fs 1 mr 0.001 mu 0.4", NULL};
+        const char *lammps[] = {"pair_style      zero", "fix             bonds all servo_bc/bonds cohesive kn 10000 "
+                                "ks 2000 kr 0.001 fn 1 fs 1 mr 0.001 mu 0.4", NULL};
+        const char *liggghts[] = {"pair_style      none", "atom_modify     sort 0 0.0",
+                                  "fix             bonds all servo_bc/bonds cohesive kn 10000", NULL};
+        const char *yade[] = {"cohesive='kn 10000 ks 2000 kr 0.001 fn 1 fs 1 mr 0.001 mu 0.4'", NULL};
+        const char *frictional[] = {"gran", NULL};
+        CHECK(contains(dir, "embedded.sbc", embedded) && contains(dir, "lammps.in", lammps));
+        CHECK(contains(dir, "liggghts.in", liggghts) && contains(dir, "yade.py", yade));
+        CHECK(!contains(dir, "lammps.in", frictional) && !contains(dir, "liggghts.in", frictional));
+    }
+    /* a folder that is not there */
     snprintf(path, sizeof path, "%s/case_periodic.sbc", test_tmpdir);
     CHECK(sbc_script_decks_file(path, "/dev/null/folder", NULL, &err) == SBC_ERR_IO &&
           strstr(err.message, "cannot open '/dev/null/folder/packing.txt'"));

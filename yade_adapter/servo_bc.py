@@ -28,7 +28,8 @@ from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb,
                           Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator, PyRunner, FrictMat,
                           MatchMaker)
 
-__all__ = ['ServoBCError', 'ServoBC', 'load_packing', 'engines', 'run_case', 'COLUMNS', 'FRAME_MASK']
+__all__ = ['ServoBCError', 'ServoBC', 'Bonds', 'Cohesive', 'load_packing', 'engines', 'run_case', 'COLUMNS',
+           'FRAME_MASK']
 
 # the CSV columns (sbc_csv_header, docs/servo_bc.md)
 COLUMNS = ('increment', 'F11', 'F12', 'F21', 'F22', 'P11', 'P12', 'P21', 'P22', 'sigma11', 'sigma12',
@@ -85,6 +86,14 @@ def _library():
         'sbc_bpm_host_strain_energy': (D, [P]),
         'sbc_bpm_critical_dt': (D, [P]),
         'sbc_bpm_destroy': (None, [P]),
+        'sbc_cohesive_host_create': (P, [ctypes.c_char_p, I, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
+        'sbc_cohesive_host_free': (None, [P]),
+        'sbc_cohesive_host_kn': (D, [P]),
+        'sbc_cohesive_host_bond_count': (I, [P]),
+        'sbc_cohesive_host_bonds_initial': (I, [P]),
+        'sbc_cohesive_host_loads': (I, [P, pd, pd, pd, D, pd]),
+        'sbc_cohesive_host_message': (ctypes.c_char_p, [P]),
+        'sbc_cohesive_host_sums': (None, [P, pd]),
         'sbc_host_sealed': (I, [P]),
         'sbc_host_seal': (I, [P, pd, pd, pd]),
     }
@@ -153,25 +162,38 @@ def load_packing(path, density, kn, ks, mu, young=None):
     return ids, frame
 
 
-def run_case(packing, words, density, kn, ks, mu, dt, max_steps=None):
+def run_case(packing, words, density, kn, ks, mu, dt, max_steps=None, cohesive=None):
     """One servo_bc run on a packing file: the discs, the engines, the loading path.
+    cohesive: the words of the paper's cohesive law ('kn KN ks KS kr KR fn FN fs FS mr MR mu
+    MU', Cohesive), whose kn, ks, mu replace the arguments'.
     Returns the ServoBC object (rows, plot_data); raises ServoBCError on failure."""
     O.reset()
     ids, _ = load_packing(packing, density, kn, ks, mu)
-    servo = ServoBC(words, ids, dt, kn)
-    O.engines = engines(servo, kn, ks)
-    servo.run(max_steps)
+    contacts = Cohesive(ids, cohesive) if cohesive else None
+    servo = ServoBC(words, ids, dt, contacts.kn if contacts else kn, contacts=contacts)
+    O.engines = engines(servo, kn, ks, contacts)
+    try:
+        servo.run(max_steps)
+    finally:
+        if contacts:
+            print('servo_bc: cohesive bonds intact %d of %d' % (contacts.bond_count(), contacts.bonds_initial),
+                  flush=True)
     return servo
 
 
-def engines(servo, kn, ks):
+def engines(servo, kn, ks, contacts=None):
     """The engine list of a servo_bc scene: contact law of eq. 6 with kn, ks (N/m) on every
     contact (Ip2 MatchMakers: exact for any radii), the servo_bc engine after the forces and
     before NewtonIntegrator, whose damping is eq. 10 with alpha = beta. The shear increment
     is the relative velocity at the contact point (avoidGranularRatcheting off): YADE's
     default scales its translational part by (R1+R2)/(R1+R2-delta), which moved sigma of the
     paper's regular packing 0.53 % of the stress scale away from the other hosts (0.15 %
-    without it, docs/yade/servo_bc.md)."""
+    without it, docs/yade/servo_bc.md).
+    contacts: a Cohesive object, which owns every contact between its bodies: then YADE
+    detects no contact at all (no collider, no InteractionLoop) and its engine computes them."""
+    if contacts is not None:
+        return [ForceResetter(), contacts.engine, servo.engine,
+                NewtonIntegrator(damping=servo.damping, label='servo_bc_newton')]
     return [ForceResetter(),
             InsertionSortCollider([Bo1_Sphere_Aabb()]),
             InteractionLoop([Ig2_Sphere_Sphere_ScGeom(avoidGranularRatcheting=False)],
@@ -192,9 +214,11 @@ class ServoBC(object):
     whose groupMask shares a bit with MASK; otherwise the core detects it. dt: O.dt (s).
     kn: the normal contact stiffness of engines() (N/m), which sets how fast the frame
     travels to new positions and the round-off floor of the force balance (relax.h).
-    done: called with this object when the path finishes or fails."""
+    done: called with this object when the path finishes or fails.
+    contacts: a Cohesive object that owns the bodies' contacts (Ep and the contact sums of
+    relax.h are then its own, not YADE's interactions')."""
 
-    def __init__(self, words, bodies, dt, kn, done=None, **keywords):
+    def __init__(self, words, bodies, dt, kn, done=None, contacts=None, **keywords):
         lib = _core()
         for key, value in keywords.items():
             values = value if isinstance(value, (tuple, list)) else (value,)
@@ -204,6 +228,7 @@ class ServoBC(object):
         self.dt = float(dt)
         self.kn = float(kn)
         self.done = done
+        self.contacts = contacts
         self.rows = []            # one dict per converged increment (yade.plot: see plot_data)
         self.error = None
         self.finished = False
@@ -349,6 +374,8 @@ class ServoBC(object):
     def _potential_energy(self):
         """Ep (eq. 12): sum over contacts of Fn^2/2kn + Fs^2/2ks. The law's own sum (C++)
         divides by ks, which is 0 for frictionless contacts: then the sum is taken here."""
+        if self.contacts is not None:
+            return self.contacts.sums()[0]
         ep = self._law().elasticEnergy()
         if math.isfinite(ep):
             return ep
@@ -363,6 +390,8 @@ class ServoBC(object):
 
     def _contact_sums(self):
         """eq. 39's sum, the contact count and the sum of |contact force| (relax.h)."""
+        if self.contacts is not None:
+            return tuple(self.contacts.sums()[1:])
         ov, nc, fc = 0.0, 0, 0.0
         for I in O.interactions:
             if I.isReal and I.geom.penetrationDepth > 0.0:
@@ -379,7 +408,7 @@ class ServoBC(object):
         80 times cheaper per step than a Python loop over 100 bodies. fc_mean: this step's
         mean contact force when measured, else the last one measured (the core decides on
         measured steps only, sbc_controller_needs)."""
-        if not self._free_any and fc_mean > 0.0:
+        if not self._free_any and fc_mean > 0.0 and self.contacts is None:
             u = utils.unbalancedForce(True)
             if math.isfinite(u):
                 return u * fc_mean
@@ -654,3 +683,73 @@ class Bonds(object):
         for k, i in enumerate(self.bodies):
             forces.addF(i, (load[6 * k], load[6 * k + 1], load[6 * k + 2]))
             forces.addT(i, (load[6 * k + 3], load[6 * k + 4], load[6 * k + 5]))
+
+
+class Cohesive(object):
+    """The paper's 2D cohesive bonds (eqs. 7-8) and frictional contacts (eq. 6) between the
+    discs bodies (cohesive_host.h): bodies touching now are bonded; a bond that meets eq. 8
+    breaks for good and the pair goes on by eq. 6 with the bond's kn, ks, mu. words: 'kn KN
+    ks KS kr KR fn FN fs FS mr MR mu MU' (N/m, N/m, N m/rad, N, N, N m, -), the runner's
+    `contact cohesive` words. The core owns every contact between these bodies and runs the
+    pair loop in C; `engine` (a PyRunner for every step, after ForceResetter and before the
+    servo_bc engine and NewtonIntegrator) hands it the centres and velocities and adds the
+    forces and moments to O.forces. YADE must detect no contact between them (engines(...,
+    contacts=this))."""
+
+    def __init__(self, bodies, words):
+        lib = _core()
+        self.bodies = list(bodies)
+        self.words = words
+        n = len(self.bodies)
+        xy, r = [], []
+        for i in self.bodies:
+            b = O.bodies[i]
+            if b is None or not hasattr(b.shape, 'radius'):
+                raise ServoBCError('servo_bc: cohesive: body %r is not a sphere' % (i,))
+            xy += [b.state.pos[0], b.state.pos[1]]
+            r.append(b.shape.radius)
+        msg = ctypes.create_string_buffer(512)
+        self._h = lib.sbc_cohesive_host_create(str(words).encode(), n, _doubles(xy), _doubles(r), msg, 512)
+        if not self._h:
+            raise ServoBCError('servo_bc: ' + msg.value.decode())
+        self.kn = lib.sbc_cohesive_host_kn(self._h)
+        self.bonds_initial = lib.sbc_cohesive_host_bonds_initial(self._h)
+        self._states = [O.bodies[i].state for i in self.bodies]
+        self._x, self._v = (ctypes.c_double * (2 * n))(), (ctypes.c_double * (2 * n))()
+        self._w = (ctypes.c_double * n)()
+        self._load = (ctypes.c_double * (3 * n))()
+        self._sums = (ctypes.c_double * 4)()
+        _instances.append(self)
+        name = '_servo_bc_cohesive_%d' % (len(_instances) - 1)
+        setattr(sys.modules['__main__'], name, self.step)
+        self.engine = PyRunner(command='%s()' % name, iterPeriod=1, label='servo_bc_cohesive_%d' % (len(_instances) - 1))
+
+    def __del__(self):
+        if getattr(self, '_h', None) and _lib is not None:
+            _lib.sbc_cohesive_host_free(self._h)
+            self._h = None
+
+    def bond_count(self):
+        """Intact bonds now."""
+        return _core().sbc_cohesive_host_bond_count(self._h)
+
+    def sums(self):
+        """The last step's Ep (eq. 12 with the bond terms, J), sum dn / Rbar (eq. 39), contact
+        count, sum |contact force| (N)."""
+        _core().sbc_cohesive_host_sums(self._h, self._sums)
+        return list(self._sums)
+
+    def step(self):
+        """Called by the PyRunner each step: YADE's velocities here are v(t - dt/2)."""
+        st = self._states
+        self._x[:] = [c for s in st for c in (s.pos[0], s.pos[1])]
+        self._v[:] = [c for s in st for c in (s.vel[0], s.vel[1])]
+        self._w[:] = [s.angVel[2] for s in st]
+        load = self._load
+        lib = _core()
+        if lib.sbc_cohesive_host_loads(self._h, self._x, self._v, self._w, O.dt, load):
+            raise ServoBCError('servo_bc: step %d: %s' % (O.iter, lib.sbc_cohesive_host_message(self._h).decode()))
+        forces = O.forces
+        for k, i in enumerate(self.bodies):
+            forces.addF(i, (load[3 * k], load[3 * k + 1], 0.0))
+            forces.addT(i, (0.0, 0.0, load[3 * k + 2]))

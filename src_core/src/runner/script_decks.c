@@ -2,7 +2,10 @@
  * one packing written in each host's format, and the embedded script, the
  * LAMMPS deck, the LIGGGHTS script and the YADE script that run the same
  * contact law, time step and servo_bc words on it, each writing DIR/HOST.csv.
- * Written from the parsed case, so the four cannot drift apart by hand. */
+ * Written from the parsed case, so the four cannot drift apart by hand.
+ * A frictional case uses each host's own contact law (eq. 6); a cohesive
+ * one (eqs. 7-8) hands every contact to the core: fix servo_bc/bonds
+ * cohesive in LAMMPS and LIGGGHTS, servo_bc.Cohesive in YADE. */
 #include "script_state.h"
 #include "sbc/output_file.h"
 
@@ -23,6 +26,19 @@ static number_text num(double v)
     snprintf(t.s, sizeof t.s, "%.15g", v);
     if (strtod(t.s, NULL) != v)
         snprintf(t.s, sizeof t.s, "%.17g", v);
+    return t;
+}
+
+/* The cohesive law's words after `cohesive` (contact.h, sbc_cohesive_parse). */
+typedef struct law_text {
+    char s[320];
+} law_text;
+
+static law_text cohesive_words(const sbc_cohesive *c)
+{
+    law_text t;
+    snprintf(t.s, sizeof t.s, "kn %s ks %s kr %s fn %s fs %s mr %s mu %s", num(c->kn).s, num(c->ks).s, num(c->kr).s,
+             num(c->fn_u).s, num(c->fs_u).s, num(c->m_u).s, num(c->mu).s);
     return t;
 }
 
@@ -62,13 +78,17 @@ static sbc_status write_embedded(const script *s, const char *dir, sbc_error *er
     if (st != SBC_OK)
         return st;
     fprintf(fp, "# %s on the embedded engine (servo-bc --decks); run in this folder\n", s->name);
-    fprintf(fp, "dimension 2\nread_packing packing.txt\ncontact frictional kn %s ks %s mu %s\n"
-                "density %s\ntimestep %s\nservo_bc %s file embedded.csv\nrun\n",
-            num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s, num(s->density).s, num(s->dt).s, s->servo_words);
+    fprintf(fp, "dimension 2\nread_packing packing.txt\n");
+    if (s->cohesive)
+        fprintf(fp, "contact cohesive %s\n", cohesive_words(&s->bond_law).s);
+    else
+        fprintf(fp, "contact frictional kn %s ks %s mu %s\n", num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s);
+    fprintf(fp, "density %s\ntimestep %s\nservo_bc %s file embedded.csv\nrun\n", num(s->density).s, num(s->dt).s,
+            s->servo_words);
     return close_file(fp, path, err);
 }
 
-static sbc_status write_lammps(const script *s, const char *dir, double skin, sbc_error *err)
+static sbc_status write_lammps(const script *s, const char *dir, double skin, double rmax, sbc_error *err)
 {
     char path[2 * SBC_NAME_LEN];
     FILE *fp;
@@ -77,15 +97,22 @@ static sbc_status write_lammps(const script *s, const char *dir, double skin, sb
         return st;
     fprintf(fp, "# %s in LAMMPS (servo-bc --decks): build/lmp_servo -in lammps.in, in this folder\n", s->name);
     fprintf(fp, "units           si\ndimension       2\nboundary        m m p\natom_style      sphere\n"
-                "read_data       packing.lammps.data\ngroup           frame_atoms type 2\n"
-                "pair_style      gran/hooke/history %s %s 0 0 %s 0\npair_coeff      * *\n"
-                "comm_modify     vel yes\nneighbor        %s bin\nneigh_modify    delay 0 every 1 check yes\n"
+                "read_data       packing.lammps.data\ngroup           frame_atoms type 2\n");
+    if (s->cohesive) /* the core owns every contact: the pair style adds nothing */
+        fprintf(fp, "pair_style      zero %s\npair_coeff      * *\n", num(2.0 * rmax).s);
+    else
+        fprintf(fp, "pair_style      gran/hooke/history %s %s 0 0 %s 0\npair_coeff      * *\n", num(s->law.kn).s,
+                num(s->law.ks).s, num(s->law.mu).s);
+    fprintf(fp, "comm_modify     vel yes\nneighbor        %s bin\nneigh_modify    delay 0 every 1 check yes\n"
                 "timestep        %s\n",
-            num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s, num(skin).s, num(s->dt).s);
+            num(skin).s, num(s->dt).s);
+    if (s->cohesive)
+        fprintf(fp, "fix             bonds all servo_bc/bonds cohesive %s\n", cohesive_words(&s->bond_law).s);
     fprintf(fp, "fix             servo all servo_bc %s%s file lammps.csv\n", s->servo_words, frame_words(s, "lammps"));
     fprintf(fp, "fix             integrate servo_interior nve/sphere disc\nfix             plane all enforce2d\n"
-                "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]\n"
-                "thermo          100000\nrun             2000000000    # the fix ends the run\n");
+                "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]%s\n"
+                "thermo          100000\nrun             2000000000    # the fix ends the run\n",
+            s->cohesive ? " f_bonds[1]" : "");
     return close_file(fp, path, err);
 }
 
@@ -101,25 +128,35 @@ static sbc_status write_liggghts(const script *s, const char *dir, double skin, 
         return st;
     fprintf(fp, "# %s in LIGGGHTS (servo-bc --decks): build/liggghts_servo -in liggghts.in, in this folder\n",
             s->name);
-    fprintf(fp, "units           si\ndimension       2\nboundary        m m p\natom_style      sphere\n"
-                "newton          off\ncommunicate     single vel yes\nread_data       packing.liggghts.data\n"
+    fprintf(fp, "units           si\ndimension       2\nboundary        m m p\natom_style      sphere\n");
+    if (s->cohesive) /* no pair style, so no neighbour bins to sort atoms by */
+        fprintf(fp, "atom_modify     sort 0 0.0\n");
+    fprintf(fp, "newton          off\ncommunicate     single vel yes\nread_data       packing.liggghts.data\n"
                 "group           frame_atoms type 2\n");
-    for (k = 0; k < 5; ++k)
-        fprintf(fp, "fix             m%d all property/global %s peratomtypepair 2 %s %s %s %s\n", k + 1, property[k],
-                num(value[k]).s, num(value[k]).s, num(value[k]).s, num(value[k]).s);
-    fprintf(fp, "pair_style      gran model hooke/stiffness tangential history absolute_damping on\n"
-                "pair_coeff      * *\nneighbor        %s bin\nneigh_modify    delay 0\ntimestep        %s\n",
-            num(skin).s, num(s->dt).s);
+    if (s->cohesive) {
+        fprintf(fp, "pair_style      none    # the core owns every contact\nneighbor        %s bin\n"
+                    "neigh_modify    delay 0\ntimestep        %s\n"
+                    "fix             bonds all servo_bc/bonds cohesive %s\n",
+                num(skin).s, num(s->dt).s, cohesive_words(&s->bond_law).s);
+    } else {
+        for (k = 0; k < 5; ++k)
+            fprintf(fp, "fix             m%d all property/global %s peratomtypepair 2 %s %s %s %s\n", k + 1,
+                    property[k], num(value[k]).s, num(value[k]).s, num(value[k]).s, num(value[k]).s);
+        fprintf(fp, "pair_style      gran model hooke/stiffness tangential history absolute_damping on\n"
+                    "pair_coeff      * *\nneighbor        %s bin\nneigh_modify    delay 0\ntimestep        %s\n",
+                num(skin).s, num(s->dt).s);
+    }
     fprintf(fp, "fix             servo all servo_bc %s%s file liggghts.csv\n", s->servo_words,
             frame_words(s, "liggghts"));
     fprintf(fp, "fix             integrate servo_interior nve/sphere\nfix             plane all enforce2d\n"
-                "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]\n"
+                "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]%s\n"
                 "thermo          100000\n"
                 "variable        done equal f_servo[18]    # LIGGGHTS cannot end a run from a fix\n"
                 "run             0\n"
                 "label           loop    # pieces without a setup between them: the uninterrupted run's results\n"
                 "run             10000 pre no post no\n"
-                "if              \"${done} == 0\" then \"jump SELF loop\"\n");
+                "if              \"${done} == 0\" then \"jump SELF loop\"\n",
+            s->cohesive ? " f_bonds[1]" : "");
     return close_file(fp, path, err);
 }
 
@@ -135,8 +172,11 @@ static sbc_status write_yade(const script *s, const char *dir, sbc_error *err)
                 "import servo_bc  # noqa: E402\n\n",
             s->name);
     fprintf(fp, "words = '%s%s file yade.csv'\n", s->servo_words, frame_words(s, "yade"));
-    fprintf(fp, "servo_bc.run_case('packing.yade', words, density=%s, kn=%s, ks=%s, mu=%s, dt=%s)\n",
-            num(s->density).s, num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s, num(s->dt).s);
+    fprintf(fp, "servo_bc.run_case('packing.yade', words, density=%s, kn=%s, ks=%s, mu=%s, dt=%s", num(s->density).s,
+            num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s, num(s->dt).s);
+    if (s->cohesive)
+        fprintf(fp, ",\n                  cohesive='%s'", cohesive_words(&s->bond_law).s);
+    fprintf(fp, ")\n");
     return close_file(fp, path, err);
 }
 
@@ -146,21 +186,18 @@ sbc_status sbc_script_write_decks(script *s, const char *dir, sbc_error *err)
     static const char *file[4] = {"packing.txt", "packing.lammps.data", "packing.liggghts.data", "packing.yade"};
     char path[2 * SBC_NAME_LEN];
     int k;
-    double rmin = HUGE_VAL;
+    double rmin = HUGE_VAL, rmax = 0.0;
     sbc_status st = SBC_OK;
     if (!s->have_packing) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no packing (use 'lattice', 'read_packing' or 'generate')");
     if (!s->have_contact) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no contact law (use 'contact frictional ...')");
     if (!s->have_density) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no density (use 'density RHO')");
     if (!s->have_dt) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no time step (use 'timestep DT')");
     if (!s->have_servo) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no boundary condition (use 'servo_bc BC ...')");
-    if (s->cohesive)
-        return sbc_fail(err, SBC_ERR_INPUT, "--decks: 'contact cohesive' has no counterpart in the hosts' fixes; "
-                                            "compare frictional cases");
     if (s->settings.frame_group[0])
         return sbc_fail(err, SBC_ERR_INPUT, "--decks: servo_bc keyword 'frame' names a host group '%s'; the decks "
                                             "take the frame of the packing", s->settings.frame_group);
     for (k = 0; k < s->packing.n; ++k)
-        rmin = fmin(rmin, s->packing.r[k]);
+        rmin = fmin(rmin, s->packing.r[k]), rmax = fmax(rmax, s->packing.r[k]);
     for (k = 0; k < 4 && st == SBC_OK; ++k) {
         if (snprintf(path, sizeof path, "%s/%s", dir, file[k]) >= (int)sizeof path)
             return sbc_fail(err, SBC_ERR_INPUT, "--decks: directory name '%s' is too long", dir);
@@ -168,7 +205,7 @@ sbc_status sbc_script_write_decks(script *s, const char *dir, sbc_error *err)
     }
     /* neighbour skin R_min / 4, as the hand-written decks */
     if (st == SBC_OK) st = write_embedded(s, dir, err);
-    if (st == SBC_OK) st = write_lammps(s, dir, 0.25 * rmin, err);
+    if (st == SBC_OK) st = write_lammps(s, dir, 0.25 * rmin, rmax, err);
     if (st == SBC_OK) st = write_liggghts(s, dir, 0.25 * rmin, err);
     if (st == SBC_OK) st = write_yade(s, dir, err);
     return st;
