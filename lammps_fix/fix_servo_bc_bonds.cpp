@@ -18,6 +18,8 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
+#include "pair.h"
 #include "group.h"
 #include "update.h"
 
@@ -107,6 +109,10 @@ void FixServoBCBonds::fail(const std::string &message)
 
 void FixServoBCBonds::init()
 {
+  // cohesive: the core computes every contact; a pair style that does too counts them twice
+  if (model == "cohesive" && force->pair && !force->pair_match("zero", 1))
+    fail(std::string("cohesive computes every contact between the group's discs; pair_style ") + force->pair_style +
+         " computes them again (use pair_style zero in LAMMPS, pair_style none in LIGGGHTS)");
   if (bonds || contacts) return;
   if (tags.empty()) create_bonds();    // cohesive: also from a restart file, at the present centres
   else bond_spheres();                 // from a restart file

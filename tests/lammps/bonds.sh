@@ -145,20 +145,33 @@ else
   bad "restart mid-run: ${b:-none} m after the split, ${a:-none} m straight through: $(tail -3 "$tmp/restart.log")"
 fi
 refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION [UNITS]]
-  printf 'units %s\ndimension %s\nboundary f f f\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 0.5\ncreate_atoms 1 single 0.3 0.5 0.5\nset type 1 diameter 0.2\n%s\nrun 1\n' \
-    "${5:-si}" "${4:-3}" "$2" > "$tmp/bad.in"
+  # 2d: periodic in z, the discs at z = 0
+  local z=0.5 zb="0 1" bz=f
+  [ "${4:-3}" = 2 ] && z=0 zb="-0.5 0.5" bz=p
+  printf 'units %s\ndimension %s\nboundary f f %s\natom_style sphere\nregion b block 0 1 0 1 %s\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 %s\ncreate_atoms 1 single 0.3 0.5 %s\nset type 1 diameter 0.2\n%s\nrun 1\n' \
+    "${5:-si}" "${4:-3}" "$bz" "$zb" "$z" "$z" "$2" > "$tmp/bad.in"
   (cd "$tmp" && timeout 60 "$bin" -in bad.in -log none) > "$tmp/bad.log" 2>&1
   local status=$?
   if [ $status -ne 0 ] && grep -qF "$3" "$tmp/bad.log"; then ok "refuses $1 (exit $status): $3"
   else bad "$1 (exit $status), expected '$3': $(tail -2 "$tmp/bad.log")"; fi
 }
 refused "a missing alpha" "fix b all servo_bc/bonds beam 4e9 0.3" "expected 4 arguments after the style (MODEL E nu alpha), got 3"
-refused "an unknown model" "fix b all servo_bc/bonds rope 4e9 0.3 1" "model 'rope' is not valid (expected beam or parallel)"
+refused "an unknown model" "fix b all servo_bc/bonds rope 4e9 0.3 1" "model 'rope' is not valid (expected beam, parallel or cohesive)"
 refused "a word for E" "fix b all servo_bc/bonds beam stiff 0.3 1" "keyword E: 'stiff' is not a number"
 refused "nu = 0.5" "fix b all servo_bc/bonds beam 4e9 0.5 1" "expected E > 0 Pa, -1 < nu < 0.5, alpha > 0"
 refused "spheres that do not touch" "set atom 2 x 0.6
 fix b all servo_bc/bonds beam 4e9 0.3 1" "no two spheres touch"
-refused "units metal" "fix b all servo_bc/bonds beam 4e9 0.3 1" "requires units si (E in Pa; this script has units metal)" 3 metal
+refused "units metal" "fix b all servo_bc/bonds beam 4e9 0.3 1" "requires units si (the laws' quantities are SI; this script has units metal)" 3 metal
+coh="kn 1e8 ks 4e7 kr 20 fn 300 fs 60 mr 0.2 mu 0.6"
+refused "cohesive bonds in a 3d box" "fix b all servo_bc/bonds cohesive $coh" "cohesive requires a 2d box"
+refused "a cohesive law without mu" "fix b all servo_bc/bonds cohesive kn 1e8 ks 4e7 kr 20 fn 300 fs 60 mr 0.2" \
+  "cohesive: missing values (expected 'kn KN ks KS kr KR fn FN fs FS mr MR mu MU')" 2
+refused "a word for a strength" "fix b all servo_bc/bonds cohesive kn 1e8 ks 4e7 kr 20 fn strong fs 60 mr 0.2 mu 0.6" \
+  "cohesive: fn 'strong' is not a number (expected a real > 0)" 2
+refused "a misspelt keyword" "fix b all servo_bc/bonds cohesive kn 1e8 ks 4e7 kb 20 fn 300 fs 60 mr 0.2 mu 0.6" \
+  "cohesive: expected keyword 'kr' but found 'kb'" 2
+refused "discs that do not touch" "set atom 2 x 0.6
+fix b all servo_bc/bonds cohesive $coh" "cohesive: no two of the 2 discs touch, so no bond formed" 2
 printf 'units si\ndimension 3\nboundary f f f\natom_style atomic\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 0.5\nmass 1 1\nfix b all servo_bc/bonds beam 4e9 0.3 1\n' > "$tmp/atomic.in"
 (cd "$tmp" && timeout 60 "$bin" -in atomic.in -log none) > "$tmp/atomic.log" 2>&1
 status=$?
@@ -166,6 +179,52 @@ if [ $status -ne 0 ] && grep -qF "Fix servo_bc/bonds: requires atom_style sphere
   ok "refuses atom_style atomic (exit $status): requires atom_style sphere"
 else
   bad "atom_style atomic (exit $status): $(tail -2 "$tmp/atomic.log")"
+fi
+# the cohesive layer (inputs/compare/cohesive_layer_short.sbc, the decks of
+# servo-bc --decks) split by write_restart / read_restart inside increment 2:
+# the bonds' pair state and the servo's state come back, and the split run
+# writes the uninterrupted run's rows (to 1e-9 of the stress scale)
+servo_bc=$here/../../build/servo-bc
+if "$servo_bc" --decks "$tmp/coh" "$here/../../inputs/compare/cohesive_layer_short.sbc" > "$tmp/decks.log" 2>&1; then
+  cd "$tmp/coh"
+  sed "/^run  *0\$/d; s|^run .*|run 4000\nwrite_restart half.restart|; /jump SELF loop/d; s/$host.csv/split.csv/" \
+    $host.in > part1.in
+  { echo "read_restart half.restart"; sed -n '/^atom_modify/p' $host.in
+    sed -n '/^pair_style/,$p' $host.in | sed "s/$host.csv/split.csv/"; } > part2.in
+  for deck in $host part1 part2; do
+    timeout 300 "$bin" -in $deck.in -log none > $deck.log 2>&1 || { tail -3 $deck.log; break; }
+  done
+  cd - > /dev/null
+  # the bonds fix after fix servo_bc: its loads would miss what fix servo_bc measures
+  sed -n '/^fix  *bonds /p' "$tmp/coh/$host.in" > "$tmp/coh/bonds_line"
+  sed '/^fix  *bonds /d' "$tmp/coh/$host.in" | sed "/^fix  *servo /r $tmp/coh/bonds_line" > "$tmp/coh/late.in"
+  (cd "$tmp/coh" && timeout 60 "$bin" -in late.in -log none > late.log 2>&1)
+  status=$?
+  if [ $status -ne 0 ] && grep -qF "fix servo_bc/bonds bonds must come before fix servo_bc servo" "$tmp/coh/late.log"; then
+    ok "refuses fix servo_bc/bonds cohesive after fix servo_bc (exit $status), by fix ID"
+  else
+    bad "the bonds fix after fix servo_bc (exit $status): $(grep -m1 ERROR "$tmp/coh/late.log")"
+  fi
+  if [ "$host" = lammps ]; then  # a granular pair style beside the cohesive bonds: every contact twice
+    sed 's|^pair_style .*|pair_style      gran/hooke/history 1e8 4e7 0 0 0.6 0|' "$tmp/coh/lammps.in" > "$tmp/coh/twice.in"
+    (cd "$tmp/coh" && timeout 60 "$bin" -in twice.in -log none > twice.log 2>&1)
+    status=$?
+    if [ $status -ne 0 ] && grep -qF "pair_style gran/hooke/history computes them again" "$tmp/coh/twice.log"; then
+      ok "refuses a granular pair style beside cohesive bonds (exit $status)"
+    else
+      bad "a granular pair style beside cohesive bonds (exit $status): $(grep -m1 ERROR "$tmp/coh/twice.log")"
+    fi
+  fi
+  res=$(paste -d, "$tmp/coh/$host.csv" "$tmp/coh/split.csv" 2>/dev/null | awk -F, -f "$here/../sigma_diff.awk")
+  set -- $res
+  if [ "${1:-0}" = 6 ] && awk -v m="${2:-100}" 'BEGIN { exit !(m <= 1e-7) }'; then
+    ok "cohesive layer split by a restart inside increment 2: $1 rows, the uninterrupted run's to $2 % of the stress scale$(
+      cmp -s "$tmp/coh/$host.csv" "$tmp/coh/split.csv" && echo ", byte for byte")"
+  else
+    bad "cohesive layer split by a restart: ${1:-0} rows of 6, ${2:-?} % from the uninterrupted run: $(tail -2 "$tmp/coh/part2.log")"
+  fi
+else
+  bad "servo-bc --decks for the cohesive layer: $(tail -2 "$tmp/decks.log")"
 fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
