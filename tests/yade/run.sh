@@ -61,6 +61,31 @@ if awk -v e="${got:-none}" 'BEGIN { t = atan2(0, -1) * 4e9 / 4; d = (e - t) / t;
 else
   fail=$((fail + 1)); echo "FAIL yade uniform packing: E = ${got:-none} Pa against pi E_b / 4:"; tail -3 "$tmp/uni.log"
 fi
+# the user's cohesive layer deck (servo_bc.Cohesive) on the 37-disc layer, 2 shear
+# increments, 8 times Table 6's strengths: every row, some bonds broken, and
+# a bad law word refused by keyword
+(cd "$tmp" && yade -n -x "$here/../../inputs/yade/cohesive_layer.py" "$tmp/coh.csv" 25 2 8 > "$tmp/coh.log" 2>&1)
+intact=$(grep -a -o 'bonds intact [0-9]* of 54' "$tmp/coh.log" | awk '{ print $3 }')
+if [ "$(wc -l < "$tmp/coh.csv" 2>/dev/null)" = 10 ] && [ -n "$intact" ] && [ "$intact" -lt 54 ] && [ "$intact" -gt 0 ]; then
+  pass=$((pass + 1)); echo "yade cohesive layer deck: 9 rows, bonds intact $intact of 54"
+else
+  fail=$((fail + 1)); echo "FAIL yade cohesive layer deck:"; tail -3 "$tmp/coh.log"
+fi
+cat > "$tmp/bad_cohesive.py" <<PY
+import sys
+sys.path.insert(0, '$here/../../yade_adapter')
+import servo_bc
+from yade import O, utils
+O.bodies.append([utils.sphere((0, 0, 0), 1e-3), utils.sphere((2e-3, 0, 0), 1e-3)])
+servo_bc.Cohesive([0, 1], 'kn 1e8 ks 4e7 kr 20 fn 300 fs sixty mr 0.2 mu 0.6')
+PY
+yade -n -x "$tmp/bad_cohesive.py" > "$tmp/bad_cohesive.log" 2>&1
+status=$?
+if [ $status -ne 0 ] && grep -q "cohesive: fs 'sixty' is not a number (expected a real > 0)" "$tmp/bad_cohesive.log"; then
+  pass=$((pass + 1)); echo "yade Cohesive refuses a word for a strength (exit $status), by keyword"
+else
+  fail=$((fail + 1)); echo "FAIL yade Cohesive with fs 'sixty' (exit $status):"; tail -3 "$tmp/bad_cohesive.log"
+fi
 yade -n -x "$beam" 4 "$tmp/beam_4.txt" > "$tmp/beam_4.log" 2>&1
 status=$?
 if [ $status -ne 0 ] && grep -q "N must be odd and at least 3, got 4" "$tmp/beam_4.log"; then
