@@ -7,9 +7,16 @@
    alpha r_min. cohesive: the paper's eqs. 7-8 with Table 6's quantities
    (N/m, N/m, N m/rad, N, N, N m, -), eq. 6 after failure. Bonds join the
    group's particles that touch at the first run.
-   Outputs: f_ID (scalar) the bonds' strain energy (J; cohesive: eq. 12's Ep
-   of every contact, bonds included); f_ID[1] the intact bond count;
-   f_ID[2] eq. 48's critical time step (s; cohesive: the bonds formed).
+   Outputs: f_ID (scalar) the bonds' strain energy (J, eq. 50 or the beams'
+   1/2 u K u; cohesive: eq. 12's Ep of every contact, bonds included);
+   f_ID[1] the intact bond count; f_ID[2] eq. 48's critical time step (s;
+   cohesive: the bonds formed). Beam and parallel also keep the thesis'
+   energy balance: f_ID[3] the kinetic energy of the group (eq. 49, the
+   host's full-step velocities and inertia 2/5 m r^2), f_ID[4] the work of
+   every other force and moment on the group since the first run (eq. 52,
+   trapezoidal: loads, supports, damping fixes), f_ID[5] eq. 53's
+   |W_kin + W_int - W_ext| / max(|terms|) (the bonds dissipate nothing here:
+   no dashpots, no failure, so eq. 51's term is 0).
 ------------------------------------------------------------------------- */
 
 #include "fix_servo_bc_bonds.h"
@@ -34,7 +41,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), kn(0.0), bonds(nullptr), contacts(nullptr), n(0), dim(3), last_step(-1), reported(-1)
+    Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), kn(0.0), bonds(nullptr), contacts(nullptr), n(0), dim(3), last_step(-1), reported(-1), kinetic(0.0), external_work(0.0), have_prev(false)
 {
   if (narg < 4) fail("expected a model after the style (beam, parallel or cohesive)");
   model = arg[3];
@@ -73,7 +80,7 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   scalar_flag = 1;
   vector_flag = 1;
-  size_vector = 2;
+  size_vector = dim == 3 ? 5 : 2;
   global_freq = 1;
   extscalar = 0;
   extvector = 0;
@@ -85,7 +92,7 @@ FixServoBCBonds::~FixServoBCBonds()
   sbc_cohesive_host_free(contacts);
 }
 
-int FixServoBCBonds::setmask() { return POST_FORCE | POST_RUN; }
+int FixServoBCBonds::setmask() { return POST_FORCE | POST_RUN | END_OF_STEP; }
 
 /* cohesive: how many bonds are left, at the end of a run where some broke */
 void FixServoBCBonds::post_run()
@@ -120,7 +127,7 @@ void FixServoBCBonds::init()
 
 namespace {
 // marks fix servo_bc/bonds' restart block (bump on any change of its layout)
-const double BONDS_MAGIC = 8.020002e7;
+const double BONDS_MAGIC = 8.020003e7;
 }
 
 /* rank 0: model, E, nu, alpha, the reference spheres (ID, centre, radius,
@@ -148,6 +155,7 @@ void FixServoBCBonds::write_restart(FILE *fp)
       sbc_bpm_host_state_get(bonds, k, state.data());
       list.insert(list.end(), state.begin(), state.end());
     }
+    list.push_back(external_work);    // eq. 52 so far
   }
   int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
@@ -185,6 +193,7 @@ void FixServoBCBonds::restart(char *raw)
     ref_m[k] = p[5];
   }
   saved.assign(p, p + (size_t) nb * per);
+  external_work = p[(size_t) nb * per];
 }
 
 /* the group's atoms in ID order on every rank; the core bonds those that touch */
@@ -276,6 +285,9 @@ void FixServoBCBonds::bond_spheres()
   mine.assign(9 * n, 0.0);
   all.assign(9 * n, 0.0);
   load.assign(6 * n, 0.0);
+  other.assign(6 * n, 0.0);
+  other_prev.assign(6 * n, 0.0);
+  other_mine.assign(6 * n, 0.0);
   if (comm->me == 0) {
     char line[256];
     std::snprintf(line, sizeof line, "fix servo_bc/bonds: %d %s bonds between %d spheres, critical time step %.6g s\n",
@@ -367,5 +379,55 @@ double FixServoBCBonds::compute_vector(int k)
 {
   if (contacts) return k == 0 ? sbc_cohesive_host_bond_count(contacts) : sbc_cohesive_host_bonds_initial(contacts);
   if (!bonds) return 0.0;
-  return k == 0 ? sbc_bpm_host_bond_count(bonds) : sbc_bpm_critical_dt(bonds);
+  switch (k) {
+    case 0: return sbc_bpm_host_bond_count(bonds);
+    case 1: return sbc_bpm_critical_dt(bonds);
+    case 2: return kinetic;
+    case 3: return external_work;
+    default: {    // eq. 53 without a dissipated term
+      const double u = sbc_bpm_host_strain_energy(bonds);
+      const double big = std::max(std::fabs(kinetic), std::max(std::fabs(u), std::fabs(external_work)));
+      return big > 0.0 ? std::fabs(kinetic + u - external_work) / big : 0.0;
+    }
+  }
+}
+
+void FixServoBCBonds::end_of_step()
+{
+  if (bonds) energy_step();
+}
+
+/* eqs. 49 and 52 after the step: every force and moment on the group is in
+   f and torque now (other fixes add theirs after this fix's post_force); the
+   others' share is that less the bonds' loads. The motion of the step is
+   dt v(t - dt/2 .. t + dt/2) as gathered in post_force, so the work of the
+   step is (F(t) + F(t + dt)) / 2 . dt v (and likewise for the moments). */
+void FixServoBCBonds::energy_step()
+{
+  std::fill(other_mine.begin(), other_mine.end(), 0.0);
+  double **f = atom->f, **torque = atom->torque, **v = atom->v, **omega = atom->omega;
+  double ek = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const int k = index[atom->tag[i]];
+    const double m = atom->rmass[i], I = 0.4 * m * atom->radius[i] * atom->radius[i];
+    for (int c = 0; c < 3; c++) {
+      other_mine[6 * k + c] = f[i][c] - load[6 * k + c];
+      other_mine[6 * k + 3 + c] = torque[i][c] - load[6 * k + 3 + c];
+      ek += 0.5 * m * v[i][c] * v[i][c] + 0.5 * I * omega[i][c] * omega[i][c];
+    }
+  }
+  MPI_Allreduce(other_mine.data(), other.data(), 6 * n, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&ek, &kinetic, 1, MPI_DOUBLE, MPI_SUM, world);
+  if (!have_prev) other_prev = other;    // the first step: the loads of its end on both sides
+  const double dt = update->dt;
+  double w = 0.0;
+  for (int k = 0; k < n; k++)
+    for (int c = 0; c < 3; c++) {
+      w += 0.5 * (other_prev[6 * k + c] + other[6 * k + c]) * dt * all[3 * (n + k) + c];
+      w += 0.5 * (other_prev[6 * k + 3 + c] + other[6 * k + 3 + c]) * dt * all[3 * (2 * n + k) + c];
+    }
+  external_work += w;
+  other_prev.swap(other);
+  have_prev = true;
 }

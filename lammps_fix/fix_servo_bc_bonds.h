@@ -43,6 +43,7 @@ class FixServoBCBonds : public Fix {
   void setup(int) override;
   void post_force(int) override;
   void post_run() override;
+  void end_of_step() override;
   double compute_scalar() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -70,6 +71,12 @@ class FixServoBCBonds : public Fix {
   std::vector<double> mine, all, load;     // gather buffers: x | v | omega; loads (6 per sphere in 3D, 3 per disc in 2D)
   bigint last_step;                        // the step whose loads are in `load`
   int reported;                            // cohesive: the intact bonds post_run last printed
+  // eqs. 49-53 (beam, parallel): the loads on the group other than the bonds' at the last
+  // end of step (6 per sphere, tag order), and the energies (J)
+  std::vector<double> other, other_prev, other_mine;
+  double kinetic, external_work;
+  bool have_prev;
+  void energy_step();
   std::string last_error;
   void create_bonds();
   void bond_spheres();

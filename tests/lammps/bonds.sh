@@ -33,6 +33,15 @@ for pair in 3:0.0065436 5:0.038551 7:0.12148 11:0.54201; do
   if [ "$1" = ok ]; then ok "beam of $n spheres: deflection $got m, eq. B1 $4 m (relative $2), Table B1 $thesis mm (relative $3)"
   else bad "beam of $n spheres: deflection ${got:-none} m against eq. B1 $4 m: $(tail -2 "$tmp/beam.log")"; fi
 done
+# eqs. 49-53 on the settled 11-sphere beam: the bonds' strain energy is F d / 2
+# (Clapeyron: a linear elastic body under one load) to 1e-6, and eq. 53's
+# balance of kinetic, strain and external work (load, supports, fix viscous,
+# trapezoidal) within 1e-4 (measured 8.8e-6)
+set -- $(awk '$1 == "deflection" { d = $2 } $1 == "energy" { u = $3; k = $5; w = $7; b = $9 }
+  END { e = (u - 500 * d) / (500 * d); if (e < 0) e = -e
+        printf "%s %.3g %s %s %s", (d > 0 && e <= 1e-6 && b <= 1e-4 && w > u) ? "ok" : "bad", e, u, w, b }' "$tmp/beam_11.txt" 2>/dev/null)
+if [ "${1:-bad}" = ok ]; then ok "energies of the settled beam: strain $3 J = F d / 2 (relative $2), external work $4 J, eq. 53 balance $5"
+else bad "energies of the settled beam: $(grep energy "$tmp/beam_11.txt" 2>/dev/null || echo none)"; fi
 one=$(beam 1 11 ranks1.txt)
 for np in 2 4; do
   got=$(beam "$np" 11 "ranks$np.txt")
