@@ -143,7 +143,8 @@ $(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_DEV)
 # the plugin: for `plugin load` in LAMMPS builds with the PLUGIN package
 $(B)/servo_bc_plugin.so: $(LMP_SRC) lammps_fix/plugin.cpp $(B)/libservo_bc.a $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -fPIC -shared -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
-	  -Isrc_core/include -o $@ lammps_fix/plugin.cpp lammps_fix/fix_servo_bc.cpp $(B)/libservo_bc.a -lm
+	  -Isrc_core/include -o $@ lammps_fix/plugin.cpp lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_bonds.cpp \
+	  $(B)/libservo_bc.a -lm
 
 $(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \

@@ -51,10 +51,22 @@ if [ -n "$drv_arg" ] && [ -n "$so_arg" ]; then
   drv=$(cd "$(dirname "$drv_arg")" && pwd)/$(basename "$drv_arg")
   so=$(cd "$(dirname "$so_arg")" && pwd)/$(basename "$so_arg")
   (cd "$TMP" && "$drv" "$so" -in "$DECK" -var csv "$TMP/plugin.csv" -log none > plugin.log 2>&1)
-  if grep -q "registered fix style servo_bc" "$TMP/plugin.log"; then
+  if grep -q "registered fix style servo_bc " "$TMP/plugin.log"; then
     closed_form "plugin route (D) closed form" "$TMP/plugin.csv"
   else
     no "plugin route:"; tail -3 "$TMP/plugin.log"
+  fi
+  # fix servo_bc/bonds through the plugin: the 5-sphere beam of Table B1 (eq. B1 to 1e-4)
+  (cd "$TMP" && "$drv" "$so" -in "$here/../../inputs/lammps/bpm_beam.in" -var n 5 -var out "$TMP/plugin_beam.txt" \
+    -log none > plugin_beam.log 2>&1)
+  d=$(awk '$1 == "deflection" { print $2 }' "$TMP/plugin_beam.txt" 2>/dev/null)
+  if grep -q "registered fix style servo_bc/bonds" "$TMP/plugin_beam.log" &&
+    awk -v d="${d:-none}" 'BEGIN { R = 0.1; E = 4e9; G = E / 2.6; pi = atan2(0, -1); L = 0.8
+      b = 1e3 * L^3 / (48 * E * pi * R^4 / 4) + 1e3 * L * (10 / 9) / (4 * G * pi * R * R); e = (d - b) / b
+      exit !(d == d + 0 && e * e <= 1e-8) }'; then
+    ok "plugin route: fix servo_bc/bonds, the 5-sphere beam deflects $d m (eq. B1 to 1e-4)"
+  else
+    no "plugin route, fix servo_bc/bonds: deflection ${d:-none}"; tail -3 "$TMP/plugin_beam.log"
   fi
 fi
 rm -rf "$TMP"

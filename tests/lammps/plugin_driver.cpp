@@ -20,7 +20,7 @@ static int registered = 0;
 static void register_plugin(lammpsplugin_t *p, void *ptr)
 {
   LAMMPS *lmp = (LAMMPS *) ptr;
-  if (std::strcmp(p->style, "fix") != 0 || std::strcmp(p->name, "servo_bc") != 0 || !p->creator.v2) {
+  if (std::strcmp(p->style, "fix") != 0 || std::strncmp(p->name, "servo_bc", 8) != 0 || !p->creator.v2) {
     std::fprintf(stderr, "plugin_driver: unexpected plugin %s %s\n", p->style, p->name);
     return;
   }
