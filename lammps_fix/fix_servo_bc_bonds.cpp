@@ -97,13 +97,20 @@ int FixServoBCBonds::setmask() { return POST_FORCE | POST_RUN | END_OF_STEP; }
 /* cohesive: how many bonds are left, at the end of a run where some broke */
 void FixServoBCBonds::post_run()
 {
-  if (!contacts || comm->me != 0) return;
+  if (!contacts) return;
   const int intact = sbc_cohesive_host_bond_count(contacts);
   if (intact == reported) return;
   reported = intact;
   char line[128];
   std::snprintf(line, sizeof line, "fix servo_bc/bonds: cohesive bonds intact %d of %d\n", intact,
                 sbc_cohesive_host_bonds_initial(contacts));
+  say(line);
+}
+
+/* one line on rank 0's screen and log */
+void FixServoBCBonds::say(const char *line)
+{
+  if (comm->me != 0) return;
   if (screen) fputs(line, screen);
   if (logfile) fputs(line, logfile);
 }
@@ -255,13 +262,10 @@ void FixServoBCBonds::bond_discs()
   mine.assign(5 * n, 0.0);
   all.assign(5 * n, 0.0);
   load.assign(3 * n, 0.0);
-  if (comm->me == 0) {
-    char line[256];
-    std::snprintf(line, sizeof line, "fix servo_bc/bonds: %d cohesive bonds (%d formed) between %d discs\n",
-                  sbc_cohesive_host_bond_count(contacts), sbc_cohesive_host_bonds_initial(contacts), n);
-    if (screen) fputs(line, screen);
-    if (logfile) fputs(line, logfile);
-  }
+  char line[256];
+  std::snprintf(line, sizeof line, "fix servo_bc/bonds: %d cohesive bonds (%d formed) between %d discs\n",
+                sbc_cohesive_host_bond_count(contacts), sbc_cohesive_host_bonds_initial(contacts), n);
+  say(line);
 }
 
 /* the core's bonds on the reference spheres (at the first run, or those of a
@@ -288,13 +292,10 @@ void FixServoBCBonds::bond_spheres()
   other.assign(6 * n, 0.0);
   other_prev.assign(6 * n, 0.0);
   other_mine.assign(6 * n, 0.0);
-  if (comm->me == 0) {
-    char line[256];
-    std::snprintf(line, sizeof line, "fix servo_bc/bonds: %d %s bonds between %d spheres, critical time step %.6g s\n",
-                  sbc_bpm_host_bond_count(bonds), model.c_str(), n, sbc_bpm_critical_dt(bonds));
-    if (screen) fputs(line, screen);
-    if (logfile) fputs(line, logfile);
-  }
+  char line[256];
+  std::snprintf(line, sizeof line, "fix servo_bc/bonds: %d %s bonds between %d spheres, critical time step %.6g s\n",
+                sbc_bpm_host_bond_count(bonds), model.c_str(), n, sbc_bpm_critical_dt(bonds));
+  say(line);
 }
 
 /* x, v, omega of the group in ID order as three blocks, x | v | omega (3n

@@ -83,6 +83,7 @@ class FixServoBCBonds : public Fix {
   void bond_discs();
   void gather();
   void fail(const std::string &message);
+  void say(const char *line);
 };
 
 }    // namespace LAMMPS_NS

@@ -422,11 +422,12 @@ static inline void integrate_interior(sbc_engine *e, const int damped)
         e->stale = 1;
 }
 
-/* One time step: forces at x^n, then the interior to x^(n+1). */
-sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err)
+/* The contact forces and moments at the present centres (a stale pair list
+ * rebuilt first), into f and tq. */
+static sbc_status pair_forces(sbc_engine *e, sbc_error *err)
 {
     if (e->stale && sbc_pairs_build(&e->pairs, e->x, e->r, e->rmax, err) != SBC_OK)
-        return SBC_ERR_NOMEM;
+        return err->status;
     e->stale = 0;
     memset(e->f, 0, sizeof(double) * 2 * (size_t)e->n);
     memset(e->tq, 0, sizeof(double) * (size_t)e->n);
@@ -436,6 +437,14 @@ sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err)
         pair_loop(e, 1, 0);
     else
         pair_loop(e, 0, 0);
+    return SBC_OK;
+}
+
+/* One time step: forces at x^n, then the interior to x^(n+1). */
+sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err)
+{
+    if (pair_forces(e, err) != SBC_OK)
+        return err->status;
     if (e->sealed && seal_step(e, err) != SBC_OK)
         return err->status;
     if (e->fire)
@@ -558,17 +567,8 @@ sbc_status sbc_engine_host_loads(sbc_engine *e, const double *x, const double *v
         if (!(ddx * ddx + ddy * ddy <= lim)) /* also a non-finite centre: the build reports it */
             e->stale = 1;
     }
-    if (e->stale && sbc_pairs_build(&e->pairs, e->x, e->r, e->rmax, err) != SBC_OK)
+    if (pair_forces(e, err) != SBC_OK)
         return err->status;
-    e->stale = 0;
-    memset(e->f, 0, sizeof(double) * 2 * n);
-    memset(e->tq, 0, sizeof(double) * n);
-    if (e->bonded)
-        pair_loop(e, 1, 1);
-    else if (e->history)
-        pair_loop(e, 1, 0);
-    else
-        pair_loop(e, 0, 0);
     e->step++;
     return SBC_OK;
 }
