@@ -1,10 +1,11 @@
 /* ----------------------------------------------------------------------
    fix servo_bc/bonds (see fix_servo_bc_bonds.h):
-     fix ID group servo_bc/bonds MODEL E nu alpha                    (3D)
+     fix ID group servo_bc/bonds MODEL E nu alpha [strength FT FS MB MT] [friction MU]   (3D)
      fix ID group servo_bc/bonds cohesive kn KN ks KS kr KR fn FN fs FS mr MR mu MU   (2D)
    MODEL = beam (Timoshenko beams, E_b = E Pa, nu_b = nu) or parallel
    (parallel bonds, k^n = E / 2 r_min, k^s = k^n / 4.2); bond radius
-   alpha r_min. cohesive: the paper's eqs. 7-8 with Table 6's quantities
+   alpha r_min; with a strength a bond breaks when eq. 8 in 3D reaches 1
+   (bpm_bond.h) and becomes a frictional contact (friction MU). cohesive: the paper's eqs. 7-8 with Table 6's quantities
    (N/m, N/m, N m/rad, N, N, N m, -), eq. 6 after failure. Bonds join the
    group's particles that touch at the first run.
    Outputs: f_ID (scalar) the bonds' strain energy (J, eq. 50 or the beams'
@@ -12,11 +13,12 @@
    f_ID[1] the intact bond count; f_ID[2] eq. 48's critical time step (s;
    cohesive: the bonds formed). Beam and parallel also keep the thesis'
    energy balance: f_ID[3] the kinetic energy of the group (eq. 49, the
-   host's full-step velocities and inertia 2/5 m r^2), f_ID[4] the work of
-   every other force and moment on the group since the first run (eq. 52,
-   trapezoidal: loads, supports, damping fixes), f_ID[5] eq. 53's
-   |W_kin + W_int - W_ext| / max(|terms|) (the bonds dissipate nothing here:
-   no dashpots, no failure, so eq. 51's term is 0).
+   host's full-step velocities and inertia 2/5 m r^2), f_ID[4] what the
+   bonds dissipated (eq. 51: the energy broken bonds held, friction in their
+   contacts; no dashpots here), f_ID[5] the work of every other force and
+   moment on the group since the first run (eq. 52, trapezoidal: loads,
+   supports, damping fixes), f_ID[6] eq. 53's
+   |W_kin + W_int + W_dis - W_ext| / max(|terms|).
 ------------------------------------------------------------------------- */
 
 #include "fix_servo_bc_bonds.h"
@@ -41,7 +43,9 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), kn(0.0), bonds(nullptr), contacts(nullptr), n(0), dim(3), last_step(-1), reported(-1), kinetic(0.0), external_work(0.0), have_prev(false)
+    Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), strength{0.0, 0.0, 0.0, 0.0, 0.0}, failure(false), kn(0.0),
+    bonds(nullptr), contacts(nullptr), n(0), dim(3), last_step(-1), reported(-1), kinetic(0.0), external_work(0.0),
+    have_prev(false)
 {
   if (narg < 4) fail("expected a model after the style (beam, parallel or cohesive)");
   model = arg[3];
@@ -56,19 +60,36 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
   } else {
     if (model != "beam" && model != "parallel")
       fail("model '" + model + "' is not valid (expected beam, parallel or cohesive)");
-    if (narg != 7)
-      fail(std::string("expected 4 arguments after the style (MODEL E nu alpha), got ") + std::to_string(narg - 3));
+    if (narg < 7)
+      fail(std::string("expected at least 4 arguments after the style (MODEL E nu alpha), got ") +
+           std::to_string(narg - 3));
     const char *names[3] = {"E", "nu", "alpha"};
     double *values[3] = {&E, &nu, &alpha};
-    for (int k = 0; k < 3; k++) {
-      char *end = nullptr;
-      *values[k] = std::strtod(arg[4 + k], &end);
-      if (end == arg[4 + k] || *end != '\0' || !std::isfinite(*values[k]))
-        fail(std::string("keyword ") + names[k] + ": '" + arg[4 + k] + "' is not a number");
-    }
+    for (int k = 0; k < 3; k++) *values[k] = number(names[k], arg[4 + k]);
     if (!(E > 0.0) || !(nu > -1.0 && nu < 0.5) || !(alpha > 0.0))
       fail("E " + std::string(arg[4]) + ", nu " + arg[5] + ", alpha " + arg[6] +
            " (expected E > 0 Pa, -1 < nu < 0.5, alpha > 0)");
+    // optional failure, the runner's words: strength FT FS MB MT, friction MU
+    for (int k = 7; k < narg;) {
+      const std::string key = arg[k];
+      if (key == "strength") {
+        if (k + 4 >= narg)
+          fail("keyword strength needs 4 values (FT FS MB MT: tension N, shear N, bending N m, twisting N m)");
+        const char *what[4] = {"strength FT", "strength FS", "strength MB", "strength MT"};
+        for (int q = 0; q < 4; q++) strength[q] = number(what[q], arg[k + 1 + q]);
+        if (!(strength[0] > 0.0) || !(strength[1] >= 0.0) || !(strength[2] >= 0.0) || !(strength[3] >= 0.0))
+          fail(std::string("keyword strength: ") + arg[k + 1] + " " + arg[k + 2] + " " + arg[k + 3] + " " + arg[k + 4] +
+               " (expected a tension > 0 and shear, bending, twisting >= 0; 0 leaves a term out)");
+        failure = true;
+        k += 5;
+      } else if (key == "friction") {
+        if (k + 1 >= narg) fail("keyword friction needs a value (MU)");
+        strength[4] = number("friction", arg[k + 1]);
+        if (!(strength[4] >= 0.0)) fail(std::string("keyword friction: ") + arg[k + 1] + " (expected >= 0)");
+        k += 2;
+      } else
+        fail("unknown keyword '" + key + "' (expected strength or friction)");
+    }
   }
   if (!atom->sphere_flag) fail("requires atom_style sphere");
   if (std::strcmp(update->unit_style, "si") != 0)
@@ -80,7 +101,7 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   scalar_flag = 1;
   vector_flag = 1;
-  size_vector = dim == 3 ? 5 : 2;
+  size_vector = dim == 3 ? 6 : 2;
   global_freq = 1;
   extscalar = 0;
   extvector = 0;
@@ -97,13 +118,13 @@ int FixServoBCBonds::setmask() { return POST_FORCE | POST_RUN | END_OF_STEP; }
 /* cohesive: how many bonds are left, at the end of a run where some broke */
 void FixServoBCBonds::post_run()
 {
-  if (!contacts) return;
-  const int intact = sbc_cohesive_host_bond_count(contacts);
+  if (!contacts && !(bonds && failure)) return;
+  const int intact = contacts ? sbc_cohesive_host_bond_count(contacts) : sbc_bpm_host_intact(bonds);
   if (intact == reported) return;
   reported = intact;
   char line[128];
-  std::snprintf(line, sizeof line, "fix servo_bc/bonds: cohesive bonds intact %d of %d\n", intact,
-                sbc_cohesive_host_bonds_initial(contacts));
+  std::snprintf(line, sizeof line, "fix servo_bc/bonds: %s bonds intact %d of %d\n", model.c_str(), intact,
+                contacts ? sbc_cohesive_host_bonds_initial(contacts) : sbc_bpm_host_bond_count(bonds));
   say(line);
 }
 
@@ -113,6 +134,16 @@ void FixServoBCBonds::say(const char *line)
   if (comm->me != 0) return;
   if (screen) fputs(line, screen);
   if (logfile) fputs(line, logfile);
+}
+
+/* a finite number or a message naming the keyword */
+double FixServoBCBonds::number(const char *keyword, const char *word)
+{
+  char *end = nullptr;
+  const double v = std::strtod(word, &end);
+  if (end == word || *end != '\0' || !std::isfinite(v))
+    fail(std::string("keyword ") + keyword + ": '" + word + "' is not a number");
+  return v;
 }
 
 void FixServoBCBonds::fail(const std::string &message)
@@ -134,7 +165,7 @@ void FixServoBCBonds::init()
 
 namespace {
 // marks fix servo_bc/bonds' restart block (bump on any change of its layout)
-const double BONDS_MAGIC = 8.020003e7;
+const double BONDS_MAGIC = 8.020004e7;
 }
 
 /* rank 0: model, E, nu, alpha, the reference spheres (ID, centre, radius,
@@ -153,7 +184,9 @@ void FixServoBCBonds::write_restart(FILE *fp)
     list.insert(list.end(), state.begin(), state.end());
   } else {
     const int nb = sbc_bpm_host_bond_count(bonds), per = sbc_bpm_host_state_doubles(bonds);
-    list = {BONDS_MAGIC, model == "beam" ? 1.0 : 2.0, E, nu, alpha, (double) n, (double) nb, (double) per};
+    list = {BONDS_MAGIC, model == "beam" ? 1.0 : 2.0, E, nu, alpha, failure ? 1.0 : 0.0};
+    list.insert(list.end(), strength, strength + 5);
+    list.insert(list.end(), {(double) n, (double) nb, (double) per});
     for (int k = 0; k < n; k++)
       list.insert(list.end(),
                   {(double) tags[k], ref_x[3 * k], ref_x[3 * k + 1], ref_x[3 * k + 2], ref_r[k], ref_m[k]});
@@ -163,6 +196,7 @@ void FixServoBCBonds::write_restart(FILE *fp)
       list.insert(list.end(), state.begin(), state.end());
     }
     list.push_back(external_work);    // eq. 52 so far
+    list.push_back(sbc_bpm_host_fracture_energy(bonds));
   }
   int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
@@ -183,12 +217,16 @@ void FixServoBCBonds::restart(char *raw)
     saved.assign(p + 1, p + 1 + (size_t) p[0]);
     return;
   }
-  if (saved_model != model || list[2] != E || list[3] != nu || list[4] != alpha)
+  bool same = saved_model == model && list[2] == E && list[3] == nu && list[4] == alpha &&
+              (list[5] != 0.0) == failure;
+  for (int q = 0; q < 5 && same && failure; q++) same = list[6 + q] == strength[q];
+  if (!same)
     fail("restart: the file's bonds are " + saved_model + " " + std::to_string(list[2]) + " " +
-         std::to_string(list[3]) + " " + std::to_string(list[4]) + "; this fix asks for other ones");
-  n = (int) list[5];
-  const int nb = (int) list[6], per = (int) list[7];
-  const double *p = &list[8];
+         std::to_string(list[3]) + " " + std::to_string(list[4]) + (list[5] != 0.0 ? " with a strength" : "") +
+         "; this fix asks for other ones (model, E, nu, alpha, strength and friction must be the same)");
+  n = (int) list[11];
+  const int nb = (int) list[12], per = (int) list[13];
+  const double *p = &list[14];
   tags.assign(n, 0);
   ref_x.assign(3 * n, 0.0);
   ref_r.assign(n, 0.0);
@@ -201,6 +239,7 @@ void FixServoBCBonds::restart(char *raw)
   }
   saved.assign(p, p + (size_t) nb * per);
   external_work = p[(size_t) nb * per];
+  fracture_saved = p[(size_t) nb * per + 1];
 }
 
 /* the group's atoms in ID order on every rank; the core bonds those that touch */
@@ -275,7 +314,7 @@ void FixServoBCBonds::bond_spheres()
   index.clear();
   for (int k = 0; k < n; k++) index[tags[k]] = k;
   char msg[512] = "";
-  bonds = sbc_bpm_host_create(model.c_str(), E, nu, alpha, n, ref_x.data(), ref_r.data(), ref_m.data(), msg,
+  bonds = sbc_bpm_host_create(model.c_str(), E, nu, alpha, failure ? strength : nullptr, n, ref_x.data(), ref_r.data(), ref_m.data(), msg,
                               sizeof msg);
   if (!bonds) fail(std::string(msg) + " (group " + group->names[igroup] + ")");
   if (!saved.empty()) {
@@ -284,6 +323,7 @@ void FixServoBCBonds::bond_spheres()
       fail("restart: the saved bonds (" + std::to_string(saved.size()) + " values) are not the " +
            std::to_string(nb) + " bonds these spheres form");
     for (int k = 0; k < nb; k++) sbc_bpm_host_state_set(bonds, k, &saved[(size_t) k * per]);
+    sbc_bpm_host_set_fracture_energy(bonds, fracture_saved);
     saved.clear();
   }
   mine.assign(9 * n, 0.0);
@@ -381,14 +421,16 @@ double FixServoBCBonds::compute_vector(int k)
   if (contacts) return k == 0 ? sbc_cohesive_host_bond_count(contacts) : sbc_cohesive_host_bonds_initial(contacts);
   if (!bonds) return 0.0;
   switch (k) {
-    case 0: return sbc_bpm_host_bond_count(bonds);
+    case 0: return sbc_bpm_host_intact(bonds);
     case 1: return sbc_bpm_critical_dt(bonds);
     case 2: return kinetic;
-    case 3: return external_work;
-    default: {    // eq. 53 without a dissipated term
-      const double u = sbc_bpm_host_strain_energy(bonds);
-      const double big = std::max(std::fabs(kinetic), std::max(std::fabs(u), std::fabs(external_work)));
-      return big > 0.0 ? std::fabs(kinetic + u - external_work) / big : 0.0;
+    case 3: return sbc_bpm_host_dissipated(bonds);
+    case 4: return external_work;
+    default: {    // eq. 53
+      const double u = sbc_bpm_host_strain_energy(bonds), d = sbc_bpm_host_dissipated(bonds);
+      double big = std::max(std::fabs(kinetic), std::max(std::fabs(u), std::fabs(external_work)));
+      big = std::max(big, std::fabs(d));
+      return big > 0.0 ? std::fabs(kinetic + u + d - external_work) / big : 0.0;
     }
   }
 }

@@ -57,6 +57,9 @@ class FixServoBCBonds : public Fix {
  private:
   std::string model;
   double E, nu, alpha;                     // beam, parallel
+  double strength[5];                      // optional failure: FT FS MB MT (N, N, N m, N m), friction MU
+  bool failure;                            // a strength was given
+  double fracture_saved = 0.0;             // the broken bonds' energy from a restart file, J
   std::string words;                       // cohesive: the law's words (cohesive_host.h)
   double kn;                               // cohesive: the law's kn, N/m
   sbc_bpm *bonds;
@@ -84,6 +87,7 @@ class FixServoBCBonds : public Fix {
   void gather();
   void fail(const std::string &message);
   void say(const char *line);
+  double number(const char *keyword, const char *word);
 };
 
 }    // namespace LAMMPS_NS

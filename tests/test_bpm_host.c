@@ -22,7 +22,7 @@ static void one_bond(void)
     int model;
     for (model = 0; model < 2; ++model) {
         char msg[256];
-        sbc_bpm *e = sbc_bpm_host_create(model ? "parallel" : "beam", EB, NUB, 1.0, 2, x, r, m, msg, sizeof msg);
+        sbc_bpm *e = sbc_bpm_host_create(model ? "parallel" : "beam", EB, NUB, 1.0, NULL, 2, x, r, m, msg, sizeof msg);
         /* beam: E A / L; parallel bond: k^n A with k^n = E / 2 r_p (Table 3) */
         const double k = model ? EB / (2 * R) * A : EB * A / (2 * R);
         CHECK(e != NULL);
@@ -60,7 +60,7 @@ static double host_chain(int n, const char *model)
         m[i] = rho * 4.0 / 3.0 * SBC_PI * R * R * R;
         I[i] = 0.4 * m[i] * R * R;
     }
-    e = sbc_bpm_host_create(model, EB, NUB, 1.0, n, x, r, m, msg, sizeof msg);
+    e = sbc_bpm_host_create(model, EB, NUB, 1.0, NULL, n, x, r, m, msg, sizeof msg);
     CHECK(e != NULL && sbc_bpm_host_bond_count(e) == n - 1);
     if (!e)
         return 0.0;
@@ -139,8 +139,8 @@ static void state_roundtrip(void)
     int model;
     for (model = 0; model < 2; ++model) {
         const char *name = model ? "parallel" : "beam";
-        sbc_bpm *a = sbc_bpm_host_create(name, EB, NUB, 1.0, 3, x, r, m, NULL, 0);
-        sbc_bpm *b = sbc_bpm_host_create(name, EB, NUB, 1.0, 3, x, r, m, NULL, 0);
+        sbc_bpm *a = sbc_bpm_host_create(name, EB, NUB, 1.0, NULL, 3, x, r, m, NULL, 0);
+        sbc_bpm *b = sbc_bpm_host_create(name, EB, NUB, 1.0, NULL, 3, x, r, m, NULL, 0);
         int k, per, same = 1;
         CHECK(a && b);
         if (!a || !b)
@@ -165,16 +165,71 @@ static void state_roundtrip(void)
     }
 }
 
+/* failure through the host path: a parallel bond (axial stiffness
+ * K = k^n pi R^2 = E pi R / 2) pulled 1e-6 m per step breaks at the first
+ * step where K d >= F_t,u, holding K d^2 / 2 (eq. 51's dissipated share);
+ * the state of a broken bond survives a restart; pushed back, the contact
+ * repels with stiffness K */
+static void failure(void)
+{
+    const double r[2] = {R, R}, m[2] = {1, 1}, dt = 1e-4, K = EB * SBC_PI * R / 2, ft = 1e5;
+    const double strength[5] = {ft, 0, 0, 0, 0.5};
+    double x[6] = {0, 0, 0, 2 * R, 0, 0}, v[6] = {0, 0, 0, 0.01, 0, 0}, w[6] = {0}, load[12], load2[12], state[32];
+    char msg[256];
+    sbc_bpm *e = sbc_bpm_host_create("parallel", EB, NUB, 1.0, strength, 2, x, r, m, msg, sizeof msg), *again;
+    int s, broke_at = -1, per;
+    CHECK(e != NULL);
+    if (!e)
+        return;
+    per = sbc_bpm_host_state_doubles(e);
+    CHECK(per == 13 + 1 + 7);
+    for (s = 1; s <= 200; ++s) {
+        x[3] += dt * v[3];
+        sbc_bpm_host_loads(e, x, v, w, dt, load);
+        if (broke_at < 0 && sbc_bpm_host_intact(e) == 0)
+            broke_at = s;
+        if (s == 100)
+            CHECK_REL(load[6], -K * 1e-4, 1e-9); /* B (6 loads per sphere) pulled back */
+    }
+    CHECK(broke_at == 160); /* K 1.59e-4 = 99 903 N < 1e5 <= K 1.6e-4 */
+    CHECK_ABS(load[6], 0.0, 0);
+    CHECK_REL(sbc_bpm_host_dissipated(e), 0.5 * K * 1.6e-4 * 1.6e-4, 1e-9);
+    /* a restart: the broken flag, the contact and the fracture energy come back */
+    again = sbc_bpm_host_create("parallel", EB, NUB, 1.0, strength, 2, (const double[6]){0, 0, 0, 2 * R, 0, 0}, r, m,
+                                msg, sizeof msg);
+    CHECK(again != NULL);
+    if (again) {
+        sbc_bpm_host_state_get(e, 0, state);
+        sbc_bpm_host_state_set(again, 0, state);
+        sbc_bpm_host_set_fracture_energy(again, sbc_bpm_host_fracture_energy(e));
+        CHECK(sbc_bpm_host_intact(again) == 0);
+        CHECK_REL(sbc_bpm_host_dissipated(again), sbc_bpm_host_dissipated(e), 1e-15);
+    }
+    v[3] = -0.01;
+    for (s = 1; s <= 250; ++s) { /* back to an overlap of 5e-5 m */
+        x[3] += dt * v[3];
+        sbc_bpm_host_loads(e, x, v, w, dt, load);
+        if (again)
+            sbc_bpm_host_loads(again, x, v, w, dt, load2);
+    }
+    CHECK_REL(load[6], K * 5e-5, 1e-9);
+    CHECK(again && load2[6] == load[6]);
+    sbc_bpm_destroy(again);
+    sbc_bpm_destroy(e);
+    CHECK(!sbc_bpm_host_create("beam", EB, NUB, 1.0, (const double[5]){0, 1, 1, 1, 0}, 2, x, r, m, msg, sizeof msg) &&
+          strstr(msg, "expected a tension > 0 N"));
+}
+
 static void refusals(void)
 {
     const double x[6] = {0, 0, 0, 1, 0, 0}, r[2] = {R, R}, m[2] = {1, 1};
     char msg[256] = "";
-    CHECK(!sbc_bpm_host_create("rope", EB, NUB, 1.0, 2, x, r, m, msg, sizeof msg) &&
+    CHECK(!sbc_bpm_host_create("rope", EB, NUB, 1.0, NULL, 2, x, r, m, msg, sizeof msg) &&
           strstr(msg, "model must be beam or parallel"));
-    CHECK(!sbc_bpm_host_create("beam", EB, NUB, 1.0, 2, x, r, m, msg, sizeof msg) &&
+    CHECK(!sbc_bpm_host_create("beam", EB, NUB, 1.0, NULL, 2, x, r, m, msg, sizeof msg) &&
           strstr(msg, "no two spheres touch"));
-    CHECK(!sbc_bpm_host_create("beam", -1.0, NUB, 1.0, 2, x, r, m, msg, sizeof msg) && strstr(msg, "E -1 Pa"));
-    CHECK(!sbc_bpm_host_create("beam", EB, NUB, 1.0, 1, x, r, m, msg, sizeof msg) && strstr(msg, "fewer than 2"));
+    CHECK(!sbc_bpm_host_create("beam", -1.0, NUB, 1.0, NULL, 2, x, r, m, msg, sizeof msg) && strstr(msg, "E -1 Pa"));
+    CHECK(!sbc_bpm_host_create("beam", EB, NUB, 1.0, NULL, 1, x, r, m, msg, sizeof msg) && strstr(msg, "fewer than 2"));
 }
 
 void test_bpm_host(void)
@@ -182,6 +237,7 @@ void test_bpm_host(void)
     static const int sizes[] = {3, 5, 7, 11};
     size_t k;
     one_bond();
+    failure();
     for (k = 0; k < sizeof sizes / sizeof sizes[0]; ++k) {
         const int n = sizes[k];
         const double Le = 2 * R * (n - 1), G = EB / (2 * (1 + NUB));

@@ -80,8 +80,10 @@ def _library():
         'sbc_host_damping': (I, [P, pd, pd]),
         'sbc_host_fire_mix': (None, [P, pd, pd]),
         'sbc_host_confined': (I, [P, pd, I, ctypes.POINTER(L), pd, pd]),
-        'sbc_bpm_host_create': (P, [ctypes.c_char_p, D, D, D, I, pd, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
+        'sbc_bpm_host_create': (P, [ctypes.c_char_p, D, D, D, pd, I, pd, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_bpm_host_bond_count': (I, [P]),
+        'sbc_bpm_host_intact': (I, [P]),
+        'sbc_bpm_host_dissipated': (D, [P]),
         'sbc_bpm_host_loads': (I, [P, pd, pd, pd, D, pd]),
         'sbc_bpm_host_strain_energy': (D, [P]),
         'sbc_bpm_critical_dt': (D, [P]),
@@ -629,9 +631,12 @@ class Bonds(object):
     The core keeps the bonds and their state and runs the bond loop in C; `engine` (a
     PyRunner for every step, between ForceResetter and NewtonIntegrator) hands it the
     bodies' centres and velocities and adds the bonds' forces and moments to O.forces.
-    critical_dt(): eq. 48 of the thesis, 0.22 sqrt(m_min / k_max), s."""
+    critical_dt(): eq. 48 of the thesis, 0.22 sqrt(m_min / k_max), s.
+    strength: None (bonds never fail) or (F_t,u N, F_s,u N, M_b,u N m, M_t,u N m): a bond
+    breaks when F_t/F_t,u + |F_s|/F_s,u + |M_b|/M_b,u + |M_t|/M_t,u >= 1 (0 leaves a term
+    out) and becomes a frictional contact with coefficient friction."""
 
-    def __init__(self, bodies, model='beam', E=4e9, nu=0.3, alpha=1.0):
+    def __init__(self, bodies, model='beam', E=4e9, nu=0.3, alpha=1.0, strength=None, friction=0.0):
         lib = _core()
         self.bodies = list(bodies)
         n = len(self.bodies)
@@ -644,8 +649,12 @@ class Bonds(object):
             r.append(b.shape.radius)
             m.append(b.state.mass)
         msg = ctypes.create_string_buffer(512)
-        self._h = lib.sbc_bpm_host_create(str(model).encode(), float(E), float(nu), float(alpha), n, _doubles(x),
-                                          _doubles(r), _doubles(m), msg, 512)
+        if strength is not None and len(strength) != 4:
+            raise ServoBCError('servo_bc: bonds: strength needs 4 values (F_t,u N, F_s,u N, M_b,u N m, M_t,u N m), '
+                               'got %r' % (strength,))
+        fail = _doubles([float(v) for v in strength] + [float(friction)]) if strength is not None else None
+        self._h = lib.sbc_bpm_host_create(str(model).encode(), float(E), float(nu), float(alpha), fail, n,
+                                          _doubles(x), _doubles(r), _doubles(m), msg, 512)
         if not self._h:
             raise ServoBCError('servo_bc: ' + msg.value.decode())
         self.count = lib.sbc_bpm_host_bond_count(self._h)
@@ -668,6 +677,15 @@ class Bonds(object):
     def strain_energy(self):
         """The bonds' strain energy (eq. 50, or the beams' u K u / 2), J."""
         return _core().sbc_bpm_host_strain_energy(self._h)
+
+    def intact(self):
+        """Bonds not broken."""
+        return _core().sbc_bpm_host_intact(self._h)
+
+    def dissipated(self):
+        """Eq. 51's share of the bonds: energy held by bonds when they broke, friction in
+        their contacts, J."""
+        return _core().sbc_bpm_host_dissipated(self._h)
 
     def step(self):
         """Called by the PyRunner each step: YADE's velocities here are v(t - dt/2)."""

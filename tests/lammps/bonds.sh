@@ -37,7 +37,7 @@ done
 # (Clapeyron: a linear elastic body under one load) to 1e-6, and eq. 53's
 # balance of kinetic, strain and external work (load, supports, fix viscous,
 # trapezoidal) within 1e-4 (measured 8.8e-6)
-set -- $(awk '$1 == "deflection" { d = $2 } $1 == "energy" { u = $3; k = $5; w = $7; b = $9 }
+set -- $(awk '$1 == "deflection" { d = $2 } $1 == "energy" { u = $3; k = $5; w = $9; b = $11 }
   END { e = (u - 500 * d) / (500 * d); if (e < 0) e = -e
         printf "%s %.3g %s %s %s", (d > 0 && e <= 1e-6 && b <= 1e-4 && w > u) ? "ok" : "bad", e, u, w, b }' "$tmp/beam_11.txt" 2>/dev/null)
 if [ "${1:-bad}" = ok ]; then ok "energies of the settled beam: strain $3 J = F d / 2 (relative $2), external work $4 J, eq. 53 balance $5"
@@ -153,6 +153,60 @@ if [ -n "$a" ] && [ -n "$b" ] && awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if 
 else
   bad "restart mid-run: ${b:-none} m after the split, ${a:-none} m straight through: $(tail -3 "$tmp/restart.log")"
 fi
+# failure (strength FT 0 0 0, friction): two spheres (r = 0.1 m, parallel bond,
+# axial stiffness K = k^n pi r^2 = E pi r / 2) pulled apart at 1e-6 m per
+# step: 100 steps carry K 1e-4 exactly; the bond breaks at the first step
+# where K d >= FT = 1e5 N (d = 1.6e-4 m, step 160), holding K d^2 / 2, which
+# eq. 51 counts as dissipated; apart, no force; pushed back to an overlap of
+# 5e-5 m, the broken bond is a contact of stiffness K (repulsion K 5e-5)
+sort=
+[ "$host" = liggghts ] && sort="atom_modify     sort 0 0.0"
+cat > "$tmp/break.in" <<DECK
+units           si
+dimension       3
+boundary        f f f
+atom_style      sphere
+atom_modify     map array
+$sort
+region          box block -1 1 -1 1 -1 1
+create_box      1 box
+create_atoms    1 single 0 0 0
+create_atoms    1 single 0.2 0 0
+set             type 1 diameter 0.2
+set             type 1 density 925
+group           a id 1
+group           b id 2
+fix             bonds all servo_bc/bonds parallel 4e9 0.3 1 strength 1e5 0 0 0 friction 0.5
+fix             integrate all nve/sphere
+fix             hold_a a setforce 0 0 0
+fix             hold_b b setforce 0 0 0
+timestep        1e-4
+variable        f equal f_hold_b[1]
+variable        intact equal f_bonds[1]
+variable        dis equal f_bonds[4]
+velocity        b set 0.01 0 0
+run             100
+print           "stretched \${f} \${intact} \${dis}" file $tmp/break.txt
+run             100
+print           "broken \${f} \${intact} \${dis}" append $tmp/break.txt
+velocity        b set -0.01 0 0
+run             250
+print           "pressed \${f} \${intact} \${dis}" append $tmp/break.txt
+DECK
+(cd "$tmp" && timeout 60 "$bin" -in break.in -log none > break.log 2>&1)
+verdict=$(awk 'BEGIN { K = 4e9 * atan2(0, -1) * 0.1 / 2 }
+  $1 == "stretched" { e1 = ($2 + K * 1e-4) / (K * 1e-4); i1 = $3; d1 = $4 }
+  $1 == "broken" { f2 = $2; i2 = $3; e2 = ($4 - K * 1.6e-4^2 / 2) / (K * 1.6e-4^2 / 2) }
+  $1 == "pressed" { e3 = ($2 - K * 5e-5) / (K * 5e-5); i3 = $3; e4 = ($4 - K * 1.6e-4^2 / 2) / (K * 1.6e-4^2 / 2) }
+  END { a = e1 < 0 ? -e1 : e1; b = e2 < 0 ? -e2 : e2; c = e3 < 0 ? -e3 : e3; g = e4 < 0 ? -e4 : e4
+        ok = NR == 3 && a <= 1e-9 && i1 == 1 && d1 == 0 && f2 == 0 && i2 == 0 && b <= 1e-9 && c <= 1e-9 && i3 == 0 && g <= 1e-6
+        printf "%s %.2g %.2g %.2g %.2g", ok ? "ok" : "bad", a, b, c, g }' "$tmp/break.txt" 2>/dev/null)
+set -- $verdict
+if [ "${1:-bad}" = ok ]; then
+  ok "a bond that fails: K d to $2 before, broken at 1.6e-4 m holding K d^2/2 (eq. 51, to $3), a contact of stiffness K after (to $4)"
+else
+  bad "a bond that fails: $(cat "$tmp/break.txt" 2>/dev/null | tr '\n' ';') $(grep -m1 ERROR "$tmp/break.log")"
+fi
 refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION [UNITS]]
   # 2d: periodic in z, the discs at z = 0
   local z=0.5 zb="0 1" bz=f
@@ -164,7 +218,10 @@ refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION [UNITS]]
   if [ $status -ne 0 ] && grep -qF "$3" "$tmp/bad.log"; then ok "refuses $1 (exit $status): $3"
   else bad "$1 (exit $status), expected '$3': $(tail -2 "$tmp/bad.log")"; fi
 }
-refused "a missing alpha" "fix b all servo_bc/bonds beam 4e9 0.3" "expected 4 arguments after the style (MODEL E nu alpha), got 3"
+refused "a missing alpha" "fix b all servo_bc/bonds beam 4e9 0.3" "expected at least 4 arguments after the style (MODEL E nu alpha), got 3"
+refused "a strength with 3 values" "fix b all servo_bc/bonds beam 4e9 0.3 1 strength 1e5 0 0" "keyword strength needs 4 values (FT FS MB MT"
+refused "a zero tensile strength" "fix b all servo_bc/bonds parallel 4e9 0.3 1 strength 0 1 1 1" "keyword strength: 0 1 1 1 (expected a tension > 0"
+refused "an unknown keyword" "fix b all servo_bc/bonds beam 4e9 0.3 1 strenght 1e5 0 0 0" "unknown keyword 'strenght' (expected strength or friction)"
 refused "an unknown model" "fix b all servo_bc/bonds rope 4e9 0.3 1" "model 'rope' is not valid (expected beam, parallel or cohesive)"
 refused "a word for E" "fix b all servo_bc/bonds beam stiff 0.3 1" "keyword E: 'stiff' is not a number"
 refused "nu = 0.5" "fix b all servo_bc/bonds beam 4e9 0.5 1" "expected E > 0 Pa, -1 < nu < 0.5, alpha > 0"

@@ -13,8 +13,8 @@ static sbc_bpm *fail_create(sbc_bpm *e, char *msg, size_t cap, const char *text)
     return NULL;
 }
 
-sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alpha, int n, const double *x,
-                             const double *r, const double *m, char *msg, size_t cap)
+sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alpha, const double *strength, int n,
+                             const double *x, const double *r, const double *m, char *msg, size_t cap)
 {
     sbc_bpm_settings set = sbc_bpm_settings_default();
     sbc_bpm *e = NULL;
@@ -39,6 +39,22 @@ sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alph
     set.beam.nu = nu;
     set.parallel = sbc_bpm_parallel_law(E, rmin, 4.2);
     set.alpha = alpha;
+    if (strength) {
+        int q;
+        for (q = 0; q < 5; ++q)
+            if (!(strength[q] >= 0.0) || !isfinite(strength[q]) || (q == 0 && !(strength[q] > 0.0))) {
+                snprintf(text, sizeof text,
+                         "bonds: strength %g %g %g %g, friction %g (expected a tension > 0 N, shear N, bending N m, "
+                         "twisting N m and friction >= 0)",
+                         strength[0], strength[1], strength[2], strength[3], strength[4]);
+                return fail_create(NULL, msg, cap, text);
+            }
+        set.strength.tension = strength[0];
+        set.strength.shear = strength[1];
+        set.strength.bending = strength[2];
+        set.strength.twisting = strength[3];
+        set.mu = strength[4];
+    }
     if (sbc_bpm_create(&set, &e, &err) != SBC_OK)
         return fail_create(e, msg, cap, err.message);
     for (i = 0; i < n; ++i) {
@@ -61,6 +77,8 @@ sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alph
 
 int sbc_bpm_host_bond_count(const sbc_bpm *e) { return (int)e->nb; }
 
+int sbc_bpm_host_intact(const sbc_bpm *e) { return (int)(e->nb - e->nbroken); }
+
 int sbc_bpm_host_loads(sbc_bpm *e, const double *x, const double *v, const double *w, double dt, double *load)
 {
     size_t i, n3 = 3 * e->n;
@@ -78,11 +96,23 @@ int sbc_bpm_host_loads(sbc_bpm *e, const double *x, const double *v, const doubl
 
 double sbc_bpm_host_strain_energy(const sbc_bpm *e) { return sbc_bpm_energies(e).strain; }
 
-/* the bond states are structs of doubles only (bpm_bond.h) */
-int sbc_bpm_host_state_doubles(const sbc_bpm *e)
+/* the host's bonds have no dashpots (w_dis stays 0): what is dissipated is fracture and friction */
+double sbc_bpm_host_dissipated(const sbc_bpm *e) { return sbc_bpm_energies(e).dissipated; }
+
+double sbc_bpm_host_fracture_energy(const sbc_bpm *e) { return e->w_fracture; }
+
+void sbc_bpm_host_set_fracture_energy(sbc_bpm *e, double w) { e->w_fracture = w; }
+
+/* the bond states are structs of doubles only (bpm_bond.h); with failure, a
+ * flag and the broken bond's contact follow */
+#define BROKEN_DOUBLES (1 + (int)(sizeof(sbc_broken_bond) / sizeof(double)))
+
+static int bond_doubles(const sbc_bpm *e)
 {
     return (int)((e->set.model == SBC_BOND_BEAM ? sizeof(sbc_beam_bond) : sizeof(sbc_parallel_bond)) / sizeof(double));
 }
+
+int sbc_bpm_host_state_doubles(const sbc_bpm *e) { return bond_doubles(e) + (e->broken ? BROKEN_DOUBLES : 0); }
 
 void sbc_bpm_host_state_get(const sbc_bpm *e, int k, double *state)
 {
@@ -90,6 +120,11 @@ void sbc_bpm_host_state_get(const sbc_bpm *e, int k, double *state)
         memcpy(state, &e->beam[k], sizeof e->beam[k]);
     else
         memcpy(state, &e->parallel[k], sizeof e->parallel[k]);
+    if (e->broken) {
+        double *b = &state[bond_doubles(e)];
+        b[0] = e->broken[k];
+        memcpy(&b[1], &e->contact[k], sizeof e->contact[k]);
+    }
 }
 
 void sbc_bpm_host_state_set(sbc_bpm *e, int k, const double *state)
@@ -98,4 +133,14 @@ void sbc_bpm_host_state_set(sbc_bpm *e, int k, const double *state)
         memcpy(&e->beam[k], state, sizeof e->beam[k]);
     else
         memcpy(&e->parallel[k], state, sizeof e->parallel[k]);
+    if (e->broken) {
+        const double *b = &state[bond_doubles(e)];
+        const unsigned char now = b[0] != 0.0;
+        if (now != e->broken[k]) {
+            if (now) ++e->nbroken;
+            else --e->nbroken;
+        }
+        e->broken[k] = now;
+        memcpy(&e->contact[k], &b[1], sizeof e->contact[k]);
+    }
 }
