@@ -86,6 +86,37 @@ if [ $status -ne 0 ] && grep -q "cohesive: fs 'sixty' is not a number (expected 
 else
   fail=$((fail + 1)); echo "FAIL yade Cohesive with fs 'sixty' (exit $status):"; tail -3 "$tmp/bad_cohesive.log"
 fi
+# a bond that fails (servo_bc.Bonds strength): a parallel bond between two
+# spheres (r = 0.1 m, axial stiffness K = E pi r / 2) pulled apart at 1e-6 m per
+# step breaks once K d >= 1e5 N (d = 1.6e-4 m; checked intact after 150 steps
+# and broken after 170: O.forces after 10 steps shows 9 increments, and the
+# bond is still intact after 160) and leaves K d^2 / 2 dissipated (eq. 51)
+cat > "$tmp/break.py" <<PY
+import math, sys
+sys.path.insert(0, '$here/../../yade_adapter')
+import servo_bc
+from yade import O, utils
+from yade.wrapper import ForceResetter, NewtonIntegrator
+a = O.bodies.append(utils.sphere((0, 0, 0), 0.1))
+b = O.bodies.append(utils.sphere((0.2, 0, 0), 0.1))
+for i in (a, b):
+    O.bodies[i].state.blockedDOFs = 'xyzXYZ'
+O.bodies[b].state.vel = (0.01, 0, 0)
+bonds = servo_bc.Bonds([a, b], 'parallel', E=4e9, nu=0.3, alpha=1.0, strength=(1e5, 0, 0, 0), friction=0.5)
+O.engines = [ForceResetter(), bonds.engine, NewtonIntegrator(damping=0.0)]
+O.dt = 1e-4
+O.run(150, True)
+before = bonds.intact()
+O.run(20, True)
+K = 4e9 * math.pi * 0.1 / 2
+print('break %d %d %.17g %.17g' % (before, bonds.intact(), bonds.dissipated(), K * 1.6e-4 ** 2 / 2))
+PY
+yade -n -x "$tmp/break.py" > "$tmp/break.log" 2>&1
+if awk '$1 == "break" { e = ($4 - $5) / $5; if (e < 0) e = -e; ok = $2 == 1 && $3 == 0 && e <= 1e-9 } END { exit !ok }' "$tmp/break.log"; then
+  pass=$((pass + 1)); echo "yade Bonds with a strength: the bond breaks at d = 1.6e-4 m holding K d^2/2 = $(awk '$1 == "break" { print $5 }' "$tmp/break.log") J (eq. 51)"
+else
+  fail=$((fail + 1)); echo "FAIL yade Bonds with a strength:"; tail -3 "$tmp/break.log"
+fi
 yade -n -x "$beam" 4 "$tmp/beam_4.txt" > "$tmp/beam_4.log" 2>&1
 status=$?
 if [ $status -ne 0 ] && grep -q "N must be odd and at least 3, got 4" "$tmp/beam_4.log"; then
