@@ -204,6 +204,7 @@ bench: $(B)/bench_engine
 	bash bench/engine_vs_lammps.sh $(B)/bench_engine
 	bash bench/bpm.sh
 	bash bench/bpm_hosts.sh
+	bash bench/cohesive_hosts.sh
 
 clean:
 	rm -rf $(B) out

@@ -45,5 +45,6 @@ vtk 10 $out/vtk/$name
 network 10 $out/net/$name
 run
 SBC
-"$top/build/servo-bc" "$out/$name.sbc" > "$out/$name.log"
+# the log keeps the error too (why a run stopped), and the caller sees it
+"$top/build/servo-bc" "$out/$name.sbc" > "$out/$name.log" 2>&1 || { status=$?; grep -a 'ERROR\|error' "$out/$name.log" | tail -n 1 >&2; exit $status; }
 echo "$out/$name.csv"
