@@ -176,10 +176,16 @@ static void test_generated_frame(const sbc_packing *a, double L)
         }
         snprintf(script, sizeof script,
                  "dimension 2\nread_packing %s\ncontact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\n"
-                 "timestep 1e-5\nservo_bc D F 1 0.01 0 1 increments 2\nrun\n",
-                 path);
+                 "timestep 1e-5\nservo_bc D F 1 0.01 0 1 increments 2\nnetwork 1 %s/escaped\nrun\n",
+                 path, test_tmpdir);
         CHECK(sbc_script_run_string(script, "escaped", NULL, &err) == SBC_ERR_GEOMETRY &&
               strstr(err.message, "increment 0: interior particle 36 escaped through a gap between frame particles"));
+        /* the picture of the state it stopped in: the frame's polygon, the one disc outside it in orange */
+        snprintf(path, sizeof path, "%s/escaped_000000.svg", test_tmpdir);
+        CHECK(file_contains(path, "where the run stopped, in increment 0"));
+        CHECK(file_contains(path, "discs outside it: 1<"));
+        CHECK(file_contains(path, "<polygon fill=\"none\""));
+        CHECK(file_contains(path, "fill=\"#ff9900\" stroke"));
     }
     CHECK(sbc_script_run_string("generate periodic n0 25 rmin 0.67e-3 polydispersity 11 seed 1\n", "bad", NULL,
                                 &err) == SBC_ERR_INPUT &&

@@ -20,6 +20,13 @@ for n0 in 25 100 200 400 600; do
       echo "($bc) n0 $n0: stopped at F12 = $(last_F12 "$csv")"
   done
 done
+# a run that stopped leaves a picture of the state it stopped in (its log
+# names it): the frame's polygon and any disc outside it, for the page
+for log in "$out"/irregular_[DPT]_*_"$set".log; do
+  picture=$(sed -n 's/^servo_bc: its picture is //p' "$log" | tail -n 1)
+  name=$(basename "${log%.log}")
+  [ -z "$picture" ] || cp "$picture" "$fig/fig10_stopped_${name#irregular_}.svg"
+done
 # common range: the smallest last F12 over all runs
 fc=$(for f in "$out"/irregular_[DPT]_*_"$set".csv; do last_F12 "$f"; done | sort -g | head -1)
 for range in full common; do

@@ -17,6 +17,10 @@
 /* Steps between two checks during a relaxation. */
 #define SBC_CONFINE_EVERY 10000
 
+/* 1 when p [2] (m) lies inside the polygon of the frame's centres fx [2Q]
+ * (m, frame order) by the even-odd rule, else 0. O(Q). */
+int sbc_confine_inside(const sbc_frame *f, const double *fx, const double p[2]);
+
 /* One interior particle, numbered id by the host (for the message), at x [2]
  * (m) with velocity v [2] (m/s), against the frame f whose centres are now
  * fx [2Q] (m, frame order). increment: the increment under way, whose

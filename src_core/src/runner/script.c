@@ -163,7 +163,8 @@ static sbc_status check_confined(const sbc_frame *frame, const sbc_engine *engin
 }
 
 /* the snapshots due at a converged increment */
-static sbc_status write_snapshots(const script *s, const sbc_engine *engine, int increment, int last, sbc_error *err)
+static sbc_status write_snapshots(const script *s, const sbc_engine *engine, const sbc_frame *frame, int increment,
+                                  int last, sbc_error *err)
 {
     sbc_engine_view view = sbc_engine_get_view(engine);
     sbc_status st = SBC_OK;
@@ -173,7 +174,7 @@ static sbc_status write_snapshots(const script *s, const sbc_engine *engine, int
         char path[SBC_NAME_LEN + 32], title[96];
         snprintf(path, sizeof path, "%s_%06d.svg", s->network_prefix, increment);
         snprintf(title, sizeof title, "contact network, increment %d", increment);
-        st = sbc_network_svg(path, title, &view, err);
+        st = sbc_network_svg(path, title, &view, frame, err);
     }
     return st;
 }
@@ -418,11 +419,11 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         }
         if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
             const sbc_result *row = sbc_controller_result(r.ctl);
-            r.increment_now = row->increment + 1;
             if ((st = check_confined(&r.frame, r.engine, r.fx, row->increment, err)) != SBC_OK) break;
+            r.increment_now = row->increment + 1;
             if ((st = keep_row(&r, row, err)) != SBC_OK) break;
             if (r.csv && (st = sbc_csv_write(r.csv, row, err)) != SBC_OK) break;
-            if ((st = write_snapshots(s, r.engine, row->increment, ev == SBC_EVENT_FINISHED, err)) != SBC_OK) break;
+            if ((st = write_snapshots(s, r.engine, &r.frame, row->increment, ev == SBC_EVENT_FINISHED, err)) != SBC_OK) break;
             if (s->log)
                 fprintf(s->log, "increment %d/%d  F12 %+.5f  sigma11 %+.6e  sigma12 %+.6e N/m  steps %ld  HM %.1e\n",
                         row->increment, sbc_settings_total_increments(&s->settings), row->F[1], row->sigma[0], row->sigma[1],
@@ -438,12 +439,19 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         if ((st = sbc_engine_step(r.engine, err)) != SBC_OK) break;
         sbc_engine_snapshot(r.engine, &snap);
     }
-    if (st != SBC_OK && s->vtk_every) { /* the state the run stopped in, for a look in ParaView */
+    if (st != SBC_OK) { /* the state the run stopped in, for a look in ParaView and a picture */
         sbc_error verr;
         sbc_engine_view view = sbc_engine_get_view(r.engine);
-        if (sbc_vtk_write(s->vtk_prefix, r.increment_now, &view, &verr) == SBC_OK && s->log)
+        if (s->vtk_every && sbc_vtk_write(s->vtk_prefix, r.increment_now, &view, &verr) == SBC_OK && s->log)
             fprintf(s->log, "servo_bc: the state the run stopped in is %s_particles_%06d.vtk\n", s->vtk_prefix,
                     r.increment_now);
+        if (s->network_every) {
+            char path[SBC_NAME_LEN + 32], title[96];
+            snprintf(path, sizeof path, "%s_%06d.svg", s->network_prefix, r.increment_now);
+            snprintf(title, sizeof title, "contact network where the run stopped, in increment %d", r.increment_now);
+            if (sbc_network_svg(path, title, &view, &r.frame, &verr) == SBC_OK && s->log)
+                fprintf(s->log, "servo_bc: its picture is %s\n", path);
+        }
     }
     {
         sbc_error perr;

@@ -3,8 +3,7 @@
 
 #include <math.h>
 
-/* even-odd rule on the polygon of the frame's centres, in frame order */
-static int inside(const sbc_frame *f, const double *fx, const double *p)
+int sbc_confine_inside(const sbc_frame *f, const double *fx, const double p[2])
 {
     int q, in = 0;
     for (q = 0; q < f->n; ++q) {
@@ -25,7 +24,7 @@ sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment
                         "servo_bc: increment %d: particle %ld has a non-finite position (the packing blew up; lower "
                         "the time step or take smaller increments); the results before increment %d stand",
                         increment, id, increment);
-    if (inside(f, fx, x))
+    if (sbc_confine_inside(f, fx, x))
         return SBC_OK;
     for (q = 0; q < f->n; ++q)
         for (c = 0; c < 2; ++c) {
