@@ -13,6 +13,9 @@ set -euo pipefail
 set=${1:-table4}
 limit=${LIMIT:-1800}
 out=$top/out/paper
+# the packing a run of this set read: its own (converged) or Fig. 6's
+packing() { if [ -f "$out/packing_$1_$set.txt" ]; then echo "$out/packing_$1_$set.txt"; else echo "$out/packing_$1.txt"; fi; }
+count() { awk '$1 != "box" && $1 !~ /^#/ && NF >= 3 { n++ } END { print n }' "$(packing "$1")"; }
 for n0 in 25 100 200 400 600; do
   for bc in D P T; do
     csv=$out/irregular_${bc}_${n0}_${set}.csv
@@ -27,16 +30,33 @@ for log in "$out"/irregular_[DPT]_*_"$set".log; do
   name=$(basename "${log%.log}")
   [ -z "$picture" ] || cp "$picture" "$fig/fig10_stopped_${name#irregular_}.svg"
 done
+# how far each (P) and (T) frame left F X from increment 0 to 10 (F12 0 -> 0.05),
+# in radii (frame_departure.sh): out/paper/fig10_SET_frame.md
+{
+  echo "| particles | (P) largest, radii | (P) mean | (T) largest | (T) mean |"
+  echo "| --- | --- | --- | --- | --- |"
+  for n0 in 25 100 200 400 600; do
+    row="| $(count "$n0")"
+    for bc in P T; do
+      vtk=$out/vtk/irregular_${bc}_${n0}_${set}_particles_0000
+      if [ -f "${vtk}00.vtk" ] && [ -f "${vtk}10.vtk" ]; then
+        row="$row | $(bash "$top/inputs/paper/frame_departure.sh" "${vtk}00.vtk" "${vtk}10.vtk" 0.05 | awk '{ print $1 " | " $3 }')"
+      else row="$row | – | –"; fi
+    done
+    echo "$row |"
+  done
+} > "$out/fig10_${set}_frame.md"
+cat "$out/fig10_${set}_frame.md"
 # common range: the smallest last F12 over all runs
 fc=$(for f in "$out"/irregular_[DPT]_*_"$set".csv; do last_F12 "$f"; done | sort -g | head -1)
 for range in full common; do
   table=$out/fig10_${set}_$range.csv
   echo "particles,D,P,T,D_to,P_to,T_to" > "$table"
   for n0 in 25 100 200 400 600; do
-    row=$(awk '$1 != "box" && $1 !~ /^#/ && NF >= 3 { n++ } END { print n }' "$out/packing_$n0.txt")
+    row=$(count "$n0")
     ends=
     # sigma~ = sigma Rbar / kn, kn = 1e4 N/m (Sect. 4.2.1)
-    scale=$(awk -v r="$(rbar "$out/packing_$n0.txt")" 'BEGIN { printf "%.10g", r / 1e4 }')
+    scale=$(awk -v r="$(rbar "$(packing "$n0")")" 'BEGIN { printf "%.10g", r / 1e4 }')
     for bc in D P T; do
       csv=$out/irregular_${bc}_${n0}_${set}.csv
       if [ $range = full ]; then row="$row,$(path_norm "$csv" "$scale")"; else row="$row,$(path_norm "$csv" "$scale" "$fc")"; fi
