@@ -43,7 +43,8 @@ typedef struct sbc_generate_info {
     int n0, n;          /* particles before and after the reconstruction */
     double L;           /* side of the square, m */
     double fraction;    /* area of the discs inside the square / L^2 */
-    double coordination;/* mean contacts per particle not on the frame (touching within 1e-9 R) */
+    double coordination;/* mean contacts per original disc (the n0 of the periodic square, images
+                           included; touching within 1e-6 R_min) */
 } sbc_generate_info;
 
 /* Generates the periodic packing; p is filled with the reconstructed discs
