@@ -64,6 +64,10 @@ sbc_status sbc_frame_from_list(sbc_frame *frame, int count, const int *list,
 /* Recomputes A_q (eq. 2) and V from frame->X and frame->R. */
 void sbc_frame_update_geometry(sbc_frame *frame);
 
+/* The frame's centres in frame order, fx [2Q] (m), gathered from the
+ * centres x [2n] of the host's packing. */
+void sbc_frame_centres(const sbc_frame *frame, const double *x, double *fx);
+
 /* Restart support: the frame as a flat array of doubles (its reference
  * positions cannot be detected again from a deformed packing).
  * sbc_frame_state_size gives the count, sbc_frame_save writes it,

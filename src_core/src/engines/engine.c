@@ -217,10 +217,7 @@ static sbc_status seal_step(sbc_engine *e, sbc_error *err)
     double energy;
     sbc_status st;
     int q;
-    for (q = 0; q < fr->n; ++q) {
-        e->snap_x[2 * q] = e->x[2 * fr->particle[q]];
-        e->snap_x[2 * q + 1] = e->x[2 * fr->particle[q] + 1];
-    }
+    sbc_frame_centres(fr, e->x, e->snap_x);
     memset(e->seal_reaction, 0, sizeof(double) * 2 * (size_t)fr->n);
     p.n = e->n;
     p.x = e->x;

@@ -16,13 +16,10 @@
  * out [n] (zeroed when there is no frame); their count */
 static int outside_frame(const sbc_engine_view *w, const sbc_frame *frame, double *fx, unsigned char *out)
 {
-    int k, q, count = 0;
+    int k, count = 0;
     for (k = 0; k < w->n; ++k) out[k] = 0;
     if (!frame) return 0;
-    for (q = 0; q < frame->n; ++q) {
-        fx[2 * q] = w->x[2 * frame->particle[q]];
-        fx[2 * q + 1] = w->x[2 * frame->particle[q] + 1];
-    }
+    sbc_frame_centres(frame, w->x, fx);
     for (k = 0; k < w->n; ++k)
         if (!w->kinematic[k] && !sbc_confine_inside(frame, fx, &w->x[2 * k])) count += out[k] = 1;
     return count;

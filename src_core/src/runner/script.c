@@ -147,12 +147,9 @@ static sbc_status check_confined(const sbc_frame *frame, const sbc_engine *engin
                                  sbc_error *err)
 {
     sbc_engine_view w = sbc_engine_get_view(engine);
-    int k, q;
+    int k;
     sbc_status st;
-    for (q = 0; q < frame->n; ++q) {
-        fx[2 * q] = w.x[2 * frame->particle[q]];
-        fx[2 * q + 1] = w.x[2 * frame->particle[q] + 1];
-    }
+    sbc_frame_centres(frame, w.x, fx);
     for (k = 0; k < w.n; ++k)
         if (!isfinite(w.x[2 * k]) || !isfinite(w.x[2 * k + 1]))
             return sbc_confine_check(frame, fx, increment, k, &w.x[2 * k], &w.v[2 * k], err);

@@ -423,3 +423,12 @@ sbc_status sbc_frame_load(sbc_frame *f, const double *in, size_t n, sbc_error *e
                             f->corner[c]);
     return SBC_OK;
 }
+
+void sbc_frame_centres(const sbc_frame *frame, const double *x, double *fx)
+{
+    int q;
+    for (q = 0; q < frame->n; ++q) {
+        fx[2 * q] = x[2 * frame->particle[q]];
+        fx[2 * q + 1] = x[2 * frame->particle[q] + 1];
+    }
+}
