@@ -12,15 +12,16 @@
 #              (generate ... strain 0.01: volume fraction 0.849 for n0 = 200,
 #              within the paper's 0.833-0.850) at 0.1 of the critical step
 #              (7.5e-5 s; Table 4's 1e-6 s is 1/750 of it).
-# Writes out/paper/irregular_BC_N0_SET.{sbc,csv,log} (converged: and the
-# packing, out/paper/packing_N0_converged.txt), VTK and contact network
+# Packings: fig6.sh's out/paper/packing_N0.txt (table4, active) and
+# packing_N0_converged.txt (converged), written by fig6.sh when missing.
+# Writes out/paper/irregular_BC_N0_SET.{sbc,csv,log}, VTK and contact network
 # pictures every 10 increments (F12 = 0.05, 0.1, 0.3, 0.5 are increments 10,
 # 20, 60, 100: Fig. 8) in out/paper/vtk/ and out/paper/net/.
 set -euo pipefail
 bc=$1 n0=$2 set=$3
 top=$(cd "$(dirname "$0")/../.." && pwd)
 out=$top/out/paper
-[ -f "$out/packing_$n0.txt" ] || bash "$top/inputs/paper/fig6.sh" > /dev/null
+[ -f "$out/packing_$n0.txt" ] && [ -f "$out/packing_${n0}_converged.txt" ] || bash "$top/inputs/paper/fig6.sh" > /dev/null
 case "$set/$bc" in
   table4/T) servo="gain_force 5 gain_deformation 2e-6 tol_force 1e-6 tol_deformation 1e-1" ;;
   table4/*) servo="gain_force 1e2 gain_moment 2e2 tol_force 1e-6 tol_moment 1e-6 tol_deformation 1e-1" ;;
@@ -30,9 +31,7 @@ case "$set/$bc" in
 esac
 packing="read_packing $out/packing_$n0.txt" dt=1e-6 paper_words="accuracy paper relax 1e-3 20 damping 0.7 0.7" iterations=${iterations:-100000}
 if [ "$set" = converged ]; then
-  # the packing is kept for fig10.sh (its particle count and mean radius)
-  packing="generate periodic n0 $n0 rmin 0.67e-3 polydispersity 2 seed 1 strain 0.01
-write_packing text $out/packing_${n0}_converged.txt" dt=7.5e-5 paper_words=
+  packing="read_packing $out/packing_${n0}_converged.txt" dt=7.5e-5 paper_words=
 fi
 name=irregular_${bc}_${n0}_${set}
 mkdir -p "$out/vtk" "$out/net"
