@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <csignal>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -44,12 +45,13 @@ const double RESTART_MAGIC = 8.020001e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), per_atom(nullptr), contacts(nullptr), csv(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0), seal_on(0), seal_energy(0.0)
+    Fix(lmp, narg, arg), ctl(nullptr), per_atom(nullptr), contacts(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0), seal_on(0), seal_energy(0.0)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
   std::memset(&last, 0, sizeof last);
   std::memset(&seal, 0, sizeof seal);
+  std::memset(&csv, 0, sizeof csv);
   sbc_fire_start(&fire);
   if (sbc_settings_parse(&settings, narg - 3, arg + 3, &err) != SBC_OK)
     fail(err.message);
@@ -76,6 +78,9 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   atom->add_callback(CALLBACK_GROW);
   atom->add_callback(CALLBACK_RESTART);
   for (int i = 0; i < atom->nlocal; i++) per_atom[i][0] = per_atom[i][1] = 0.0;
+  // a results file past the file size limit is a write error with a message,
+  // not a process killed by SIGXFSZ without one
+  if (settings.file[0]) std::signal(SIGXFSZ, SIG_IGN);
 
   // after read_restart, the groups ID_frame and ID_interior come back with the
   // atoms; the frame then comes from this fix's restart data (restart()), since
@@ -98,7 +103,7 @@ FixServoBC::~FixServoBC()
   sbc_controller_free(ctl);
   sbc_seal_free(&seal);
   sbc_frame_free(&frame);
-  if (csv) fclose(csv);
+  sbc_csv_close(&csv);
 }
 
 int FixServoBC::setmask()
@@ -170,7 +175,8 @@ void FixServoBC::detect_frame()
   frame_bit = group->bitmask[group->find(gf.c_str())];
   interior_bit = group->bitmask[group->find(gi.c_str())];
   make_buffers();
-  log("fix servo_bc: %d particles, frame of %d (groups %s, %s)\n", n, Q, gf.c_str(), gi.c_str());
+  log("fix servo_bc (servo_bc %s): %d particles, frame of %d (groups %s, %s)\n", sbc_version(), n, Q, gf.c_str(),
+      gi.c_str());
 }
 
 void FixServoBC::make_buffers()
@@ -294,9 +300,16 @@ void FixServoBC::init()
     if (!ctl) fail(err.message);
     if (!saved_state.empty() && sbc_controller_load(ctl, saved_state.data(), saved_state.size(), &err) != SBC_OK)
       fail(err.message);
+    // continued from a restart: the rows an interrupted run wrote after the
+    // restart file are dropped, so that the file equals an uninterrupted run's
+    int kept = 0;
     if (comm->me == 0 && settings.file[0] &&
-        (restored ? sbc_csv_append(&csv, settings.file, &err) : sbc_csv_open(&csv, settings.file, &err)) != SBC_OK)
+        (restored ? sbc_csv_resume(&csv, settings.file, finished ? INT_MAX : sbc_controller_increment(ctl), &kept, &err)
+                  : sbc_csv_open(&csv, settings.file, &err)) != SBC_OK)
       fail_here(err.message);
+    if (restored && settings.file[0])
+      log("servo_bc: %s continued after its row of increment %d (%d rows kept)\n", settings.file,
+          finished ? sbc_settings_total_increments(&settings) : sbc_controller_increment(ctl) - 1, kept);
   }
 }
 
@@ -612,7 +625,7 @@ void FixServoBC::post_force(int)
   if (ev == SBC_EVENT_CORRECTED || ev == SBC_EVENT_INCREMENT) frame_still = 0;
   if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
     last = *sbc_controller_result(ctl);
-    if (comm->me == 0 && csv && sbc_csv_write(csv, &last, &err) != SBC_OK)
+    if (comm->me == 0 && csv.fp && sbc_csv_write(&csv, &last, &err) != SBC_OK)
       fail_here(err.message);
     log("servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %ld iterations %d "
         "unbalanced %.2g\n",

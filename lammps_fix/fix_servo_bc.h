@@ -33,10 +33,12 @@ extern "C" {
 #include "sbc/controller.h"
 #include "sbc/fire_damping.h"
 #include "sbc/frame.h"
+#include "sbc/results.h"
 #include "sbc/saved.h"
 #include "sbc/seal.h"
 #include "sbc/time_step.h"
 #include "sbc/settings.h"
+#include "sbc/version.h"
 }
 
 namespace LAMMPS_NS {
@@ -79,7 +81,7 @@ class FixServoBC : public Fix {
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
   servo_bc_host::ContactLaw law;   // kn, kt, shear history of the pair style
   FixServoBCBonds *contacts;       // fix servo_bc/bonds cohesive, which owns the contacts instead (or null)
-  FILE *csv;
+  sbc_csv csv;
   int finished;
   sbc_result last;
   std::vector<double> saved_state;  // controller state from a restart file, loaded in init()

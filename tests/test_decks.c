@@ -137,5 +137,5 @@ void test_decks(void)
     /* a folder that is not there */
     snprintf(path, sizeof path, "%s/case_periodic.sbc", test_tmpdir);
     CHECK(sbc_script_decks_file(path, "/dev/null/folder", NULL, &err) == SBC_ERR_IO &&
-          strstr(err.message, "cannot open '/dev/null/folder/packing.txt'"));
+          strstr(err.message, "cannot write '/dev/null/folder/packing.txt'"));
 }

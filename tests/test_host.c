@@ -236,7 +236,7 @@ static void bad_input(void)
     refused("D", 3, ring, "no keyword 'frame'");
     refused("D frame ring", 1, outside, "index 25 is not in [0, 25)");
     refused("D frame ring", 3, ring, "frame");
-    refused("D file /dev/null/dir/x.csv", 0, NULL, "cannot open '/dev/null/dir/x.csv'");
+    refused("D file /dev/null/dir/x.csv", 0, NULL, "cannot write '/dev/null/dir/x.csv'");
 }
 
 void test_host(void)

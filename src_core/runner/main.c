@@ -1,23 +1,35 @@
 /* servo-bc: the embedded runner.
  *   servo-bc SCRIPT              runs the script
  *   servo-bc --check SCRIPT      checks every command of the script, runs and writes nothing
- *   servo-bc --decks DIR SCRIPT  writes the script's case for every host into DIR */
+ *   servo-bc --decks DIR SCRIPT  writes the script's case for every host into DIR
+ *   servo-bc --version           prints the version */
+#define _POSIX_C_SOURCE 200809L
 #include "sbc/script.h"
+#include "sbc/version.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
 static const char usage[] =
     "usage: servo-bc SCRIPT              run the script (docs/runner.md)\n"
     "       servo-bc --check SCRIPT      check every command of the script; run and write nothing\n"
-    "       servo-bc --decks DIR SCRIPT  write the script's case for every host into DIR\n";
+    "       servo-bc --decks DIR SCRIPT  write the script's case for every host into DIR\n"
+    "       servo-bc --version           print the version (CHANGELOG.md)\n";
 
 int main(int argc, char **argv)
 {
     sbc_error err;
     sbc_status st;
+    /* past the file size limit a write fails with a message naming the file
+       (results.h), instead of SIGXFSZ ending the process without one */
+    signal(SIGXFSZ, SIG_IGN);
     if (argc == 2 && (strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0)) {
         fputs(usage, stdout);
+        return 0;
+    }
+    if (argc == 2 && strcmp(argv[1], "--version") == 0) {
+        printf("servo-bc %s\n", sbc_version());
         return 0;
     }
     if (argc == 2 && argv[1][0] != '-')

@@ -46,7 +46,7 @@ refuses "kn that differs between types" 's/kn peratomtypepair 2 1e4 1e4 1e4 1e4/
 deck_with 's|file ${csv}|file /dev/null/dir/out.csv|' "$TMP/bad_file.in"
 run_deck 2 bad_file.in "$TMP/unused.csv" "$TMP/bad_file.log"
 rc=$?
-if [ $rc -ne 0 ] && grep -aq "ERROR on proc 0: Fix servo_bc: keyword 'file': cannot open '/dev/null/dir/out.csv'" \
+if [ $rc -ne 0 ] && grep -aq "ERROR on proc 0: Fix servo_bc: keyword 'file': cannot write '/dev/null/dir/out.csv'" \
      "$TMP/bad_file.log"; then
   ok "refuses an unwritable results file on 2 ranks, message on the pipe"
 else

@@ -1,14 +1,53 @@
-/* servo_bc: opening an output file, creating the folders of its path that
- * do not exist yet (as `mkdir -p`), so that `file out/run1/P.csv` works in a
- * fresh folder. */
+/* servo_bc: opening an output file.
+ *
+ * Every file servo_bc writes goes through sbc_output_open, which
+ *  - creates the folders of its path that do not exist yet (as `mkdir -p`),
+ *    so that `file out/run1/P.csv` works in a fresh folder;
+ *  - overwrites an existing file only when it is empty or begins as files of
+ *    its kind do (a results file with "increment,", a VTK file with
+ *    "# vtk DataFile", ...): servo_bc never overwrites a file it did not
+ *    write, so an output named after an input deck, a data file, a packing or
+ *    another kind of output is refused with the input intact;
+ *  - locks the file for writing (POSIX record lock) before truncating it, so
+ *    that a second process writing the same file is refused, naming the
+ *    process that holds it.
+ * A results file is written unbuffered, one row per write, so that a failing
+ * write can be undone to the last whole row (results.h). */
 #ifndef SBC_OUTPUT_FILE_H
 #define SBC_OUTPUT_FILE_H
 
 #include <stdio.h>
 
-/* fopen(path, "w") after creating the missing parent folders; NULL (errno
- * set) when a folder cannot be made or the file cannot be opened. */
-FILE *sbc_output_open(const char *path);
+#include "sbc/status.h"
+
+typedef enum sbc_output_kind {
+    SBC_OUTPUT_RESULTS = 0, /* the servo_bc CSV (results.h) */
+    SBC_OUTPUT_SERIES,      /* a 3D test's time series (CSV beginning "step,") */
+    SBC_OUTPUT_VTK,         /* legacy VTK */
+    SBC_OUTPUT_SVG,         /* plots, rose diagrams, contact networks */
+    SBC_OUTPUT_PACKING,     /* packings in every host's format (first line names "servo_bc packing") */
+    SBC_OUTPUT_DECK         /* the hosts' inputs of servo-bc --decks */
+} sbc_output_kind;
+
+/* "results file", "VTK file", ... */
+const char *sbc_output_kind_name(sbc_output_kind kind);
+
+/* Opens path for writing an output of KIND as above; NULL with err set
+ * ("WHAT: cannot write 'path': the reason") otherwise. */
+FILE *sbc_output_open(const char *path, sbc_output_kind kind, const char *what, sbc_error *err);
+
+/* As sbc_output_open, but the file is kept as it is, opened for reading and
+ * writing at its start (a results file continued from a restart). */
+FILE *sbc_output_update(const char *path, sbc_output_kind kind, const char *what, sbc_error *err);
+
+/* Everything sbc_output_open checks, without writing anything: the folders
+ * and the file are created and removed again when they did not exist. Used
+ * by `servo-bc --check`. */
+sbc_status sbc_output_probe(const char *path, sbc_output_kind kind, const char *what, sbc_error *err);
+
+/* Reports why an existing file may not be overwritten as KIND (it is not
+ * one of servo_bc's files of that kind); SBC_OK for a missing or empty file. */
+sbc_status sbc_output_owned(const char *path, sbc_output_kind kind, const char *what, sbc_error *err);
 
 /* Creates the folder path and its missing parents; 0 on success. */
 int sbc_output_folder(const char *path);

@@ -1,8 +1,13 @@
 /* servo_bc: the results file (docs/servo_bc.md, Output), one row per
- * converged increment, flushed at once so that nothing is lost if a run
- * stops. After the contract's 20 columns come the accuracy measures of the
- * row: unbalanced (relax.h), frame_residual (servo.h) and hill_mandel
- * (eq. 30, relative); new columns are only ever appended. */
+ * converged increment, written and flushed at once so that nothing is lost
+ * if a run stops. After the contract's 20 columns come the accuracy measures
+ * of the row: unbalanced (relax.h), frame_residual (servo.h) and hill_mandel
+ * (eq. 30, relative); new columns are only ever appended.
+ *
+ * The file is opened through output_file.h (never over a file servo_bc did
+ * not write; locked while the run writes it). A row is whole or absent: a
+ * write that fails (disk full, file size limit) is cut back to the last whole
+ * row and reported with the file's name and the system's reason. */
 #ifndef SBC_RESULTS_H
 #define SBC_RESULTS_H
 
@@ -13,14 +18,26 @@
 /* The CSV header line (no newline). */
 extern const char sbc_csv_header[];
 
+typedef struct sbc_csv {
+    FILE *fp;                  /* NULL: no results file */
+    char path[SBC_NAME_LEN];
+} sbc_csv;
+
 /* Opens path for writing and writes the header. */
-sbc_status sbc_csv_open(FILE **fp, const char *path, sbc_error *err);
+sbc_status sbc_csv_open(sbc_csv *csv, const char *path, sbc_error *err);
 
-/* Opens path for appending (a run continued from a restart) and writes the
- * header only when the file is empty or new. */
-sbc_status sbc_csv_append(FILE **fp, const char *path, sbc_error *err);
+/* A run continued from a restart whose increment in progress is `next`:
+ * opens path, keeps the header and the rows of increments before `next`,
+ * drops the rest (rows an interrupted run wrote after its restart file), so
+ * that the continued file equals an uninterrupted run's. A missing or empty
+ * file is begun anew with the header; *kept (may be NULL) is the number of
+ * rows kept. */
+sbc_status sbc_csv_resume(sbc_csv *csv, const char *path, int next, int *kept, sbc_error *err);
 
-/* Writes one row with 17 significant digits and flushes. */
-sbc_status sbc_csv_write(FILE *fp, const sbc_result *r, sbc_error *err);
+/* Writes one row with 17 significant digits; refuses a non-finite value. */
+sbc_status sbc_csv_write(sbc_csv *csv, const sbc_result *r, sbc_error *err);
+
+/* Closes the file (nothing when none is open). */
+void sbc_csv_close(sbc_csv *csv);
 
 #endif

@@ -2,9 +2,12 @@
  * run in every host (the runner, the LAMMPS and LIGGGHTS fix, the handle of
  * host.h).
  *
- * Upper bound: the critical step of the lightest particle on one contact,
- * dt_c = 2 sqrt(M_min / (2 kn)) (a particle with several contacts is stable
- * only below a fraction of it, docs/stability.md).
+ * Upper bound: SBC_TIME_STEP_FRACTION of the critical step of the lightest
+ * particle on one contact, dt_c = 2 sqrt(M_min / (2 kn)): a particle with
+ * several contacts is stable only below a fraction of it (1/sqrt(2) with the
+ * four contacts of a square lattice), and relaxations at every preset stop
+ * converging between 0.65 and 0.7 of dt_c on the square lattice
+ * (docs/stability.md, "Time step").
  * Lower bound: max_relax_steps steps must span at least one dt_c; below
  * that no relaxation can end (a contact oscillation lasts longer than the
  * relaxation may), and Ek of a step so short underflows to zero, which would
@@ -13,6 +16,13 @@
 #define SBC_TIME_STEP_H
 
 #include "sbc/status.h"
+
+#define SBC_TIME_STEP_FRACTION 0.6
+
+/* dt (s) against a critical step dtc (s) given by formula (for the
+ * message: "2 sqrt(M / (2 kn)) of particle 3 ..."): above dtc, above
+ * SBC_TIME_STEP_FRACTION of it, or too short for max_relax_steps. */
+sbc_status sbc_time_step_bound(double dt, double dtc, const char *formula, long max_relax_steps, sbc_error *err);
 
 /* dt (s), kn (N/m; 0 = unknown: the upper bound is not checked), the
  * smallest mass (kg) and the index of its particle (for the message, -1 if

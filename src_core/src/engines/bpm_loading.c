@@ -7,6 +7,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* a row of the time series is written only when every value in it is
+   finite: the run stops first, naming the step and the value */
+static sbc_status series_finite(const char *test, long step, const double *v, int n, sbc_error *err)
+{
+    int k;
+    for (k = 0; k < n; ++k)
+        if (!isfinite(v[k]))
+            return sbc_fail(err, SBC_ERR_NUMERIC, "%s: step %ld: a value of the time series is %g (column %d); the "
+                            "run stops before writing it (check the time step against eq. 48)", test, step, v[k],
+                            k + 2);
+    return SBC_OK;
+}
+
 /* least-squares slope of y against x */
 typedef struct fit {
     double n, sx, sy, sxx, sxy;
@@ -113,6 +126,9 @@ sbc_status sbc_bpm_uniaxial_run(sbc_bpm *e, const sbc_bpm_uniaxial *test, sbc_bp
             }
             res->force = fx;
             res->dL = dl;
+            if ((st = series_finite("uniaxial", t, (const double[]){dl, fx, ey, ez, en.kinetic, en.strain,
+                                    en.dissipated, en.external}, 8, err)) != SBC_OK)
+                break;
             if (test->series)
                 fprintf(test->series, "%ld,%.10e,%.10e,%.10e,%.10e,%.6e,%.6e,%.6e,%.6e\n", t, dl, fx, ey, ez,
                         en.kinetic, en.strain, en.dissipated, en.external);
@@ -229,6 +245,9 @@ sbc_status sbc_bpm_bending_run(sbc_bpm *e, const sbc_bpm_bending *test, sbc_bpm_
             double d = mean_drop(e, zone, z0);
             if (t >= test->ramp && en.balance > res->balance)
                 res->balance = en.balance;
+            if ((st = series_finite("bending", t, (const double[]){F * ramp, d, en.kinetic, en.strain, en.dissipated,
+                                    en.external}, 6, err)) != SBC_OK)
+                break;
             if (test->series)
                 fprintf(test->series, "%ld,%.10e,%.10e,%.6e,%.6e,%.6e,%.6e\n", t, F * ramp, d, en.kinetic,
                         en.strain, en.dissipated, en.external);

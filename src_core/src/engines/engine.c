@@ -120,9 +120,19 @@ sbc_engine *sbc_engine_create(const sbc_engine_def *d, sbc_error *err)
             return NULL;
         }
         e->r[k] = R;
-        e->mass[k] = d->density * M_PI * R * R;          /* M = rho pi R^2, kg */
+        e->mass[k] = d->density * (M_PI * R * R);        /* M = rho pi R^2, kg */
         e->inv_m[k] = 1.0 / e->mass[k];
         e->inv_I[k] = 1.0 / (0.5 * e->mass[k] * R * R); /* I = M R^2 / 2 (eq. 9) */
+        if (!isfinite(e->mass[k]) || !(e->inv_m[k] > 0.0) || !isfinite(e->inv_m[k]) || !(e->inv_I[k] > 0.0) ||
+            !isfinite(e->inv_I[k]) || !isfinite(sqrt(e->mass[k] / (2.0 * d->law.kn))) ||
+            !(sqrt(e->mass[k] / (2.0 * d->law.kn)) > 0.0)) {
+            sbc_fail(err, SBC_ERR_INPUT, "engine: particle %d: its mass rho pi R^2 = %g kg, moment of inertia "
+                     "M R^2 / 2 = %g kg m^2 or critical step 2 sqrt(M / (2 kn)) overflows or vanishes in double "
+                     "precision (density %g kg/m^2, radius %g m, kn %g N/m); expected values whose products stay "
+                     "finite and non-zero", k, e->mass[k], 0.5 * e->mass[k] * R * R, d->density, R, d->law.kn);
+            sbc_engine_free(e);
+            return NULL;
+        }
         if (R > e->rmax) e->rmax = R;
         if (R < e->rmin) e->rmin = R;
     }

@@ -21,10 +21,10 @@ sbc_status sbc_bpm_vtk_write(const char *prefix, const sbc_bpm *e, sbc_error *er
     if (!sigma)
         return sbc_fail(err, SBC_ERR_NOMEM, "vtk: out of memory");
     sbc_bpm_particle_stress(e, sigma, err);
-    fp = sbc_output_open(path);
+    fp = sbc_output_open(path, SBC_OUTPUT_VTK, "vtk", err);
     if (!fp) {
         free(sigma);
-        return sbc_fail(err, SBC_ERR_IO, "vtk: cannot write '%s'", path);
+        return err->status;
     }
     fprintf(fp, "# vtk DataFile Version 3.0\nservo_bc 3D bonded spheres\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n",
             e->n);

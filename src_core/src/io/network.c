@@ -61,10 +61,10 @@ sbc_status sbc_network_svg(const char *path, const char *title, const sbc_engine
         return sbc_fail(err, SBC_ERR_NOMEM, "network: out of memory for %d particles", w->n);
     }
     outside = outside_frame(w, frame, fx, out);
-    if (!(fp = sbc_output_open(path))) {
+    if (!(fp = sbc_output_open(path, SBC_OUTPUT_SVG, "network", err))) {
         free(fx);
         free(out);
-        return sbc_fail(err, SBC_ERR_IO, "network: cannot open '%s' for writing", path);
+        return err->status;
     }
     fprintf(fp, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" font-family=\"sans-serif\" "
                 "font-size=\"13\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n",

@@ -20,8 +20,8 @@ static sbc_status open_for_writing(FILE **fp, const sbc_packing *p, const char *
 {
     if (p->n < 1)
         return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no particles to write to '%s'", path);
-    if (!(*fp = sbc_output_open(path)))
-        return sbc_fail(err, SBC_ERR_IO, "write_packing: cannot open '%s' for writing", path);
+    if (!(*fp = sbc_output_open(path, SBC_OUTPUT_PACKING, "write_packing", err)))
+        return err->status;
     return SBC_OK;
 }
 

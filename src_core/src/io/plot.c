@@ -82,9 +82,9 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
     if (ylo > yhi) ylo = yhi = 0.0;
     widen(&xlo, &xhi);
     widen(&ylo, &yhi);
-    fp = sbc_output_open(path);
+    fp = sbc_output_open(path, SBC_OUTPUT_SVG, "plot", err);
     if (!fp)
-        return sbc_fail(err, SBC_ERR_IO, "plot: cannot open '%s' for writing", path);
+        return err->status;
 #define PX(v) (LEFT + ((v) - xlo) / (xhi - xlo) * pw)
 #define PY(v) (TOP + (yhi - (v)) / (yhi - ylo) * ph)
     fprintf(fp, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" font-family=\"sans-serif\" "

@@ -31,9 +31,9 @@ sbc_status sbc_plot_rose(const char *path, const char *title, int n, const doubl
     }
     for (b = 0; b < bins; ++b)
         if (count[b] > top) top = count[b];
-    if (!(fp = sbc_output_open(path))) {
+    if (!(fp = sbc_output_open(path, SBC_OUTPUT_SVG, "rose", err))) {
         free(count);
-        return sbc_fail(err, SBC_ERR_IO, "rose: cannot open '%s' for writing", path);
+        return err->status;
     }
     fprintf(fp, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"520\" height=\"560\" font-family=\"sans-serif\" "
                 "font-size=\"13\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");

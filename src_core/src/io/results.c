@@ -1,55 +1,137 @@
+#define _POSIX_C_SOURCE 200809L
+/* servo_bc: the results file (results.h). */
 #include "sbc/results.h"
 #include "sbc/output_file.h"
+
+#include <errno.h>
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+#include <unistd.h>
 
 const char sbc_csv_header[] = "increment,F11,F12,F21,F22,P11,P12,P21,P22,sigma11,sigma12,sigma21,sigma22,"
                               "overlap_mean,rotation_mean,iterations,relax_steps,r_force,r_moment,r_deformation,"
                               "unbalanced,frame_residual,hill_mandel";
 
-sbc_status sbc_csv_open(FILE **fp, const char *path, sbc_error *err)
-{
-    *fp = sbc_output_open(path);
-    if (!*fp)
-        return sbc_fail(err, SBC_ERR_IO, "keyword 'file': cannot open '%s' for writing", path);
-    fprintf(*fp, "%s\n", sbc_csv_header);
-    fflush(*fp);
-    return SBC_OK;
-}
+static const char what[] = "keyword 'file'";
 
-sbc_status sbc_csv_append(FILE **fp, const char *path, sbc_error *err)
+/* text[0..n) appended whole or not at all: a failed write (disk full, file
+   size limit) is cut back to where it began, so that the file never ends in
+   a torn row */
+static sbc_status put(sbc_csv *csv, const char *text, size_t n, int increment, sbc_error *err)
 {
-    *fp = fopen(path, "a");
-    if (!*fp)
-        return sbc_fail(err, SBC_ERR_IO, "keyword 'file': cannot open '%s' for appending", path);
-    if (ftell(*fp) == 0) {
-        fprintf(*fp, "%s\n", sbc_csv_header);
-        fflush(*fp);
+    const int fd = fileno(csv->fp);
+    size_t done = 0;
+    off_t at;
+    if (fflush(csv->fp) != 0 || (at = lseek(fd, 0, SEEK_END)) < 0)
+        return sbc_fail(err, SBC_ERR_IO, "results file '%s': cannot write (%s)", csv->path, strerror(errno));
+    while (done < n) {
+        const ssize_t w = write(fd, text + done, n - done);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0) {
+            const int why = w < 0 ? errno : ENOSPC;
+            if (ftruncate(fd, at) == 0)
+                lseek(fd, at, SEEK_SET);
+            if (increment < 0)
+                return sbc_fail(err, SBC_ERR_IO, "results file '%s': cannot write the header (%s)", csv->path,
+                                strerror(why));
+            return sbc_fail(err, SBC_ERR_IO, "results file '%s': cannot write the row of increment %d (%s); the file "
+                            "ends with the rows before it", csv->path, increment, strerror(why));
+        }
+        done += (size_t)w;
     }
     return SBC_OK;
 }
 
-sbc_status sbc_csv_write(FILE *fp, const sbc_result *r, sbc_error *err)
+static sbc_status begin(sbc_csv *csv, const char *path, FILE *fp, sbc_error *err)
 {
-    /* one row, formatted whole and written in one call with its newline: a row
-       is complete only with its newline, so a write error cannot leave a torn
-       row that reads as a whole one (readers drop a last line without it) */
-    const double check[21] = {r->F[0], r->F[1], r->F[2], r->F[3], r->P[0], r->P[1], r->P[2], r->P[3],
+    char line[sizeof sbc_csv_header + 1];
+    csv->fp = fp;
+    snprintf(csv->path, sizeof csv->path, "%s", path);
+    snprintf(line, sizeof line, "%s\n", sbc_csv_header);
+    return put(csv, line, strlen(line), -1, err);
+}
+
+sbc_status sbc_csv_open(sbc_csv *csv, const char *path, sbc_error *err)
+{
+    FILE *fp = sbc_output_open(path, SBC_OUTPUT_RESULTS, what, err);
+    csv->fp = NULL;
+    if (!fp)
+        return err->status;
+    return begin(csv, path, fp, err);
+}
+
+sbc_status sbc_csv_resume(sbc_csv *csv, const char *path, int next, int *kept, sbc_error *err)
+{
+    FILE *fp = sbc_output_update(path, SBC_OUTPUT_RESULTS, what, err);
+    char line[4096];
+    long keep = 0;
+    int rows = 0, first = 1;
+    csv->fp = NULL;
+    if (kept) *kept = 0;
+    if (!fp)
+        return err->status;
+    while (fgets(line, sizeof line, fp)) {
+        const size_t len = strlen(line);
+        char *end;
+        long inc;
+        if (len == 0 || line[len - 1] != '\n')
+            break; /* a last line without its newline is no row */
+        if (first) {
+            first = 0;
+            keep = ftell(fp);
+            continue;
+        }
+        inc = strtol(line, &end, 10);
+        if (end == line || *end != ',' || inc >= next)
+            break;
+        keep = ftell(fp);
+        ++rows;
+    }
+    csv->fp = fp;
+    snprintf(csv->path, sizeof csv->path, "%s", path);
+    if (first) /* empty or new */
+        return begin(csv, path, fp, err);
+    if (fflush(fp) != 0 || ftruncate(fileno(fp), (off_t)keep) != 0 || fseek(fp, keep, SEEK_SET) != 0)
+        return sbc_fail(err, SBC_ERR_IO, "results file '%s': cannot cut it back to increment %d (%s)", path, next - 1,
+                        strerror(errno));
+    if (kept) *kept = rows;
+    return SBC_OK;
+}
+
+sbc_status sbc_csv_write(sbc_csv *csv, const sbc_result *r, sbc_error *err)
+{
+    const double check[20] = {r->F[0], r->F[1], r->F[2], r->F[3], r->P[0], r->P[1], r->P[2], r->P[3],
                               r->sigma[0], r->sigma[1], r->sigma[2], r->sigma[3], r->overlap_mean,
                               r->rotation_mean, r->r_force, r->r_moment, r->r_deformation, r->unbalanced,
-                              r->frame_residual, r->hill_mandel, 0.0};
+                              r->frame_residual, r->hill_mandel};
+    static const char *const names[20] = {"F11", "F12", "F21", "F22", "P11", "P12", "P21", "P22", "sigma11",
+                                          "sigma12", "sigma21", "sigma22", "overlap_mean", "rotation_mean",
+                                          "r_force", "r_moment", "r_deformation", "unbalanced", "frame_residual",
+                                          "hill_mandel"};
     char row[2048];
     int k, n = snprintf(row, sizeof row, "%d", r->increment);
     for (k = 0; k < 20; ++k)
         if (!isfinite(check[k]))
-            return sbc_fail(err, SBC_ERR_NUMERIC, "results file: increment %d has a non-finite value (column %d); the "
-                            "row is not written", r->increment, k + 2);
+            return sbc_fail(err, SBC_ERR_NUMERIC, "results file '%s': increment %d has %s = %g; the row is not "
+                            "written and the run stops", csv->path, r->increment, names[k], check[k]);
     for (k = 0; k < 4; ++k) n += snprintf(row + n, sizeof row - (size_t)n, ",%.17g", r->F[k]);
     for (k = 0; k < 4; ++k) n += snprintf(row + n, sizeof row - (size_t)n, ",%.17g", r->P[k]);
     for (k = 0; k < 4; ++k) n += snprintf(row + n, sizeof row - (size_t)n, ",%.17g", r->sigma[k]);
     n += snprintf(row + n, sizeof row - (size_t)n, ",%.17g,%.17g,%d,%ld,%.17g,%.17g,%.17g,%.6g,%.6g,%.6g\n",
                   r->overlap_mean, r->rotation_mean, r->iterations, r->relax_steps, r->r_force, r->r_moment,
                   r->r_deformation, r->unbalanced, r->frame_residual, r->hill_mandel);
-    if (n <= 0 || (size_t)n >= sizeof row || fwrite(row, 1, (size_t)n, fp) != (size_t)n || fflush(fp) != 0)
-        return sbc_fail(err, SBC_ERR_IO, "results file: write failed at increment %d", r->increment);
-    return SBC_OK;
+    if (n <= 0 || (size_t)n >= sizeof row)
+        return sbc_fail(err, SBC_ERR_IO, "results file '%s': the row of increment %d does not fit", csv->path,
+                        r->increment);
+    return put(csv, row, (size_t)n, r->increment, err);
+}
+
+void sbc_csv_close(sbc_csv *csv)
+{
+    if (csv->fp)
+        fclose(csv->fp);
+    csv->fp = NULL;
 }

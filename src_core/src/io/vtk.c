@@ -9,9 +9,7 @@ static FILE *open_file(const char *prefix, const char *what, int increment, char
 {
     FILE *fp;
     snprintf(name, len, "%s_%s_%06d.vtk", prefix, what, increment);
-    fp = sbc_output_open(name);
-    if (!fp)
-        sbc_fail(err, SBC_ERR_IO, "vtk: cannot open '%s' for writing", name);
+    fp = sbc_output_open(name, SBC_OUTPUT_VTK, "vtk", err);
     return fp;
 }
 

@@ -11,6 +11,8 @@
 #include "sbc/plot.h"
 #include "sbc/results.h"
 #include "sbc/settings.h"
+#include "sbc/time_step.h"
+#include "sbc/version.h"
 #include "sbc/vtk.h"
 #include "script_state.h"
 #include "io/words.h"
@@ -183,7 +185,7 @@ typedef struct run_state {
     sbc_controller *ctl;
     double *mass;
     double *fx; /* [2Q] the frame's centres for confine.h, m */
-    FILE *csv;
+    sbc_csv csv;
     sbc_result *rows;
     int nrows, cap;
     int increment_now; /* the increment in progress */
@@ -225,8 +227,7 @@ static void run_free(run_state *r)
     free(r->mass);
     free(r->fx);
     free(r->rows);
-    if (r->csv)
-        fclose(r->csv);
+    sbc_csv_close(&r->csv);
 }
 
 static sbc_status keep_row(run_state *r, const sbc_result *row, sbc_error *err)
@@ -319,6 +320,8 @@ static sbc_status cmd_run(script *s, sbc_error *err)
                         "servo_bc (line %d): keyword 'frame' names a host group '%s'; the embedded runner detects "
                         "the frame from the packing",
                         s->servo_line, s->settings.frame_group);
+    if ((st = sbc_script_outputs_check(s, err)) != SBC_OK)
+        return st;
 
     if ((st = sbc_packing_distinct(s->packing.n, s->packing.x, s->packing.r, err)) != SBC_OK ||
         (st = sbc_frame_detect_packing(&r.frame, &s->packing, err)) != SBC_OK)
@@ -338,16 +341,11 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         return err->status;
     }
     dtc = sbc_engine_critical_dt(r.engine);
-    if (s->dt > dtc) {
+    if ((st = sbc_time_step_bound(s->dt, dtc, s->cohesive ? "2 sqrt(M_min / (2 kn)) or 2 sqrt(I_min / (2 kr))"
+                                                          : "2 sqrt(M_min / (2 kn))",
+                                  s->settings.max_relax_steps, err)) != SBC_OK) {
         run_free(&r);
-        return sbc_fail(err, SBC_ERR_INPUT, "timestep %g s exceeds the critical step %g s = 2 sqrt(M_min / (2 kn))%s",
-                        s->dt, dtc, s->cohesive ? " or 2 sqrt(I_min / (2 kr))" : "");
-    }
-    if (s->dt * (double)s->settings.max_relax_steps < dtc) {
-        run_free(&r);
-        return sbc_fail(err, SBC_ERR_INPUT, "timestep %g s: max_relax_steps %ld steps of it do not span one critical "
-                        "step %g s, so no relaxation could end; raise the time step or max_relax_steps",
-                        s->dt, s->settings.max_relax_steps, dtc);
+        return st;
     }
     sbc_engine_set_frame(r.engine, &r.frame);
     if (s->settings.seal && sbc_engine_seal(r.engine, err) != SBC_OK) {
@@ -374,9 +372,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         run_free(&r);
         return st;
     }
-    if (s->settings.file[0] && ((st = sbc_script_files_check(s, s->settings.file, "servo_bc: keyword 'file':", err)) !=
-                                    SBC_OK ||
-                                (!s->check && (st = sbc_csv_open(&r.csv, s->settings.file, err)) != SBC_OK))) {
+    if (s->settings.file[0] && !s->check && (st = sbc_csv_open(&r.csv, s->settings.file, err)) != SBC_OK) {
         run_free(&r);
         return st;
     }
@@ -390,8 +386,8 @@ static sbc_status cmd_run(script *s, sbc_error *err)
         return SBC_OK;
     }
     if (s->log)
-        fprintf(s->log, "servo_bc %s: %d particles, frame of %d, %d increments, dt = %g s (critical %g s)\n",
-                sbc_bc_name(s->settings.bc), s->packing.n, r.frame.n, sbc_settings_total_increments(&s->settings), s->dt, dtc);
+        fprintf(s->log, "servo_bc %s (servo-bc %s): %d particles, frame of %d, %d increments, dt = %g s (critical %g s)\n",
+                sbc_bc_name(s->settings.bc), sbc_version(), s->packing.n, r.frame.n, sbc_settings_total_increments(&s->settings), s->dt, dtc);
     if (s->log && s->cohesive)
         fprintf(s->log, "servo_bc: %d cohesive bonds between the pairs touching at the start\n",
                 sbc_engine_get_view(r.engine).bonds_initial);
@@ -419,7 +415,7 @@ static sbc_status cmd_run(script *s, sbc_error *err)
             if ((st = check_confined(&r.frame, r.engine, r.fx, row->increment, err)) != SBC_OK) break;
             r.increment_now = row->increment + 1;
             if ((st = keep_row(&r, row, err)) != SBC_OK) break;
-            if (r.csv && (st = sbc_csv_write(r.csv, row, err)) != SBC_OK) break;
+            if (r.csv.fp && (st = sbc_csv_write(&r.csv, row, err)) != SBC_OK) break;
             if ((st = write_snapshots(s, r.engine, &r.frame, row->increment, ev == SBC_EVENT_FINISHED, err)) != SBC_OK) break;
             if (s->log)
                 fprintf(s->log, "increment %d/%d  F12 %+.5f  sigma11 %+.6e  sigma12 %+.6e N/m  steps %ld  HM %.1e\n",

@@ -292,8 +292,8 @@ static sbc_status cmd_run(script *s, struct bpm_script *b, sbc_error *err)
         fprintf(s->log, "bpm: warning: the time step is above the estimate of eq. 48\n");
     if (s->check)
         goto done;
-    if (b->series[0] && !(series = sbc_output_open(b->series))) {
-        st = sbc_fail(err, SBC_ERR_IO, "test: cannot write '%s'", b->series);
+    if (b->series[0] && !(series = sbc_output_open(b->series, SBC_OUTPUT_SERIES, "test: keyword 'file'", err))) {
+        st = err->status;
         goto done;
     }
     c0 = clock();

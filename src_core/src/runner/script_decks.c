@@ -1,3 +1,4 @@
+#define _POSIX_C_SOURCE 200809L
 /* The runner's case as input for every host (`servo-bc --decks DIR CASE`):
  * one packing written in each host's format, and the embedded script, the
  * LAMMPS deck, the LIGGGHTS script and the YADE script that run the same
@@ -12,6 +13,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* The shortest of %.15g, %.17g that reads back as v (1e-06, not
  * 9.9999999999999995e-07); the temporary lives to the end of the full
@@ -47,8 +49,38 @@ static sbc_status open_in(FILE **fp, const char *dir, const char *name, char *pa
 {
     if ((size_t)snprintf(path, size, "%s/%s", dir, name) >= size)
         return sbc_fail(err, SBC_ERR_INPUT, "--decks: directory name '%s' is too long", dir);
-    if (!(*fp = sbc_output_open(path)))
-        return sbc_fail(err, SBC_ERR_IO, "--decks: cannot open '%s' for writing", path);
+    if (!(*fp = sbc_output_open(path, SBC_OUTPUT_DECK, "--decks", err)))
+        return err->status;
+    return SBC_OK;
+}
+
+/* DIR is a folder name, not a file, and none of the files --decks writes in
+   it is the script or a file the script read or wrote, or a file servo_bc
+   did not write: checked before anything is written */
+static sbc_status decks_folder(script *s, const char *dir, sbc_error *err)
+{
+    static const char *const decks[8][2] = {
+        {"packing.txt", "p"}, {"packing.lammps.data", "p"}, {"packing.liggghts.data", "p"}, {"packing.yade", "p"},
+        {"embedded.sbc", "d"}, {"lammps.in", "d"}, {"liggghts.in", "d"}, {"yade.py", "d"}};
+    char path[2 * SBC_NAME_LEN];
+    struct stat st;
+    sbc_status status;
+    int k;
+    if (!dir[0])
+        return sbc_fail(err, SBC_ERR_INPUT, "--decks: the folder name is empty (expected a folder to write the "
+                        "hosts' inputs into)");
+    if (strlen(dir) >= SBC_NAME_LEN)
+        return sbc_fail(err, SBC_ERR_INPUT, "--decks: folder name '%.40s...' is too long (at most %d characters)", dir,
+                        SBC_NAME_LEN - 1);
+    if (stat(dir, &st) == 0 && !S_ISDIR(st.st_mode))
+        return sbc_fail(err, SBC_ERR_INPUT, "--decks: '%s' exists and is not a folder", dir);
+    for (k = 0; k < 8; ++k) {
+        snprintf(path, sizeof path, "%s/%s", dir, decks[k][0]);
+        if ((status = sbc_script_files_check(s, path, "--decks:", err)) != SBC_OK ||
+            (status = sbc_output_owned(path, decks[k][1][0] == 'p' ? SBC_OUTPUT_PACKING : SBC_OUTPUT_DECK, "--decks",
+                                       err)) != SBC_OK)
+            return status;
+    }
     return SBC_OK;
 }
 
@@ -196,11 +228,16 @@ sbc_status sbc_script_write_decks(script *s, const char *dir, sbc_error *err)
     if (s->settings.frame_group[0])
         return sbc_fail(err, SBC_ERR_INPUT, "--decks: servo_bc keyword 'frame' names a host group '%s'; the decks "
                                             "take the frame of the packing", s->settings.frame_group);
+    if (s->decks_line)
+        return sbc_fail(err, SBC_ERR_INPUT, "--decks: a second run (the first is on line %d); --decks writes the case "
+                        "of one run into '%s': give each run a script of its own", s->decks_line, dir);
+    if ((st = decks_folder(s, dir, err)) != SBC_OK)
+        return st;
+    s->decks_line = s->line;
     for (k = 0; k < s->packing.n; ++k)
         rmin = fmin(rmin, s->packing.r[k]), rmax = fmax(rmax, s->packing.r[k]);
     for (k = 0; k < 4 && st == SBC_OK; ++k) {
-        if (snprintf(path, sizeof path, "%s/%s", dir, file[k]) >= (int)sizeof path)
-            return sbc_fail(err, SBC_ERR_INPUT, "--decks: directory name '%s' is too long", dir);
+        snprintf(path, sizeof path, "%s/%s", dir, file[k]);
         st = sbc_script_write_packing_as(s, format[k], path, err);
     }
     /* neighbour skin R_min / 4, as the hand-written decks */

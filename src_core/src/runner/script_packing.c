@@ -1,5 +1,6 @@
 /* Runner commands on packings: generate, write_packing, rose. */
 #include "script_state.h"
+#include "sbc/output_file.h"
 
 #include "sbc/frame.h"
 #include "sbc/generate.h"
@@ -61,6 +62,8 @@ sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
 sbc_status sbc_script_write_packing_as(script *s, const char *format, const char *path, sbc_error *err)
 {
     sbc_status checked = sbc_script_files_check(s, path, "write_packing:", err);
+    if (checked == SBC_OK && s->check)
+        checked = sbc_output_probe(path, SBC_OUTPUT_PACKING, "write_packing", err);
     if (checked != SBC_OK)
         return checked;
     sbc_frame frame;
@@ -121,9 +124,13 @@ sbc_status sbc_script_rose(script *s, int nw, char **w, sbc_error *err)
         if (k == 0 || s->packing.r[k] < rmin) rmin = s->packing.r[k];
     if ((st = sbc_packing_contact_angles(&s->packing, 1e-6 * rmin, &angle, &n, err)) != SBC_OK)
         return st;
-    st = s->check ? sbc_script_files_check(s, w[1], "rose:", err)
-                  : sbc_plot_rose(w[1], "Contact orientations", n, angle, 36, err);
+    st = sbc_script_files_check(s, w[1], "rose:", err);
+    if (st == SBC_OK)
+        st = s->check ? sbc_output_probe(w[1], SBC_OUTPUT_SVG, "rose", err)
+                      : sbc_plot_rose(w[1], "Contact orientations", n, angle, 36, err);
     free(angle);
+    if (st == SBC_OK && !s->check)
+        sbc_script_files_note(s, w[1], "rose diagram");
     if (st == SBC_OK && s->log)
         fprintf(s->log, "rose: %d contacts -> %s\n", n, w[1]);
     return st;

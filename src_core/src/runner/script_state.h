@@ -16,6 +16,7 @@ typedef struct sbc_file_id {
     unsigned long long dev, ino;
     int line;
     char role[24];
+    char path[SBC_NAME_LEN];
 } sbc_file_id;
 
 #define SBC_SCRIPT_FILES 64
@@ -39,6 +40,7 @@ typedef struct script {
     char plot[SBC_NAME_LEN];
     char servo_words[2048]; /* the servo_bc words without 'file NAME' */
     const char *decks_dir;  /* --decks: 'run' writes the hosts' inputs here instead */
+    int decks_line;         /* the line of the run whose decks were written (one run per --decks) */
     int check;              /* --check: every command is checked, nothing is run or written */
     struct bpm_script *bpm; /* after 'dimension 3': the 3D bonded particle model (script_bpm.c) */
     int actions;            /* commands that computed or wrote something (run, write_packing, rose) */
@@ -52,6 +54,10 @@ typedef struct script {
  * over the script or a remembered file. */
 void sbc_script_files_note(script *s, const char *path, const char *role);
 sbc_status sbc_script_files_check(script *s, const char *path, const char *what, sbc_error *err);
+/* Before a run: its outputs (results file, plot, the vtk and network
+ * snapshots) name neither the script, nor a file read or written before,
+ * nor one another; with --check, each is probed (output_file.h). */
+sbc_status sbc_script_outputs_check(script *s, sbc_error *err);
 
 /* "cmd: missing values / unexpected extra value" unless nw == want. */
 sbc_status sbc_script_expect_count(int nw, char **w, int want, const char *usage, sbc_error *err);

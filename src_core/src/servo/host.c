@@ -18,7 +18,7 @@ struct sbc_host {
     sbc_settings settings;
     sbc_frame frame;
     sbc_controller *ctl;
-    FILE *csv;
+    sbc_csv csv;
     sbc_error err;
     int pending; /* a converged increment's row, written once sbc_host_confined passes it */
     sbc_fire_state fire; /* damping fire */
@@ -64,7 +64,7 @@ static int write_pending(sbc_host *h)
     if (!h->pending)
         return 0;
     h->pending = 0;
-    return h->csv && sbc_csv_write(h->csv, sbc_controller_result(h->ctl), &h->err) != SBC_OK;
+    return h->csv.fp && sbc_csv_write(&h->csv, sbc_controller_result(h->ctl), &h->err) != SBC_OK;
 }
 
 static sbc_host *fail_create(sbc_host *h, const sbc_error *err, char *msg, size_t cap)
@@ -182,13 +182,12 @@ void sbc_host_free(sbc_host *h)
     if (h->ctl)
         write_pending(h);
     sbc_controller_free(h->ctl);
+    sbc_csv_close(&h->csv);
     sbc_frame_free(&h->frame);
     sbc_seal_free(&h->seal);
     free(h->r);
     free(h->slot);
     free(h->reaction);
-    if (h->csv)
-        fclose(h->csv);
     free(h);
 }
 

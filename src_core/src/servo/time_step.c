@@ -4,29 +4,40 @@
 #include <math.h>
 #include <stdio.h>
 
+sbc_status sbc_time_step_bound(double dt, double dtc, const char *formula, long max_relax_steps, sbc_error *err)
+{
+    if (!(dt > 0.0) || !isfinite(dt))
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: time step %g s (expected a finite time step > 0)", dt);
+    if (dt > dtc)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: time step %g s exceeds the critical step %g s = %s; lower the "
+                        "time step to %g s or less", dt, dtc, formula, SBC_TIME_STEP_FRACTION * dtc);
+    if (dt > SBC_TIME_STEP_FRACTION * dtc * (1.0 + 1e-5)) /* a fraction rounded to 5 digits passes */
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: time step %g s is %.3g of the critical step %g s = %s; "
+                        "relaxations converge only up to %g of it (a disc with several contacts is stable only below "
+                        "a fraction of a contact pair's step: 1/sqrt(2) with the four contacts of a square lattice; "
+                        "docs/stability.md); lower the time step to %g s or less", dt, dt / dtc, dtc, formula,
+                        SBC_TIME_STEP_FRACTION, SBC_TIME_STEP_FRACTION * dtc);
+    if (dt * (double)max_relax_steps < dtc)
+        return sbc_fail(err, SBC_ERR_INPUT,
+                        "servo_bc: time step %g s: max_relax_steps %ld steps of it do not span one critical step %g s "
+                        "= %s, so no relaxation could end; raise the time step or max_relax_steps",
+                        dt, max_relax_steps, dtc, formula);
+    return SBC_OK;
+}
+
 sbc_status sbc_time_step_check(double dt, double kn, double mass_min, long index, long max_relax_steps,
                                sbc_error *err)
 {
-    char who[96] = "";
-    double dtc;
+    char formula[160];
     if (!(dt > 0.0) || !isfinite(dt))
         return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: time step %g s (expected a finite time step > 0)", dt);
     if (!(kn > 0.0) || !(mass_min > 0.0))
         return SBC_OK;
-    dtc = 2.0 * sqrt(mass_min / (2.0 * kn));
     if (index >= 0)
-        snprintf(who, sizeof who, " of particle %ld (mass %g kg)", index, mass_min);
+        snprintf(formula, sizeof formula, "2 sqrt(M / (2 kn)) of particle %ld (mass %g kg) at kn %g N/m", index,
+                 mass_min, kn);
     else
-        snprintf(who, sizeof who, " of the lightest particle (mass %g kg)", mass_min);
-    if (dt > dtc)
-        return sbc_fail(err, SBC_ERR_INPUT,
-                        "servo_bc: time step %g s exceeds the critical step %g s = 2 sqrt(M / (2 kn))%s at kn %g N/m; "
-                        "lower the time step, or check that mass",
-                        dt, dtc, who, kn);
-    if (dt * (double)max_relax_steps < dtc)
-        return sbc_fail(err, SBC_ERR_INPUT,
-                        "servo_bc: time step %g s: max_relax_steps %ld steps of it do not span one critical step %g s "
-                        "= 2 sqrt(M / (2 kn))%s, so no relaxation could end; raise the time step or max_relax_steps",
-                        dt, max_relax_steps, dtc, who);
-    return SBC_OK;
+        snprintf(formula, sizeof formula, "2 sqrt(M / (2 kn)) of the lightest particle (mass %g kg) at kn %g N/m",
+                 mass_min, kn);
+    return sbc_time_step_bound(dt, 2.0 * sqrt(mass_min / (2.0 * kn)), formula, max_relax_steps, err);
 }
