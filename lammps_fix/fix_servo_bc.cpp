@@ -60,6 +60,11 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
     fail(std::string("requires units si (its outputs are in m, N/m and s; this script has units ") +
          update->unit_style + ")");
   if (domain->dimension != 2) fail("this version imposes 2d boundary conditions; the box is 3d (use dimension 2)");
+  {
+    char note[SBC_ERROR_LEN];
+    if (comm->me == 0 && sbc_settings_ignored_message(&settings, note, sizeof note))
+      error->warning(FLERR, (std::string("Fix servo_bc: ") + note).c_str());
+  }
 
   vector_flag = 1;
   size_vector = VEC_SIZE;
@@ -330,7 +335,7 @@ void FixServoBC::post_run()
     char text[256];
     std::snprintf(text, sizeof text,
                   "Fix servo_bc: the run ended at increment %d of %d: the loading path is unfinished (run more "
-                  "steps; f_%s[17] is 1 when it is done)",
+                  "steps; f_%s[18] is 1 when it is done)",
                   sbc_controller_increment(ctl), sbc_settings_total_increments(&settings), id);
     error->warning(FLERR, text);
   }

@@ -78,6 +78,8 @@ def _library():
         'sbc_host_command_free': (ctypes.POINTER(ctypes.c_ubyte), [P]),
         'sbc_host_result': (None, [P, pd]),
         'sbc_host_damping': (I, [P, pd, pd]),
+        'sbc_host_warning': (I, [P, ctypes.c_char_p, ctypes.c_size_t]),
+        'sbc_version': (ctypes.c_char_p, []),
         'sbc_host_fire_mix': (None, [P, pd, pd]),
         'sbc_host_confined': (I, [P, pd, I, ctypes.POINTER(L), pd, pd]),
         'sbc_bpm_host_create': (P, [ctypes.c_char_p, D, D, D, pd, I, pd, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
@@ -193,6 +195,8 @@ def engines(servo, kn, ks, contacts=None):
     without it, docs/yade/servo_bc.md).
     contacts: a Cohesive object, which owns every contact between its bodies: then YADE
     detects no contact at all (no collider, no InteractionLoop) and its engine computes them."""
+    if isinstance(servo, ServoBC):    # a ServoBC made without kn takes the contact law's
+        servo._bind(contacts.kn if contacts is not None else kn)
     if contacts is not None:
         return [ForceResetter(), contacts.engine, servo.engine,
                 NewtonIntegrator(damping=servo.damping, label='servo_bc_newton')]
@@ -209,6 +213,29 @@ def engines(servo, kn, ks, contacts=None):
 _instances = []
 
 
+def _engines_kn():
+    """kn (N/m) of the contact law in O.engines (an Ip2_FrictMat_FrictMat_FrictPhys whose kn
+    is a MatchMaker of one value, as engines() builds it), or None."""
+    for engine in O.engines:
+        if isinstance(engine, InteractionLoop):
+            for functor in engine.physDispatcher.functors:
+                maker = getattr(functor, 'kn', None)
+                if isinstance(functor, Ip2_FrictMat_FrictMat_FrictPhys) and maker is not None and maker.algo == 'val':
+                    return float(maker.val)
+    return None
+
+
+def version():
+    """The version of the servo_bc core this module drives (CHANGELOG.md)."""
+    return _core().sbc_version().decode()
+
+
+def __getattr__(name):
+    if name == '__version__':
+        return version()
+    raise AttributeError(name)
+
+
 class ServoBC(object):
     """The servo_bc engine. words: the servo_bc words (BC first), the grammar of every host;
     or the words as keyword arguments (ServoBC('P', ids, dt, kn, F=(1, .1, 0, 1), increments=10)).
@@ -220,21 +247,47 @@ class ServoBC(object):
     contacts: a Cohesive object that owns the bodies' contacts (Ep and the contact sums of
     relax.h are then its own, not YADE's interactions')."""
 
-    def __init__(self, words, bodies, dt, kn, done=None, contacts=None, **keywords):
-        lib = _core()
+    def __init__(self, words, bodies, dt, kn=None, done=None, contacts=None, **keywords):
+        if callable(kn) and done is None:    # the 0.1 call form ServoBC(words, bodies, dt, done)
+            kn, done = None, kn
         for key, value in keywords.items():
             values = value if isinstance(value, (tuple, list)) else (value,)
             words += ' %s %s' % (key, ' '.join(str(v) for v in values))
         self.words = words
         self.bodies = list(bodies)
         self.dt = float(dt)
-        self.kn = float(kn)
+        self.kn = None
         self.done = done
         self.contacts = contacts
         self.rows = []            # one dict per converged increment (yade.plot: see plot_data)
         self.error = None
         self.finished = False
         self.steps = 0
+        self._h = None
+        _instances.append(self)
+        # the PyRunner's command runs in __main__: a bound method placed there
+        # costs a name lookup per step instead of an import and an index
+        name = '_servo_bc_step_%d' % (len(_instances) - 1)
+        setattr(sys.modules['__main__'], name, self.step)
+        self.engine = PyRunner(command='%s()' % name, iterPeriod=1, label='servo_bc_%d' % (len(_instances) - 1))
+        if kn is None and contacts is not None:
+            kn = contacts.kn
+        if kn is None:
+            kn = _engines_kn()
+        if kn is not None:
+            self._bind(kn)
+
+    def _bind(self, kn):
+        """The core's controller, once the normal contact stiffness kn (N/m) is known: from
+        ServoBC's kn, the Cohesive contacts, the contact law of O.engines, or engines()."""
+        if self._h is not None:
+            if float(kn) != self.kn:
+                raise ServoBCError('servo_bc: engines() was given kn %g N/m; this ServoBC runs with kn %g N/m'
+                                   % (float(kn), self.kn))
+            return
+        lib = _core()
+        words = self.words
+        self.kn = float(kn)
         self._since_check = 0
         self._started = self._reported = time.time()
         n = len(self.bodies)
@@ -288,12 +341,11 @@ class ServoBC(object):
         self._seal_xy = (ctypes.c_double * (2 * n))()
         self._seal_f = (ctypes.c_double * (2 * n))()
         self._seal_energy = ctypes.c_double(0.0)
-        _instances.append(self)
-        # the PyRunner's command runs in __main__: a bound method placed there
-        # costs a name lookup per step instead of an import and an index
-        name = '_servo_bc_step_%d' % (len(_instances) - 1)
-        setattr(sys.modules['__main__'], name, self.step)
-        self.engine = PyRunner(command='%s()' % name, iterPeriod=1, label='servo_bc_%d' % (len(_instances) - 1))
+        print('servo_bc %s: %s on %d bodies, frame of %d, kn %g N/m' % (version(), words.split()[0], n, self.Q,
+                                                                          self.kn), flush=True)
+        warning = ctypes.create_string_buffer(512)
+        if lib.sbc_host_warning(self._h, warning, 512):
+            print('servo_bc: WARNING: %s' % warning.value.decode(), flush=True)
         self._apply_commands()
 
     def _check_bodies(self):
@@ -421,6 +473,10 @@ class ServoBC(object):
         if self.finished:
             return
         try:
+            if self._h is None:
+                raise ServoBCError('servo_bc: ServoBC has no normal contact stiffness kn (N/m): pass kn= to '
+                                   'ServoBC, or build the engine list with servo_bc.engines(servo, kn, ks), '
+                                   'which gives it the contact law\'s')
             self._step()
         except ServoBCError as e:
             self._stop(e)

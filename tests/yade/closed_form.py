@@ -163,5 +163,40 @@ except servo_bc.ServoBCError as e:
     check(('increment 0: interior particle %d escaped through a gap between frame particles (its centre (0.0105, '
            '0.004) m' % centre) in str(e) and lines == 1, 'escaped disc: %s; the CSV keeps its header alone' % e)
 
+# the documented 0.1 call forms (CHANGELOG.md): ServoBC(words, ids, dt) takes kn from
+# the contact law engines() builds, and a fourth positional argument may be `done`;
+# the rows equal those of the kn form to the last digit
+def rows_of(make):
+    servo_bc.O.reset()
+    ids, _ = servo_bc.load_packing(packing, 2e3, 1e4, 0.0, 0.4)
+    servo = make(ids)
+    servo_bc.O.engines = servo_bc.engines(servo, kn=1e4, ks=0.0)
+    servo.run()
+    return servo, [[row[c] for c in servo_bc.COLUMNS] for row in servo.rows]
+
+
+WORDS = 'D F 1.002 0 0 0.997 increments 2 relax 1e-22 20'
+_, with_kn = rows_of(lambda ids: servo_bc.ServoBC(WORDS, ids, 1e-5, 1e4))
+_, old_form = rows_of(lambda ids: servo_bc.ServoBC(WORDS, ids, 1e-5))
+called = []
+servo, old_done = rows_of(lambda ids: servo_bc.ServoBC(WORDS, ids, 1e-5, lambda s: called.append(s)))
+check(len(with_kn) == 3 and old_form == with_kn and old_done == with_kn and called == [servo] and servo.kn == 1e4,
+      'ServoBC(words, ids, dt) and ServoBC(words, ids, dt, done): kn %g N/m from engines(), %d rows equal to the '
+      'kn form, done called %d time(s)' % (servo.kn, len(old_form), len(called)))
+# no contact law known: the run stops with a ServoBCError that names kn
+servo_bc.O.reset()
+ids, _ = servo_bc.load_packing(packing, 2e3, 1e4, 0.0, 0.4)
+servo = servo_bc.ServoBC(WORDS, ids, 1e-5)
+servo_bc.O.engines = [servo_bc.ForceResetter(), servo.engine, servo_bc.NewtonIntegrator()]
+try:
+    servo.run(max_steps=10)
+    check(False, 'ServoBC without kn and without engines(): ran')
+except servo_bc.ServoBCError as e:
+    check('no normal contact stiffness kn' in str(e), 'ServoBC without kn and without engines(): %s' % e)
+version = servo_bc.__version__
+check(len(version.split('.')) == 3 and all(p.isdigit() for p in version.split('.')),
+      'servo_bc.__version__ %s' % version)
+print('yade version: %s' % version)
+
 print('%d passed, %d failed' % (passed, failed))
 sys.exit(1 if failed else 0)

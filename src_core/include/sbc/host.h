@@ -27,6 +27,10 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
                           const int *list, double dt, double kn, char *msg, size_t cap);
 void sbc_host_free(sbc_host *h);
 
+/* A warning about the words (sbc_settings_ignored_message): 1 with the
+ * message in msg [cap], 0 when there is none. */
+int sbc_host_warning(const sbc_host *h, char *msg, size_t cap);
+
 /* The damping the words ask for (sbc_damping of settings.h: 0 none, 1 eq.
  * 10, 2 FIRE), which a host applies itself; alpha, beta: the factors of eq.
  * 10 (0 for none; with FIRE they damp the free frame rotations of (T)). */

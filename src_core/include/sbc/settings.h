@@ -7,6 +7,8 @@
 #ifndef SBC_SETTINGS_H
 #define SBC_SETTINGS_H
 
+#include <stddef.h>
+
 #include "sbc/relax.h"
 #include "sbc/status.h"
 
@@ -73,6 +75,8 @@ typedef struct sbc_settings {
     int stress_increments;         /* i_vs: increments of the stress stage (all stress keywords alike) */
     char frame_group[SBC_NAME_LEN]; /* host group of frame particles; "" = detect */
     char file[SBC_NAME_LEN];        /* CSV path; "" = none */
+    char ignored[192];              /* the servo's keywords given to (D), which has no servo (hosts warn);
+                                       "" = none */
 } sbc_settings;
 
 /* The defaults listed above: the `balanced` preset, and paper Table 4 for
@@ -95,6 +99,10 @@ double sbc_settings_preset_accuracy(const char *name);
  * the offending value and what was expected, e.g.
  *   keyword 'relax': tolE value 'abc' is not a number (expected a real > 0) */
 sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *words, sbc_error *err);
+
+/* The warning a host prints when the words give (D) the servo's keywords
+ * (settings.ignored): 1 with the message in out, 0 when there is none. */
+int sbc_settings_ignored_message(const sbc_settings *s, char *out, size_t cap);
 
 /* Total increments of the loading path: increments, plus the stress stage
  * of a mixed BC (i_vs + i_tot - i_vs in Table 5). */

@@ -388,6 +388,11 @@ static sbc_status cmd_run(script *s, sbc_error *err)
     if (s->log)
         fprintf(s->log, "servo_bc %s (servo-bc %s): %d particles, frame of %d, %d increments, dt = %g s (critical %g s)\n",
                 sbc_bc_name(s->settings.bc), sbc_version(), s->packing.n, r.frame.n, sbc_settings_total_increments(&s->settings), s->dt, dtc);
+    {
+        char note[SBC_ERROR_LEN];
+        if (s->log && sbc_settings_ignored_message(&s->settings, note, sizeof note))
+            fprintf(s->log, "WARNING: %s\n", note);
+    }
     if (s->log && s->cohesive)
         fprintf(s->log, "servo_bc: %d cohesive bonds between the pairs touching at the start\n",
                 sbc_engine_get_view(r.engine).bonds_initial);

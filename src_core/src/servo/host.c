@@ -191,6 +191,11 @@ void sbc_host_free(sbc_host *h)
     free(h);
 }
 
+int sbc_host_warning(const sbc_host *h, char *msg, size_t cap)
+{
+    return sbc_settings_ignored_message(&h->settings, msg, cap);
+}
+
 int sbc_host_damping(const sbc_host *h, double *alpha, double *beta)
 {
     *alpha = h->settings.damping ? h->settings.alpha : 0.0;

@@ -383,6 +383,21 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
     /* absolute tolerances given without tol_relative are meant absolute */
     if (st == SBC_OK && !was_met(m, "tol_relative") && (was_met(m, "tol_force") || was_met(m, "tol_moment")))
         s->tol_relative = 0.0;
+    if (st == SBC_OK && was_met(m, "relax") && was_met(m, "balance"))
+        st = sbc_fail(err, SBC_ERR_INPUT, "keywords 'relax' and 'balance' both choose when a relaxation is over "
+                      "(Ek/Ep, or the force balance); give one");
+    /* (D) puts the frame where F X says: the servo's words have nothing to act on */
+    s->ignored[0] = '\0';
+    if (st == SBC_OK && s->bc == SBC_BC_D) {
+        static const char *const servo_keys[] = {"gain_force", "gain_moment", "gain_deformation", "tol_force",
+                                                 "tol_moment", "tol_deformation", "tol_relative", "predict",
+                                                 "update", "max_iterations"};
+        size_t k2, used = 0;
+        for (k2 = 0; k2 < sizeof servo_keys / sizeof servo_keys[0]; ++k2)
+            if (was_met(m, servo_keys[k2]))
+                used += (size_t)snprintf(s->ignored + used, used < sizeof s->ignored ? sizeof s->ignored - used : 0,
+                                         "%s%s", used ? " " : "", servo_keys[k2]);
+    }
     if (st == SBC_OK && s->bc == SBC_BC_MIXED)
         st = sbc_mixed_validate(s, err);
     return st;
@@ -416,6 +431,15 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
     s->bc = bc;
     sbc_settings_preset(s, m.accuracy);
     return parse_pass(s, nwords, words, 0, &m, err);
+}
+
+int sbc_settings_ignored_message(const sbc_settings *s, char *out, size_t cap)
+{
+    if (!s->ignored[0])
+        return 0;
+    snprintf(out, cap, "servo_bc D: the keywords %s have no effect: they set the servo-control of P, T and mixed, and "
+             "D puts the frame at F X directly (docs/servo_bc.md)", s->ignored);
+    return 1;
 }
 
 int sbc_settings_total_increments(const sbc_settings *s)
