@@ -15,6 +15,7 @@ for what in "$@"; do
       command -v cc >/dev/null || need+=(gcc libc6-dev)
       command -v make >/dev/null || need+=(make)
       command -v valgrind >/dev/null || need+=(valgrind)
+      command -v python3 >/dev/null || need+=(python3)   # tests/reliability.sh holds a file lock with it
       ;;
     lammps)
       command -v lmp >/dev/null || need+=(lammps)

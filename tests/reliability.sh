@@ -20,11 +20,19 @@ cp "$here"/reliability/* "$TMP"/
 chmod u+w "$TMP"/*
 
 # the runner reproducers whose input is legitimate: the run must succeed
-legitimate="runner_acc_as_value2.sbc"
+legitimate="runner_acc_as_value2.sbc runner_r3_D_ignores_P_keywords.sbc"
 for f in "$TMP"/runner_*.sbc; do
   name=$(basename "$f")
+  # the inputs (scripts, packings, restart blocks) must be there after the run, unchanged
+  before=$(cd "$TMP" && find . -maxdepth 1 -type f \( -name '*.sbc' -o -name '*.txt' -o -name '*.bin' \) | sort |
+           xargs md5sum)
   (cd "$TMP" && timeout 120 "$runner" "$name" > "$TMP/$name.out" 2> "$TMP/$name.err")
   rc=$?
+  after=$(cd "$TMP" && echo "$before" | awk '{ print $2 }' | xargs md5sum 2>&1)
+  if [ "$before" != "$after" ]; then
+    no "$name: the run changed an input:"; diff <(echo "$before") <(echo "$after") | head -4
+    continue
+  fi
   message=$(grep -m1 "^ERROR: " "$TMP/$name.err" | cut -c1-160)
   if [[ " $legitimate " == *" $name "* ]]; then
     csv=$(sed -n 's/.*results: //p' "$TMP/$name.out")
@@ -39,6 +47,50 @@ for f in "$TMP"/runner_*.sbc; do
     no "$name: exit $rc (expected 1-125 with an ERROR line)"; tail -n 2 "$TMP/$name.err"
   fi
 done
+
+# round 3 (docs/reliability.md): the runner's files, each refused by name with the inputs intact
+refused_by() {  # LABEL EXPECTED-TEXT RC ERRFILE [FILE-THAT-MUST-BE-INTACT SUM]
+  local label=$1 expect=$2 rc=$3 errfile=$4
+  if [ "$rc" -ge 1 ] && [ "$rc" -le 125 ] && grep -q "^ERROR: .*$expect" "$errfile" &&
+     { [ -z "${5:-}" ] || [ "$(md5sum < "$5")" = "$6" ]; }; then
+    ok "$label: exit $rc, $(grep -m1 '^ERROR: ' "$errfile" | cut -c1-150)"
+  else
+    no "$label: exit $rc (expected an ERROR with '$expect'$([ -n "${5:-}" ] && echo ", $5 intact"))"; tail -n 2 "$errfile"
+  fi
+}
+(cd "$TMP" && "$runner" --decks '' r3_decks_empty_dir.sbc > /dev/null 2> decks_empty.err); rc=$?
+refused_by "--decks ''" "the folder name is empty" $rc "$TMP/decks_empty.err"
+(cd "$TMP" && "$runner" --decks two r3_decks_two_runs.sbc > /dev/null 2> decks_two.err); rc=$?
+refused_by "--decks with two runs" "a second run (the first is on line 7)" $rc "$TMP/decks_two.err"
+mkdir -p "$TMP/here" && cp "$TMP/r3_embedded.sbc" "$TMP/here/embedded.sbc"
+sum=$(md5sum < "$TMP/here/embedded.sbc")
+(cd "$TMP/here" && "$runner" --decks . embedded.sbc > /dev/null 2> ../decks_dot.err); rc=$?
+refused_by "--decks . on embedded.sbc" "is this script" $rc "$TMP/decks_dot.err" "$TMP/here/embedded.sbc" "$sum"
+(cd "$TMP" && "$runner" --check r3_check_ready_but_unwritable.sbc > /dev/null 2> check_unwritable.err); rc=$?
+refused_by "--check with an output that cannot be written" "cannot write '/proc/nope/out.csv'" $rc \
+  "$TMP/check_unwritable.err"
+(cd "$TMP" && "$runner" --check runner_r3_check_vs_run_rose.sbc > /dev/null 2> check_rose.err); rc=$?
+refused_by "--check refuses the rose that run refuses" "is this script" $rc "$TMP/check_rose.err"
+# a second writer of a results file, while a process holds it
+: > "$TMP/shared.csv"
+python3 -c 'import fcntl, sys, time
+f = open(sys.argv[1], "r+"); fcntl.lockf(f, fcntl.LOCK_EX); print("locked", flush=True); time.sleep(30)' \
+  "$TMP/shared.csv" > "$TMP/holder.out" & holder=$!
+for _ in $(seq 100); do grep -q locked "$TMP/holder.out" 2>/dev/null && break; sleep 0.05; done
+(cd "$TMP" && "$runner" r3_concurrent_run2.sbc > /dev/null 2> concurrent.err); rc=$?
+kill $holder 2>/dev/null; wait $holder 2>/dev/null
+refused_by "a second writer of a results file" "cannot write 'shared.csv': process $holder is writing it" $rc \
+  "$TMP/concurrent.err"
+# the file size limit: a message naming the file and the reason, and no torn row
+(cd "$TMP" && ulimit -f 20 && "$runner" r3_full_disk.sbc > /dev/null 2> full_disk.err); rc=$?
+torn=$(awk -F, '{ if (NF != 23) bad++ } END { print bad + 0 }' "$TMP/full_disk.csv")
+last=$(tail -c 1 "$TMP/full_disk.csv" | od -An -c | tr -d ' ')
+if [ "$torn" = 0 ] && [ "$last" = '\n' ]; then
+  refused_by "a results file past the file size limit ($(($(wc -l < "$TMP/full_disk.csv") - 1)) whole rows kept)" \
+    "results file 'full_disk.csv': cannot write the row of increment [0-9]* (File too large)" $rc "$TMP/full_disk.err"
+else
+  no "file size limit: $torn rows of the wrong width, last byte '$last'"
+fi
 
 # the harnesses' replays (contract: a refusal names its cause; ASan, UBSan)
 replay() {  # NAME INPUT...

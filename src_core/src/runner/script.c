@@ -135,7 +135,8 @@ static sbc_status cmd_snapshots(int nw, char **w, int *every_out, char *prefix, 
     snprintf(usage, sizeof usage, "%s EVERY PREFIX", w[0]);
     if ((st = sbc_script_expect_count(nw, w, 3, usage, err)) != SBC_OK) return st;
     if (sbc_parse_int(w[1], "EVERY", 1, 100000000L, &every, NULL) != SBC_OK)
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: EVERY '%s' is not valid (expected an integer >= 1)", w[0], w[1]);
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: EVERY '%s' is not valid (expected an integer from 1 to 100000000)",
+                        w[0], w[1]);
     if (strlen(w[2]) >= SBC_NAME_LEN)
         return sbc_fail(err, SBC_ERR_INPUT, "%s: PREFIX is too long (at most %d characters)", w[0], SBC_NAME_LEN - 1);
     *every_out = (int)every;
