@@ -30,6 +30,7 @@
 #include "force.h"
 #include "pair.h"
 #include "group.h"
+#include "modify.h"
 #include "update.h"
 
 #include <algorithm>
@@ -47,13 +48,13 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     bonds(nullptr), contacts(nullptr), n(0), dim(3), last_step(-1), reported(-1), kinetic(0.0), external_work(0.0),
     have_prev(false)
 {
+  law = sbc_cohesive_default();
   if (narg < 4) fail("expected a model after the style (beam, parallel or cohesive)");
   model = arg[3];
   if (model == "cohesive") {
     // the words are checked by the core (sbc_cohesive_parse) when the fix is created
     for (int k = 4; k < narg; k++) words += std::string(k > 4 ? " " : "") + arg[k];
     dim = 2;
-    sbc_cohesive law;
     sbc_error err;
     if (sbc_cohesive_parse(narg - 4, arg + 4, "cohesive", &law, &err) != SBC_OK) fail(err.message);
     kn = law.kn;
@@ -70,9 +71,13 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
       fail("E " + std::string(arg[4]) + ", nu " + arg[5] + ", alpha " + arg[6] +
            " (expected E > 0 Pa, -1 < nu < 0.5, alpha > 0)");
     // optional failure, the runner's words: strength FT FS MB MT, friction MU
+    bool have_strength = false, have_friction = false;
     for (int k = 7; k < narg;) {
       const std::string key = arg[k];
+      if ((key == "strength" && have_strength) || (key == "friction" && have_friction))
+        fail("keyword " + key + " given twice (each keyword once)");
       if (key == "strength") {
+        have_strength = true;
         if (k + 4 >= narg)
           fail("keyword strength needs 4 values (FT FS MB MT: tension N, shear N, bending N m, twisting N m)");
         const char *what[4] = {"strength FT", "strength FS", "strength MB", "strength MT"};
@@ -83,6 +88,7 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
         failure = true;
         k += 5;
       } else if (key == "friction") {
+        have_friction = true;
         if (k + 1 >= narg) fail("keyword friction needs a value (MU)");
         strength[4] = number("friction", arg[k + 1]);
         if (!(strength[4] >= 0.0)) fail(std::string("keyword friction: ") + arg[k + 1] + " (expected >= 0)");
@@ -158,6 +164,18 @@ void FixServoBCBonds::init()
   if (model == "cohesive" && force->pair && !force->pair_match("zero", 1))
     fail(std::string("cohesive computes every contact between the group's discs; pair_style ") + force->pair_style +
          " computes them again (use pair_style zero in LAMMPS, pair_style none in LIGGGHTS)");
+  // one fix servo_bc/bonds per atom: a second one on the same atoms would bond them twice
+  for (int f = 0; f < modify->nfix; f++) {
+    Fix *other = modify->fix[f];
+    if (other == this || std::strcmp(other->style, "servo_bc/bonds") != 0) continue;
+    int shared = 0, total = 0;
+    for (int i = 0; i < atom->nlocal; i++) shared += (atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit);
+    MPI_Allreduce(&shared, &total, 1, MPI_INT, MPI_SUM, world);
+    if (total)
+      fail(std::string("fix ") + other->id + " (servo_bc/bonds, group " + group->names[other->igroup] + ") bonds " +
+           std::to_string(total) + " of this fix's atoms (group " + group->names[igroup] +
+           ") too, which would bond them twice; one fix servo_bc/bonds per atom");
+  }
   if (bonds || contacts) return;
   if (tags.empty()) create_bonds();    // cohesive: also from a restart file, at the present centres
   else bond_spheres();                 // from a restart file
@@ -165,18 +183,21 @@ void FixServoBCBonds::init()
 
 namespace {
 // marks fix servo_bc/bonds' restart block (bump on any change of its layout)
-const double BONDS_MAGIC = 8.020004e7;
+const double BONDS_MAGIC = 8.020005e7;
 }
 
-/* rank 0: model, E, nu, alpha, the reference spheres (ID, centre, radius,
-   mass) and every bond's state; cohesive: model, the atom IDs and the pair
-   state (cohesive_host.h; the law's words are the fix's) */
+/* rank 0: the marker, the block's length, then
+   beam | parallel: model (1 | 2), E, nu, alpha, failure, strength[5], n, the
+   bond count nb, doubles per bond state, the reference spheres (ID, centre,
+   radius, mass), every bond's state, W_ext of eq. 52, the fracture energy;
+   cohesive: model 3, the law (kn ks kr fn fs mr mu), n, the atom IDs, the
+   pair state's length and the pair state (cohesive_host.h) */
 void FixServoBCBonds::write_restart(FILE *fp)
 {
   if (comm->me != 0 || (!bonds && !contacts)) return;
   std::vector<double> list;
   if (contacts) {
-    list = {BONDS_MAGIC, 3.0, (double) n};
+    list = {BONDS_MAGIC, 0.0, 3.0, law.kn, law.ks, law.kr, law.fn_u, law.fs_u, law.m_u, law.mu, (double) n};
     for (int k = 0; k < n; k++) list.push_back((double) tags[k]);
     std::vector<double> state(sbc_cohesive_host_state_size(contacts));
     sbc_cohesive_host_state_get(contacts, state.data());
@@ -184,7 +205,7 @@ void FixServoBCBonds::write_restart(FILE *fp)
     list.insert(list.end(), state.begin(), state.end());
   } else {
     const int nb = sbc_bpm_host_bond_count(bonds), per = sbc_bpm_host_state_doubles(bonds);
-    list = {BONDS_MAGIC, model == "beam" ? 1.0 : 2.0, E, nu, alpha, failure ? 1.0 : 0.0};
+    list = {BONDS_MAGIC, 0.0, model == "beam" ? 1.0 : 2.0, E, nu, alpha, failure ? 1.0 : 0.0};
     list.insert(list.end(), strength, strength + 5);
     list.insert(list.end(), {(double) n, (double) nb, (double) per});
     for (int k = 0; k < n; k++)
@@ -198,48 +219,97 @@ void FixServoBCBonds::write_restart(FILE *fp)
     list.push_back(external_work);    // eq. 52 so far
     list.push_back(sbc_bpm_host_fracture_energy(bonds));
   }
+  list[1] = (double) list.size();
   int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(list.data(), sizeof(double), list.size(), fp);
 }
 
+/* every count, index and value checked before it is used (sbc/saved.h): a
+   restart file may be truncated, corrupted or from another version */
 void FixServoBCBonds::restart(char *raw)
 {
   const double *list = (const double *) raw;
-  if (list[0] != BONDS_MAGIC) fail("restart: this fix's block in the restart file is not fix servo_bc/bonds'");
-  const std::string saved_model = list[1] == 1.0 ? "beam" : list[1] == 2.0 ? "parallel" : "cohesive";
-  if (saved_model == "cohesive" || model == "cohesive") {
-    if (saved_model != model) fail("restart: the file's bonds are " + saved_model + "; this fix asks for " + model);
-    const int count = (int) list[2];
+  sbc_error err;
+  sbc_saved rd;
+  if (list[0] != BONDS_MAGIC)
+    fail("restart: this fix's block in the restart file is not this version's fix servo_bc/bonds' (write the "
+         "restart file again)");
+  sbc_saved_start(&rd, list + 1, 1, "restart data", &err);
+  const long total = sbc_saved_int(&rd, "length", 4, 1000000000L);
+  if (rd.st != SBC_OK) fail(err.message);
+  sbc_saved_start(&rd, list + 2, (size_t) total - 2, "restart data", &err);
+  const int code = (int) sbc_saved_int(&rd, "model", 1, 3);
+  if (rd.st != SBC_OK) fail(err.message);
+  const std::string saved_model = code == 1 ? "beam" : code == 2 ? "parallel" : "cohesive";
+  if (saved_model != model && (saved_model == "cohesive" || model == "cohesive"))
+    fail("restart: the file's bonds are " + saved_model + "; this fix asks for " + model);
+  if (model == "cohesive") {
+    double saved_law[7];
+    const char *names[7] = {"kn", "ks", "kr", "fn", "fs", "mr", "mu"};
+    const double mine[7] = {law.kn, law.ks, law.kr, law.fn_u, law.fs_u, law.m_u, law.mu};
+    std::string differ;
+    for (int q = 0; q < 7; q++) {
+      saved_law[q] = sbc_saved_real(&rd, names[q]);
+      if (rd.st == SBC_OK && saved_law[q] != mine[q])
+        differ += std::string(differ.empty() ? "" : ", ") + names[q] + " " + std::to_string(saved_law[q]) +
+                  " (this fix: " + std::to_string(mine[q]) + ")";
+    }
+    if (rd.st != SBC_OK) fail(err.message);
+    if (!differ.empty())
+      fail("restart: the file's cohesive law differs: " + differ + "; define the fix with the saved law");
+    const long count = sbc_saved_int(&rd, "particle count", 1, total);
+    if (rd.st != SBC_OK) fail(err.message);
     saved_tags.assign(count, 0);
-    for (int k = 0; k < count; k++) saved_tags[k] = (tagint) list[3 + k];
-    const double *p = &list[3 + count];
-    saved.assign(p + 1, p + 1 + (size_t) p[0]);
+    for (long k = 0; k < count; k++) saved_tags[k] = (tagint) sbc_saved_int(&rd, "atom ID", 1, MAXTAGINT);
+    const long size = sbc_saved_int(&rd, "pair state length", 0, total - 2 - (long) rd.at - 1);
+    if (rd.st != SBC_OK) fail(err.message);
+    saved.assign((size_t) size, 0.0);
+    for (long k = 0; k < size; k++) saved[k] = sbc_saved_real(&rd, "pair state value");
+    if (rd.st != SBC_OK) fail(err.message);
+    if ((long) rd.at != total - 2)
+      fail("restart: the block holds " + std::to_string(total) + " values, its contents " + std::to_string(rd.at + 2));
     return;
   }
-  bool same = saved_model == model && list[2] == E && list[3] == nu && list[4] == alpha &&
-              (list[5] != 0.0) == failure;
-  for (int q = 0; q < 5 && same && failure; q++) same = list[6 + q] == strength[q];
+  double saved_params[3], saved_strength[5];
+  const char *pnames[3] = {"E", "nu", "alpha"}, *snames[5] = {"FT", "FS", "MB", "MT", "MU"};
+  for (int q = 0; q < 3; q++) saved_params[q] = sbc_saved_real(&rd, pnames[q]);
+  const bool saved_failure = sbc_saved_int(&rd, "failure", 0, 1) != 0;
+  for (int q = 0; q < 5; q++) saved_strength[q] = sbc_saved_real(&rd, snames[q]);
+  if (rd.st != SBC_OK) fail(err.message);
+  bool same = saved_model == model && saved_params[0] == E && saved_params[1] == nu && saved_params[2] == alpha &&
+              saved_failure == failure;
+  for (int q = 0; q < 5 && same && failure; q++) same = saved_strength[q] == strength[q];
   if (!same)
-    fail("restart: the file's bonds are " + saved_model + " " + std::to_string(list[2]) + " " +
-         std::to_string(list[3]) + " " + std::to_string(list[4]) + (list[5] != 0.0 ? " with a strength" : "") +
+    fail("restart: the file's bonds are " + saved_model + " " + std::to_string(saved_params[0]) + " " +
+         std::to_string(saved_params[1]) + " " + std::to_string(saved_params[2]) +
+         (saved_failure ? " with a strength" : "") +
          "; this fix asks for other ones (model, E, nu, alpha, strength and friction must be the same)");
-  n = (int) list[11];
-  const int nb = (int) list[12], per = (int) list[13];
-  const double *p = &list[14];
+  const long count = sbc_saved_int(&rd, "sphere count", 1, (total - 2) / 6);
+  const long nb = sbc_saved_int(&rd, "bond count", 0, total);
+  const long per = sbc_saved_int(&rd, "doubles per bond", 1, 256);
+  if (rd.st != SBC_OK) fail(err.message);
+  if (15 + 6 * count + nb * per + 2 != total)
+    fail("restart: the block holds " + std::to_string(total) + " values; " + std::to_string(count) + " spheres and " +
+         std::to_string(nb) + " bonds of " + std::to_string(per) + " values need " +
+         std::to_string(14 + 6 * count + nb * per + 2));
+  n = (int) count;
   tags.assign(n, 0);
   ref_x.assign(3 * n, 0.0);
   ref_r.assign(n, 0.0);
   ref_m.assign(n, 0.0);
-  for (int k = 0; k < n; k++, p += 6) {
-    tags[k] = (tagint) p[0];
-    for (int c = 0; c < 3; c++) ref_x[3 * k + c] = p[1 + c];
-    ref_r[k] = p[4];
-    ref_m[k] = p[5];
+  for (int k = 0; k < n; k++) {
+    tags[k] = (tagint) sbc_saved_int(&rd, "atom ID", 1, MAXTAGINT);
+    for (int c = 0; c < 3; c++) ref_x[3 * k + c] = sbc_saved_real(&rd, "reference centre");
+    ref_r[k] = sbc_saved_positive(&rd, "radius");
+    ref_m[k] = sbc_saved_positive(&rd, "mass");
   }
-  saved.assign(p, p + (size_t) nb * per);
-  external_work = p[(size_t) nb * per];
-  fracture_saved = p[(size_t) nb * per + 1];
+  saved.assign((size_t) (nb * per), 0.0);
+  for (long k = 0; k < nb * per; k++) saved[k] = sbc_saved_real(&rd, "bond state value");
+  external_work = sbc_saved_real(&rd, "external work");
+  fracture_saved = sbc_saved_real(&rd, "fracture energy");
+  if (rd.st != SBC_OK) fail(err.message);
+  if (!(fracture_saved >= 0.0)) fail("restart: the fracture energy " + std::to_string(fracture_saved) + " J < 0");
 }
 
 /* the group's atoms in ID order on every rank; the core bonds those that touch */

@@ -30,6 +30,7 @@ extern "C" {
 #include "sbc/bpm_host.h"
 #include "sbc/cohesive_host.h"
 #include "sbc/contact.h"
+#include "sbc/saved.h"
 }
 
 namespace LAMMPS_NS {
@@ -62,6 +63,7 @@ class FixServoBCBonds : public Fix {
   double fracture_saved = 0.0;             // the broken bonds' energy from a restart file, J
   std::string words;                       // cohesive: the law's words (cohesive_host.h)
   double kn;                               // cohesive: the law's kn, N/m
+  sbc_cohesive law;                        // cohesive: the law (eqs. 6-8), saved in restart files
   sbc_bpm *bonds;
   sbc_cohesive_host *contacts;
   int n;                                   // particles of the group

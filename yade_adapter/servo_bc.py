@@ -225,6 +225,56 @@ def _engines_kn():
     return None
 
 
+def _check_bodies(bodies, who):
+    """Every id names an existing sphere, once."""
+    if not bodies:
+        raise ServoBCError('%s: no bodies (expected the ids of the packing\'s spheres)' % who)
+    seen = set()
+    for i in bodies:
+        if not isinstance(i, int) or isinstance(i, bool) or i < 0 or i >= len(O.bodies) or O.bodies[i] is None:
+            raise ServoBCError('%s: body %r does not exist (expected ids of O.bodies, 0 to %d)'
+                               % (who, i, len(O.bodies) - 1))
+        if not hasattr(O.bodies[i].shape, 'radius'):
+            raise ServoBCError('%s: body %d is a %s (expected a sphere)' % (who, i, type(O.bodies[i].shape).__name__))
+        if i in seen:
+            raise ServoBCError('%s: body %d is listed twice' % (who, i))
+        seen.add(i)
+
+
+class _BondedBodies(object):
+    """What Bonds and Cohesive check as they run: no body of theirs erased, and no other
+    Bonds or Cohesive engine of O.engines on the same bodies (which would bond them twice).
+    Checked at the first step and every CHECK_EVERY steps after it."""
+    CHECK_EVERY = 100
+
+    def _bodies_checked(self, who):
+        self._since_bodies += 1
+        if self._since_bodies < self.CHECK_EVERY and self._bodies_seen:
+            return
+        self._since_bodies = 0
+        bodies = O.bodies
+        for i in self.bodies:
+            if i >= len(bodies) or bodies[i] is None:
+                raise ServoBCError('%s: body %d was erased after it was bonded (step %d); erase bonded bodies '
+                                   'before creating %s' % (who, i, O.iter, type(self).__name__))
+        if self._bodies_seen:
+            return
+        self._bodies_seen = True
+        mine = set(self.bodies)
+        for engine in O.engines:
+            other = _bonded_engines.get(getattr(engine, 'label', ''))
+            if other is None or other is self:
+                continue
+            shared = sorted(mine.intersection(other.bodies))
+            if shared:
+                raise ServoBCError('%s: body %d (and %d more) is bonded by another %s in O.engines too, which '
+                                   'would bond it twice; one Bonds or Cohesive per body'
+                                   % (who, shared[0], len(shared) - 1, type(other).__name__))
+
+
+_bonded_engines = {}    # PyRunner label -> its Bonds or Cohesive
+
+
 def version():
     """The version of the servo_bc core this module drives (CHANGELOG.md)."""
     return _core().sbc_version().decode()
@@ -292,7 +342,7 @@ class ServoBC(object):
         self._started = self._reported = time.time()
         n = len(self.bodies)
         xy, r, m = [], [], []
-        self._check_bodies()
+        _check_bodies(self.bodies, 'servo_bc')
         for i in self.bodies:
             b = O.bodies[i]
             xy += [b.state.pos[0], b.state.pos[1]]
@@ -347,22 +397,6 @@ class ServoBC(object):
         if lib.sbc_host_warning(self._h, warning, 512):
             print('servo_bc: WARNING: %s' % warning.value.decode(), flush=True)
         self._apply_commands()
-
-    def _check_bodies(self):
-        """Every id names an existing sphere, once."""
-        if not self.bodies:
-            raise ServoBCError('servo_bc: no bodies (expected the ids of the packing\'s spheres)')
-        seen = set()
-        for i in self.bodies:
-            if not isinstance(i, int) or i < 0 or i >= len(O.bodies) or O.bodies[i] is None:
-                raise ServoBCError('servo_bc: body %r does not exist (expected ids of O.bodies, 0 to %d)'
-                                   % (i, len(O.bodies) - 1))
-            if not hasattr(O.bodies[i].shape, 'radius'):
-                raise ServoBCError('servo_bc: body %d is a %s (expected a sphere)'
-                                   % (i, type(O.bodies[i].shape).__name__))
-            if i in seen:
-                raise ServoBCError('servo_bc: body %d is listed twice' % i)
-            seen.add(i)
 
     def _frame_list(self, words):
         w = words.split('#', 1)[0].split()
@@ -680,7 +714,7 @@ class ServoBC(object):
         return {c: [row[c] for row in self.rows] for c in COLUMNS}
 
 
-class Bonds(object):
+class Bonds(_BondedBodies):
     """The thesis' 3D bonded particle model on YADE spheres (bpm_host.h): bonds between the
     bodies that touch, Timoshenko beams (model='beam', E_b = E Pa, nu_b = nu) or parallel
     bonds (model='parallel', k^n = E / 2 r_min, k^s = k^n / 4.2), bond radius alpha r_min.
@@ -695,12 +729,12 @@ class Bonds(object):
     def __init__(self, bodies, model='beam', E=4e9, nu=0.3, alpha=1.0, strength=None, friction=0.0):
         lib = _core()
         self.bodies = list(bodies)
+        _check_bodies(self.bodies, 'servo_bc: bonds')
+        self._since_bodies, self._bodies_seen = 0, False
         n = len(self.bodies)
         x, r, m = [], [], []
         for i in self.bodies:
             b = O.bodies[i]
-            if b is None or not hasattr(b.shape, 'radius'):
-                raise ServoBCError('servo_bc: bonds: body %r is not a sphere' % (i,))
             x += [b.state.pos[0], b.state.pos[1], b.state.pos[2]]
             r.append(b.shape.radius)
             m.append(b.state.mass)
@@ -721,6 +755,7 @@ class Bonds(object):
         name = '_servo_bc_bonds_%d' % (len(_instances) - 1)
         setattr(sys.modules['__main__'], name, self.step)
         self.engine = PyRunner(command='%s()' % name, iterPeriod=1, label='servo_bc_bonds_%d' % (len(_instances) - 1))
+        _bonded_engines[self.engine.label] = self
 
     def __del__(self):
         if getattr(self, '_h', None) and _lib is not None:
@@ -745,6 +780,7 @@ class Bonds(object):
 
     def step(self):
         """Called by the PyRunner each step: YADE's velocities here are v(t - dt/2)."""
+        self._bodies_checked('servo_bc: bonds')
         st = self._states
         self._x[:] = [c for s in st for c in (s.pos[0], s.pos[1], s.pos[2])]
         self._v[:] = [c for s in st for c in (s.vel[0], s.vel[1], s.vel[2])]
@@ -759,7 +795,7 @@ class Bonds(object):
             forces.addT(i, (load[6 * k + 3], load[6 * k + 4], load[6 * k + 5]))
 
 
-class Cohesive(object):
+class Cohesive(_BondedBodies):
     """The paper's 2D cohesive bonds (eqs. 7-8) and frictional contacts (eq. 6) between the
     discs bodies (cohesive_host.h): bodies touching now are bonded; a bond that meets eq. 8
     breaks for good and the pair goes on by eq. 6 with the bond's kn, ks, mu. words: 'kn KN
@@ -774,12 +810,19 @@ class Cohesive(object):
         lib = _core()
         self.bodies = list(bodies)
         self.words = words
+        _check_bodies(self.bodies, 'servo_bc: cohesive')
+        self._since_bodies, self._bodies_seen = 0, False
         n = len(self.bodies)
         xy, r = [], []
+        z0 = O.bodies[self.bodies[0]].state.pos[2]
         for i in self.bodies:
             b = O.bodies[i]
-            if b is None or not hasattr(b.shape, 'radius'):
-                raise ServoBCError('servo_bc: cohesive: body %r is not a sphere' % (i,))
+            z = b.state.pos[2]
+            # the law is 2D: the discs lie in one plane z = const (a round-off apart)
+            if not abs(z - z0) <= 1e-9 * b.shape.radius:
+                raise ServoBCError('servo_bc: cohesive: body %d is at z = %g m, body %d at z = %g m: the cohesive law '
+                                   'is 2D (discs in one plane z = const, blockedDOFs \'zXY\')'
+                                   % (i, z, self.bodies[0], z0))
             xy += [b.state.pos[0], b.state.pos[1]]
             r.append(b.shape.radius)
         msg = ctypes.create_string_buffer(512)
@@ -797,6 +840,7 @@ class Cohesive(object):
         name = '_servo_bc_cohesive_%d' % (len(_instances) - 1)
         setattr(sys.modules['__main__'], name, self.step)
         self.engine = PyRunner(command='%s()' % name, iterPeriod=1, label='servo_bc_cohesive_%d' % (len(_instances) - 1))
+        _bonded_engines[self.engine.label] = self
 
     def __del__(self):
         if getattr(self, '_h', None) and _lib is not None:
@@ -815,6 +859,7 @@ class Cohesive(object):
 
     def step(self):
         """Called by the PyRunner each step: YADE's velocities here are v(t - dt/2)."""
+        self._bodies_checked('servo_bc: cohesive')
         st = self._states
         self._x[:] = [c for s in st for c in (s.pos[0], s.pos[1])]
         self._v[:] = [c for s in st for c in (s.vel[0], s.vel[1])]

@@ -153,6 +153,58 @@ if [ -n "$a" ] && [ -n "$b" ] && awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if 
 else
   bad "restart mid-run: ${b:-none} m after the split, ${a:-none} m straight through: $(tail -3 "$tmp/restart.log")"
 fi
+# the bonds fix's restart block checked value by value (sbc/saved.h): corrupted
+# counts, sizes and values are refused by name, never a crash or a NaN output.
+# corrupt_bonds FILE OFFSET VALUE overwrites one double of the block (found by
+# its marker, BONDS_MAGIC of fix_servo_bc_bonds.cpp); OFFSET may be "last"
+corrupt_bonds() {
+  perl -e '
+    my ($file, $k, $value) = @ARGV;
+    open(my $f, "+<", $file) or exit 1; binmode $f; local $/; my $d = <$f>;
+    my $at = index($d, pack("d", 8.020005e7)); exit 1 if $at < 0;
+    $k = unpack("d", substr($d, $at + 8, 8)) - 1 if $k eq "last";
+    substr($d, $at + 8 * $k, 8) = pack("d", $value eq "nan" ? 9**9**9 / 9**9**9 : $value);
+    seek($f, 0, 0); print $f $d; close $f;' "$1" "$2" "$3"
+}
+refused_restart() {  # LABEL OFFSET VALUE EXPECTED
+  cp "$tmp/split.restart" "$tmp/bad.restart"
+  corrupt_bonds "$tmp/bad.restart" "$2" "$3" || { bad "restart: no fix servo_bc/bonds block in the file"; return; }
+  sed 's/read_restart split.restart/read_restart bad.restart/' "$tmp/split.in" > "$tmp/bad.in"
+  (cd "$tmp" && timeout 60 "$bin" -in bad.in -log none > bad.log 2>&1)
+  local status=$?
+  if [ $status -ge 1 ] && [ $status -le 125 ] && grep -qF "$4" "$tmp/bad.log"; then
+    ok "refuses a restart file with $1 (exit $status): $(grep -m1 -o 'ERROR.*' "$tmp/bad.log" | cut -c1-120)"
+  else
+    bad "restart file with $1 (exit $status): $(grep -m1 -E 'ERROR|terminate|signal' "$tmp/bad.log")"
+  fi
+}
+refused_restart "a length of 1e12" 1 1e12 "'length'"
+refused_restart "1e9 spheres" 12 1e9 "'sphere count'"
+refused_restart "1e6 doubles per bond" 14 1e6 "'doubles per bond'"
+refused_restart "a bond count that does not fit the block" 13 7 "need"
+refused_restart "a radius 0" 19 0 "'radius'"
+refused_restart "a NaN bond state" 81 nan "'bond state value'"
+refused_restart "a NaN fracture energy" last nan "'fracture energy'"
+refused_restart "another E" 3 5e9 "the file's bonds are beam 5000000000"
+# a second bonds fix on the same atoms, and a keyword twice
+sed 's/^fix bonds all servo_bc\/bonds beam 4e9 0.3 1.0$/&\nfix bonds2 all servo_bc\/bonds beam 4e9 0.3 1.0/' \
+  "$tmp/split.in" > "$tmp/twice.in"
+(cd "$tmp" && timeout 60 "$bin" -in twice.in -log none > twice.log 2>&1)
+status=$?
+if [ $status -ne 0 ] && grep -qF "which would bond them twice" "$tmp/twice.log"; then
+  ok "refuses a second fix servo_bc/bonds on the same atoms (exit $status)"
+else
+  bad "a second bonds fix on the same atoms (exit $status): $(grep -m1 ERROR "$tmp/twice.log")"
+fi
+sed 's/^fix bonds all servo_bc\/bonds beam 4e9 0.3 1.0$/& strength 1e5 0 0 0 strength 2e5 0 0 0/' \
+  "$tmp/split.in" > "$tmp/twice.in"
+(cd "$tmp" && timeout 60 "$bin" -in twice.in -log none > twice.log 2>&1)
+status=$?
+if [ $status -ne 0 ] && grep -qF "keyword strength given twice" "$tmp/twice.log"; then
+  ok "refuses strength given twice (exit $status)"
+else
+  bad "strength given twice (exit $status): $(grep -m1 ERROR "$tmp/twice.log")"
+fi
 # failure (strength FT 0 0 0, friction): two spheres (r = 0.1 m, parallel bond,
 # axial stiffness K = k^n pi r^2 = E pi r / 2) pulled apart at 1e-6 m per
 # step: 100 steps carry K 1e-4 exactly; the bond breaks at the first step
@@ -281,6 +333,24 @@ if "$servo_bc" --decks "$tmp/coh" "$here/../../inputs/compare/cohesive_layer_sho
       bad "a granular pair style beside cohesive bonds (exit $status): $(grep -m1 ERROR "$tmp/coh/twice.log")"
     fi
   fi
+  # the cohesive block: the law defined again with another kn, corrupted counts and values
+  coh_refused() {  # LABEL OFFSET VALUE EXPECTED [SED]
+    cp "$tmp/coh/half.restart" "$tmp/coh/bad.restart"
+    [ "$2" = - ] || corrupt_bonds "$tmp/coh/bad.restart" "$2" "$3" || { bad "cohesive restart: no block"; return; }
+    sed "s/read_restart half.restart/read_restart bad.restart/; ${5:-}" "$tmp/coh/part2.in" > "$tmp/coh/bad.in"
+    (cd "$tmp/coh" && timeout 60 "$bin" -in bad.in -log none > bad.log 2>&1)
+    local status=$?
+    if [ $status -ge 1 ] && [ $status -le 125 ] && grep -qF "$4" "$tmp/coh/bad.log"; then
+      ok "cohesive: refuses $1 (exit $status): $(grep -m1 -o 'ERROR.*' "$tmp/coh/bad.log" | cut -c1-110)"
+    else
+      bad "cohesive restart with $1 (exit $status): $(grep -m1 -E 'ERROR|terminate|signal' "$tmp/coh/bad.log")"
+    fi
+  }
+  coh_refused "another law after read_restart" - - "the file's cohesive law differs: kn" \
+    's/servo_bc\/bonds cohesive kn \([0-9.e+]*\)/servo_bc\/bonds cohesive kn 2\1/'
+  coh_refused "1e9 particles" 10 1e9 "'particle count'"
+  coh_refused "an atom ID 0" 11 0 "'atom ID'"
+  coh_refused "a NaN pair state" last nan "'pair state value'"
   res=$(paste -d, "$tmp/coh/$host.csv" "$tmp/coh/split.csv" 2>/dev/null | awk -F, -f "$here/../sigma_diff.awk")
   set -- $res
   if [ "${1:-0}" = 6 ] && awk -v m="${2:-100}" 'BEGIN { exit !(m <= 1e-7) }'; then

@@ -125,6 +125,22 @@ else
   fail=$((fail + 1)); echo "FAIL yade beam with N = 4 (exit $status):"; tail -3 "$tmp/beam_4.log"
 fi
 
+# Bonds and Cohesive refuse bodies by name (tests/reliability/yade_bodies.py: the
+# round-3 reproducers), and the controls run
+bodies=$here/../reliability/yade_bodies.py
+for item in "b_ctrl:RESULT OK bonds 4 intact 4" "c_ctrl:RESULT OK bonds 12 now 12" \
+            "b_idneg:body -1 does not exist" "c_idneg:body -1 does not exist" "b_dup:body 0 is listed twice" \
+            "c_dup:body 4 is listed twice" "b_twice:which would bond it twice" "b_erase:body 2 was erased" \
+            "c_erase:body 4 was erased" "c_z_offset:the cohesive law is 2D"; do
+  case_name=${item%%:*} expect=${item#*:}
+  result=$(cd "$tmp" && timeout 120 yade -n -x "$bodies" "$case_name" 2>&1 | grep -m1 '^RESULT')
+  if [[ "$result" == *"$expect"* ]]; then
+    pass=$((pass + 1)); echo "yade $case_name: $(echo "$result" | cut -c1-150)"
+  else
+    fail=$((fail + 1)); echo "FAIL yade $case_name: expected '$expect', got: ${result:-nothing}"
+  fi
+done
+
 rm -rf "$tmp"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
