@@ -187,24 +187,19 @@ refused_restart "a NaN bond state" 81 nan "'bond state value'"
 refused_restart "a NaN fracture energy" last nan "'fracture energy'"
 refused_restart "another E" 3 5e9 "the file's bonds are beam 5000000000"
 # a second bonds fix on the same atoms, and a keyword twice
-sed 's/^fix bonds all servo_bc\/bonds beam 4e9 0.3 1.0$/&\nfix bonds2 all servo_bc\/bonds beam 4e9 0.3 1.0/' \
-  "$tmp/split.in" > "$tmp/twice.in"
-(cd "$tmp" && timeout 60 "$bin" -in twice.in -log none > twice.log 2>&1)
-status=$?
-if [ $status -ne 0 ] && grep -qF "which would bond them twice" "$tmp/twice.log"; then
-  ok "refuses a second fix servo_bc/bonds on the same atoms (exit $status)"
-else
-  bad "a second bonds fix on the same atoms (exit $status): $(grep -m1 ERROR "$tmp/twice.log")"
-fi
-sed 's/^fix bonds all servo_bc\/bonds beam 4e9 0.3 1.0$/& strength 1e5 0 0 0 strength 2e5 0 0 0/' \
-  "$tmp/split.in" > "$tmp/twice.in"
-(cd "$tmp" && timeout 60 "$bin" -in twice.in -log none > twice.log 2>&1)
-status=$?
-if [ $status -ne 0 ] && grep -qF "keyword strength given twice" "$tmp/twice.log"; then
-  ok "refuses strength given twice (exit $status)"
-else
-  bad "strength given twice (exit $status): $(grep -m1 ERROR "$tmp/twice.log")"
-fi
+refused_fix_line() {  # LABEL WHAT-TO-APPEND-TO-THE-FIX-LINE EXPECTED
+  sed "s/^fix bonds all servo_bc\/bonds beam 4e9 0.3 1.0\$/&$2/" "$tmp/split.in" > "$tmp/twice.in"
+  (cd "$tmp" && timeout 60 "$bin" -in twice.in -log none > twice.log 2>&1)
+  local status=$?
+  if [ $status -ne 0 ] && grep -qF "$3" "$tmp/twice.log"; then
+    ok "refuses $1 (exit $status)"
+  else
+    bad "$1 (exit $status): $(grep -m1 ERROR "$tmp/twice.log")"
+  fi
+}
+refused_fix_line "a second fix servo_bc/bonds on the same atoms" '\nfix bonds2 all servo_bc\/bonds beam 4e9 0.3 1.0' \
+  "which would bond them twice"
+refused_fix_line "strength given twice" ' strength 1e5 0 0 0 strength 2e5 0 0 0' "keyword strength given twice"
 # failure (strength FT 0 0 0, friction): two spheres (r = 0.1 m, parallel bond,
 # axial stiffness K = k^n pi r^2 = E pi r / 2) pulled apart at 1e-6 m per
 # step: 100 steps carry K 1e-4 exactly; the bond breaks at the first step
