@@ -30,6 +30,9 @@ struct GranAccess : PairGranHookeHistory {
   static double kn_of(PairGranHookeHistory *p) { return p->*(&GranAccess::kn); }
   static double kt_of(PairGranHookeHistory *p) { return p->*(&GranAccess::kt); }
   static FixNeighHistory *history_of(PairGranHookeHistory *p) { return p->*(&GranAccess::fix_history); }
+  static double gamman_of(PairGranHookeHistory *p) { return p->*(&GranAccess::gamman); }
+  static double gammat_of(PairGranHookeHistory *p) { return p->*(&GranAccess::gammat); }
+  static int dampflag_of(PairGranHookeHistory *p) { return p->*(&GranAccess::dampflag); }
 };
 
 /* eq. 6 as pair gran/hooke/history holds it: kn, kt (N/m) and, per neighbour
@@ -46,6 +49,13 @@ struct ContactLaw {
     if (!pair) return std::string("requires ") + contact_law + " (the paper's contact law, eq. 6)";
     kn = GranAccess::kn_of(pair);
     kt = GranAccess::kt_of(pair);
+    // eq. 6 has no dashpots: the damping of the relaxation is the fix's
+    const double gn = GranAccess::gamman_of(pair), gt = GranAccess::gammat_of(pair);
+    const int flag = GranAccess::dampflag_of(pair);
+    if (gn != 0.0 || gt != 0.0 || flag != 0)
+      return std::string("requires ") + contact_law + " (the paper's contact law, eq. 6, has no dashpots); this " +
+             "script gives gamman " + std::to_string(gn) + ", gammat " + std::to_string(gt) + ", dampflag " +
+             std::to_string(flag) + " (set them to 0 0 and 0)";
     return "";
   }
   NeighList *list() const { return pair->list; }

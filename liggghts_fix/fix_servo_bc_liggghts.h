@@ -63,10 +63,13 @@ struct ContactLaw {
     std::string why = stiffness(lmp, "kn", nt, kn);
     if (why.empty()) why = stiffness(lmp, "kt", nt, kt);
     // eq. 6 has no dashpot: the damping of the relaxation is the fix's
-    double gamma = 0.0;
-    if (why.empty()) why = stiffness(lmp, "gamman_abs", nt, gamma);
-    if (why.empty() && gamma != 0.0)
-      why = "fix property/global gamman_abs is " + std::to_string(gamma) + "; eq. 6 has no normal dashpot (set it to 0)";
+    for (const char *name : {"gamman_abs", "gammat_abs"}) {
+      double gamma = 0.0;
+      if (why.empty()) why = stiffness(lmp, name, nt, gamma);
+      if (why.empty() && gamma != 0.0)
+        why = std::string("fix property/global ") + name + " is " + std::to_string(gamma) +
+              "; eq. 6 has no dashpots (set it to 0)";
+    }
     return why.empty() ? why : need + "; " + why;
   }
   NeighList *list() const { return pair->list; }

@@ -22,6 +22,11 @@ if [ $? -eq 0 ] && grep -q "WARNING: Fix servo_bc: the run ended at increment 1 
 else
   no "no warning on a short run:"; tail -3 "$TMP/short.log"
 fi
+refuses "a normal dashpot (gamman 50)" 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 0 50 0 0.4 0/' \
+  "has no dashpots); this script gives gamman 50.000000, gammat 0.000000, dampflag 0"
+# (gammat without dampflag is no dashpot: LAMMPS sets it to 0 when dampflag is 0)
+refuses "dampflag 1" 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 1/' \
+  "dampflag 1"
 refuses "a time step beyond the critical step of the lightest atom" 's/^timestep .*/timestep 2e-3/' \
   "time step 0.002 s exceeds the critical step 0.00114342 s = 2 sqrt(M / (2 kn)) of particle"
 frictional_checks 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 2e3 0 0 0.4 0/'

@@ -35,6 +35,8 @@ else
 fi
 refuses "a normal dashpot (gamman_abs 0.5)" 's/gamman_abs peratomtypepair 2 0 0 0 0/gamman_abs peratomtypepair 2 0.5 0.5 0.5 0.5/' \
   "gamman_abs is 0.5"
+refuses "a tangential dashpot (gammat_abs 0.5)" 's/gammat_abs peratomtypepair 2 0 0 0 0/gammat_abs peratomtypepair 2 0.5 0.5 0.5 0.5/' \
+  "gammat_abs is 0.5"
 refuses "units other than si" 's/^units  *si/units           lj/' "requires units si (its outputs are in m, N/m and s; this script has units lj)"
 refuses "an interior that no fix integrates" '/^fix  *integrate servo_interior/d' "atoms of group servo_interior are integrated by no fix"
 refuses "a time step beyond the critical step of the lightest atom" 's/^timestep .*/timestep 2e-3/' \
