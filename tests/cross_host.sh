@@ -42,6 +42,25 @@ if [ $rc -eq 0 ] && grep -q '^| embedded | 2 |' "$tmp/tiny/report.md" && grep -q
 else
   fail=$((fail + 1)); echo "FAIL compare ENGINES=embedded (exit $rc):"; cat "$tmp/tiny2.log" "$tmp/tiny/report.md"
 fi
+# one path in every host: DEM steps per converged increment (the mean over the
+# path) within 2x of the embedded engine's, each engine serial
+steps_parity() {  # LABEL DIR
+  local res
+  res=$(awk -F, 'NR == 1 { for (c = 2; c <= NF; c++) if ($c ~ /_relax_steps$/) { name[c] = $c; sub(/_relax_steps$/, "", name[c]) } next }
+    { n++; for (c in name) s[c] += $c }
+    END { for (c in name) if (name[c] == "embedded") e = s[c]
+          for (c in name) { r = e > 0 ? s[c] / e : 0; printf "%s %.0f %.3f\n", name[c], s[c] / n, r } }' "$2/steps.csv" 2>/dev/null)
+  if [ "$(echo "$res" | grep -c .)" = 4 ] && echo "$res" | awk '{ if (!($3 >= 0.5 && $3 <= 2)) bad++ } END { exit bad > 0 }'; then
+    pass=$((pass + 1)); echo "one path ($1): DEM steps per increment $(echo "$res" | sort | awk '{ printf "%s%s %s (%.2fx)", (NR > 1 ? ", " : ""), $1, $2, $3 }')"
+  else
+    fail=$((fail + 1)); echo "FAIL one path ($1): steps per increment and ratio to the embedded engine: $(echo $res)"
+  fi
+}
+for bc in D P; do
+  dir=$tmp/lattice7_${bc}_tight
+  RANKS=1 bash "$top/scripts/compare.sh" "$top/inputs/compare/lattice7_${bc}_tight.sbc" "$dir" | grep -v "^compare: report"
+  steps_parity "7 x 7 frictional lattice ($bc), accuracy tight" "$dir"
+done
 for bc in D P T; do
   ranks="1 2"
   dir=$tmp/regular_${bc}_30
@@ -72,6 +91,7 @@ for bc in D P T; do
       fail=$((fail + 1)); echo "FAIL cross-host ($bc): LAMMPS 2 ranks against 1 rank: $m % of the stress scale"
     fi
   }
+  steps_parity "regular 100 particles ($bc), the default words" "$dir"
   set -- $(paste -d, "$dir/embedded.csv" "$dir/lammps.csv" "$dir/liggghts.csv" 2>/dev/null \
     | awk -F, -v scale_from=1 -v a=2 -v b=3 -f "$here/sigma_diff.awk")
   if [ "${1:-0}" = 31 ] && awk -v e="${2:-100}" 'BEGIN { exit !(e <= 0.5) }'; then
