@@ -87,8 +87,30 @@ typedef struct sbc_relax {
     double ep_known;     /* that Ep, J */
     double ek_known;     /* the Ek of that step, J */
     double fc_known;     /* force: the mean contact force of that step, N */
-    double unbalanced;   /* U of the last step with measured contact sums (with the floor) */
+    double unbalanced;   /* U of the last step with measured contact sums, reported: against the mean
+                            contact force, or below the floor against the path's (path_force) */
+    double net_known;    /* the largest net force of that step, N */
+    double path_force;   /* the largest mean contact force of the loading path's converged increments, N */
 } sbc_relax;
+
+/* The path floor: a state whose mean contact force has fallen below
+ * SBC_RELAX_PATH_FLOOR of the path's (path_force) is judged against that
+ * fraction of the path's forces, not its own: a stress-free state of a
+ * mechanism (a frictionless lattice under (T) that slid out of contact) has
+ * forces of round-off size whose ratios mean nothing, and its stress error
+ * relative to the path's stress scale is what a preset can state. */
+#define SBC_RELAX_PATH_FLOOR 1e-6
+
+/* The force below which contact forces count as the floor (N): the larger of
+ * floor_force and SBC_RELAX_PATH_FLOOR path_force. */
+double sbc_relax_scale_floor(const sbc_relax *r);
+
+/* A converged increment's mean contact force fc (N) joins the path's scale. */
+void sbc_relax_path(sbc_relax *r, double fc);
+
+/* Whether the last measured step meets the force criterion's (a): U <= tol,
+ * or a net force below SBC_RELAX_NET_FLOOR floor_force (round-off). */
+int sbc_relax_balanced(const sbc_relax *r);
 
 /* at_rest: the frame was left where it was before this relaxation (energy
  * criterion only). The floors are kept from the previous start (set them

@@ -54,6 +54,8 @@ struct sbc_controller {
     long steps;          /* host steps spent on this increment */
     sbc_servo_norms norms; /* last residual norms of this increment (zero for D) */
     sbc_result result;
+    double work_path;    /* the largest work scale |P||F| of the path's converged increments, N/m */
+    double sigma_path;   /* the largest |sigma| (largest component) of those increments, N/m */
 };
 
 /* Mixed: row i of F (F_i1, F_i2) is a result of the (T) condition, eq. 45,
@@ -580,7 +582,10 @@ static sbc_status measure(sbc_controller *c, const sbc_snapshot *snap, sbc_error
                         "servo_bc %s: increment %d: det F = %g <= 0 (F = [%g %g; %g %g]): the frame is inverted or "
                         "collapsed",
                         sbc_bc_name(c->s.bc), c->increment, sbc_det2(r->F), r->F[0], r->F[1], r->F[2], r->F[3]);
+    /* a stress collapsed below the path floor is judged on the path's scale (relax.h) */
     scale = sbc_homogenize_work_scale(r->P, r->F);
+    if (scale < SBC_RELAX_PATH_FLOOR * c->work_path)
+        scale = c->work_path;
     r->hill_mandel = sbc_homogenize_hill_mandel(f, c->a, snap->x, r->F, r->P);
     if (scale > 0.0)
         r->hill_mandel /= scale;
@@ -723,12 +728,88 @@ static void new_reference(sbc_controller *c, const double *x)
     sbc_frame_update_geometry(&c->ref);
 }
 
+/* The accuracy the words in force state for a row (docs/servo_bc.md,
+ * "Accuracy"): the preset's, loosened by a balance or frame tolerance given
+ * with it; 0 when none is stated (accuracy paper, the energy criterion,
+ * absolute frame tolerances). */
+static double stated_accuracy(const sbc_controller *c)
+{
+    double a = sbc_settings_preset_accuracy(c->s.accuracy);
+    if (!(a > 0.0) || c->s.criterion != SBC_CRITERION_FORCE)
+        return 0.0;
+    a = fmax(a, c->s.tol_balance);
+    if (c->s.bc != SBC_BC_D) {
+        if (!(c->s.tol_relative > 0.0))
+            return 0.0; /* absolute frame tolerances (tol_force, tol_moment) state no stress accuracy */
+        a = fmax(a, c->s.tol_relative);
+    }
+    return a;
+}
+
+static double largest_component(const double t[4])
+{
+    return fmax(fmax(fabs(t[0]), fabs(t[1])), fmax(fabs(t[2]), fabs(t[3])));
+}
+
+/* A row is written only when it meets what it reports against: the force
+ * balance of the relaxation (relax.h), the frame residual of (P) and (T)
+ * relative to the frame's forces, and the Hill-Mandel residual within the
+ * stated accuracy; each measured against the path's scale once the state's
+ * own forces have collapsed below the path floor. Otherwise the run stops
+ * with what happened. */
+static int certified(const sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
+{
+    const sbc_result *r = &c->result;
+    const sbc_frame *f = c->frame;
+    const double stated = stated_accuracy(c), sigma = largest_component(r->sigma);
+    char why[320] = "", moved[160] = "", collapse[160] = "";
+    size_t used = 0;
+    double worst = -1.0;
+    int q, at = 0;
+    if (c->s.criterion == SBC_CRITERION_FORCE && !sbc_relax_balanced(&c->relax))
+        used += (size_t)snprintf(why + used, sizeof why - used, "unbalanced %.3g > balance %.3g; ", r->unbalanced,
+                                 c->relax.tol);
+    if ((c->s.bc == SBC_BC_P || c->s.bc == SBC_BC_T) && c->s.tol_relative > 0.0 &&
+        r->frame_residual > c->s.tol_relative * (1.0 + 1e-9) && used < sizeof why)
+        used += (size_t)snprintf(why + used, sizeof why - used, "frame_residual %.3g > tol_relative %.3g; ",
+                                 r->frame_residual, c->s.tol_relative);
+    if (stated > 0.0 && fabs(r->hill_mandel) > stated && used < sizeof why)
+        used += (size_t)snprintf(why + used, sizeof why - used, "|hill_mandel| %.3g > the stated accuracy %.3g; ",
+                                 fabs(r->hill_mandel), stated);
+    if (used == 0)
+        return 1;
+    why[used >= 2 && used < sizeof why ? used - 2 : sizeof why - 1] = '\0';
+    if (c->sigma_path > 0.0 && sigma < 1e-3 * c->sigma_path)
+        snprintf(collapse, sizeof collapse, "; the stress collapsed from %.4g N/m (the path's largest |sigma|) to "
+                 "%.3g N/m", c->sigma_path, sigma);
+    for (q = 0; q < f->n; ++q) { /* the frame particle farthest from F X, in its radii */
+        const double X = f->X[2 * q], Y = f->X[2 * q + 1];
+        const double dx = snap->x[2 * q] - (c->F_now[0] * X + c->F_now[1] * Y);
+        const double dy = snap->x[2 * q + 1] - (c->F_now[2] * X + c->F_now[3] * Y);
+        const double d = sqrt(dx * dx + dy * dy) / f->R[q];
+        if (d > worst)
+            worst = d, at = q;
+    }
+    if (c->s.bc != SBC_BC_D && f->n > 0)
+        snprintf(moved, sizeof moved, "; frame particle %d (position %d of the frame) is %.3g radii from F X",
+                 f->particle[at], at, worst);
+    sbc_fail(err, SBC_ERR_DIVERGED,
+             "servo_bc %s: increment %d, iteration %d: the state reached cannot be certified at accuracy %s (%s)%s%s; "
+             "the row is not written: tighten balance or the frame tolerances, lower the time step, or take "
+             "smaller increments",
+             sbc_bc_name(c->s.bc), c->increment, c->iteration, c->s.accuracy, why, collapse, moved);
+    return 0;
+}
+
 /* Table 1, 1.3 / Tables 2-3, 1.6.A: the relaxed, converged configuration is
  * the result of increment i; the next increment starts. */
 static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
 {
-    if (measure(c, snap, err) != SBC_OK)
+    if (measure(c, snap, err) != SBC_OK || !certified(c, snap, err))
         return SBC_EVENT_FAILED;
+    sbc_relax_path(&c->relax, c->relax.fc_known);
+    c->work_path = fmax(c->work_path, sbc_homogenize_work_scale(c->result.P, c->result.F));
+    c->sigma_path = fmax(c->sigma_path, largest_component(c->result.sigma));
     memcpy(c->x_prev, snap->x, sizeof(double) * 2 * (size_t)c->frame->n);
     memcpy(c->F_prev, c->F_now, sizeof c->F_prev);
     if (c->s.bc == SBC_BC_MIXED && c->s.stress_increments > 0 && c->increment == c->s.stress_increments) {
@@ -959,13 +1040,13 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
             double target[4];
             for (k = 0; k < 4; ++k)
                 target[k] = c->P_star[k] + c->P_shift[k];
-            sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->kn, c->relax.floor_force, target, c->P_fixed, c->a, c->m, c->du,
+            sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->kn, sbc_relax_scale_floor(&c->relax), target, c->P_fixed, c->a, c->m, c->du,
                             c->dtheta, &nrm);
             nrm.r_deformation = mixed_lag(c, snap->x, F_measured);
             c->P_miss = mixed_stress_miss(c, P_measured, P_hat);
         }
         else
-            sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->kn, c->relax.floor_force, c->F_now, c->a, c->m, snap->x, c->du,
+            sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->kn, sbc_relax_scale_floor(&c->relax), c->F_now, c->a, c->m, snap->x, c->du,
                                 c->dtheta, &nrm);
         c->norms = nrm;
         if (!isfinite(nrm.r_force) || !isfinite(nrm.r_moment) || !isfinite(nrm.r_deformation)) {
@@ -985,9 +1066,13 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
             return SBC_EVENT_RELAXING;
         } else if (ratio <= 1.0) {
             return accept(c, snap, err);
-        } else if (nrm.r_force > 1e3 * fmax(c->r_first, 1e3 * tol_force(c))) {
-            /* growth over the first residual of the increment; that one can be
-             * round-off small (an already periodic state), hence the floor */
+        } else if (c->s.update == SBC_UPDATE_FIXED && nrm.r_force > 1e3 * fmax(c->r_first, 1e3 * tol_force(c))) {
+            /* growth over the first residual of the increment (that one can be
+             * round-off small: an already periodic state, hence the floor) under
+             * fixed gains, which can run away; the secant update caps its
+             * corrections, and a residual that grows under it is the packing
+             * leaving an unstable equilibrium, which the servo follows to a
+             * stable one (docs/servo_bc.md, "Divergence") */
             diverged(c, &nrm, "the force residual grew more than 1000-fold", 0, err);
             return SBC_EVENT_FAILED;
         } else if (c->iteration >= c->s.max_iterations) {
@@ -1037,12 +1122,13 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
 /* Restart layout (doubles): version, Q, bc, increments, F (4), dt | increment, servo,
  * iteration, r_first, steps, norms (4), relax (steps, count, rising, past_peak,
  * ek_prev, at_rest), lambda, have_prev, win_min, prev_min, F_prev (4), F_now (4), relax (tol, known_step, ep_known,
- * ek_known, fc_known, unbalanced), motion (steps, done), P_shift (4) | result (23) | x_cmd (2Q),
+ * ek_known, fc_known, unbalanced), motion (steps, done), P_shift (4), path (force, work, sigma) | result (23) |
+ * x_cmd (2Q),
  * theta_cmd (Q), free_rot (Q), x_prev (2Q), reference X (2Q), d_prev (3Q), motion (x_from, x_goal 4Q,
  * th_from, th_goal 2Q). */
-#define STATE_VERSION 7.0
+#define STATE_VERSION 8.0
 #define STATE_HEAD 9
-#define STATE_SCALARS 39
+#define STATE_SCALARS 42
 #define STATE_RESULT 23
 
 size_t sbc_controller_state_size(const sbc_controller *c)
@@ -1132,6 +1218,9 @@ void sbc_controller_save(const sbc_controller *c, double *o)
     *o++ = (double)c->motion.steps;
     *o++ = (double)c->motion.done;
     for (k = 0; k < 4; ++k) *o++ = c->P_shift[k];
+    *o++ = c->relax.path_force;
+    *o++ = c->work_path;
+    *o++ = c->sigma_path;
     o = put_result(&c->result, o);
     for (k = 0; k < 2 * q; ++k) *o++ = c->x_cmd[k];
     for (k = 0; k < q; ++k) *o++ = c->theta_cmd[k];
@@ -1215,6 +1304,9 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     c->motion.steps = sbc_saved_int(&rd, "motion steps", 0, SAVED_COUNT);
     c->motion.done = sbc_saved_int(&rd, "motion done", 0, SAVED_COUNT);
     for (k = 0; k < 4; ++k) c->P_shift[k] = sbc_saved_real(&rd, "P_shift");
+    c->relax.path_force = sbc_saved_real(&rd, "path force");
+    c->work_path = sbc_saved_real(&rd, "path work scale");
+    c->sigma_path = sbc_saved_real(&rd, "path stress");
     get_result(&c->result, &rd, c->total);
     for (k = 0; k < 2 * q; ++k) c->x_cmd[k] = sbc_saved_real(&rd, "x_cmd");
     for (k = 0; k < q; ++k) c->theta_cmd[k] = sbc_saved_real(&rd, "theta_cmd");

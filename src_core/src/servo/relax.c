@@ -19,6 +19,7 @@ void sbc_relax_start(sbc_relax *r, sbc_criterion criterion, double tol, int wind
     r->ek_known = 0.0;
     r->fc_known = 0.0;
     r->unbalanced = 0.0;
+    r->net_known = 0.0;
 }
 
 void sbc_relax_floor(sbc_relax *r, double floor_force, double floor_energy)
@@ -27,20 +28,34 @@ void sbc_relax_floor(sbc_relax *r, double floor_force, double floor_energy)
     r->floor_energy = floor_energy;
 }
 
+double sbc_relax_scale_floor(const sbc_relax *r) { return fmax(r->floor_force, SBC_RELAX_PATH_FLOOR * r->path_force); }
+
+void sbc_relax_path(sbc_relax *r, double fc)
+{
+    if (fc > r->path_force)
+        r->path_force = fc;
+}
+
 /* ---- force balance: (a) and (b) of relax.h ---- */
 
 /* the mean contact force that scales U, with the floor, N */
 static double contact_scale(const sbc_relax *r, const sbc_relax_sample *s)
 {
     const double fc = s->contact_count > 0 ? s->contact_sum / (double)s->contact_count : 0.0;
-    return fmax(fc, r->floor_force);
+    return fmax(fc, sbc_relax_scale_floor(r));
+}
+
+int sbc_relax_balanced(const sbc_relax *r)
+{
+    return r->unbalanced <= r->tol || r->net_known <= SBC_RELAX_NET_FLOOR * r->floor_force;
 }
 
 static int force_counts(const sbc_relax *r, const sbc_relax_sample *s)
 {
     const double fc = contact_scale(r, s);
+    const double lift = r->floor_force > 0.0 ? sbc_relax_scale_floor(r) / r->floor_force : 1.0;
     return s->net_max <= fmax(r->tol * fc, SBC_RELAX_NET_FLOOR * r->floor_force) &&
-           s->ek <= fmax(0.5 * r->tol * r->tol * s->ep, r->floor_energy);
+           s->ek <= fmax(0.5 * r->tol * r->tol * s->ep, r->floor_energy * lift * lift);
 }
 
 /* ---- energy: eq. 11 past the kinetic-energy maximum ---- */
@@ -68,7 +83,8 @@ int sbc_relax_needs_contacts(const sbc_relax *r, const sbc_relax_sample *s)
     if (r->known_step == 0 || r->steps + 1 - r->known_step >= SBC_RELAX_EP_REFRESH)
         return 1;
     if (r->criterion == SBC_CRITERION_FORCE)
-        return s->net_max <= 2.0 * fmax(r->tol * fmax(r->fc_known, r->floor_force), SBC_RELAX_NET_FLOOR * r->floor_force);
+        return s->net_max <= 2.0 * fmax(r->tol * fmax(r->fc_known, sbc_relax_scale_floor(r)),
+                                        SBC_RELAX_NET_FLOOR * r->floor_force);
     {
         const int past_peak = r->past_peak || (r->steps > 0 && r->rising && ek <= r->ek_prev);
         if (ek == 0.0 || counting_limit(r, past_peak) == 0.0)
@@ -94,7 +110,10 @@ int sbc_relax_update(sbc_relax *r, const sbc_relax_sample *s)
         r->ep_known = s->ep;
         r->ek_known = s->ek;
         r->fc_known = s->contact_count > 0 ? s->contact_sum / (double)s->contact_count : 0.0;
-        r->unbalanced = contact_scale(r, s) > 0.0 ? s->net_max / contact_scale(r, s) : 0.0;
+        /* reported: against the state's own forces, or the path's once they collapsed below the floor */
+        const double fc = r->fc_known >= sbc_relax_scale_floor(r) ? r->fc_known : fmax(r->path_force, r->floor_force);
+        r->unbalanced = fc > 0.0 ? s->net_max / fc : 0.0;
+        r->net_known = s->net_max;
     }
     if (r->criterion == SBC_CRITERION_FORCE)
         ok = s->ep >= 0.0 && force_counts(r, s);
