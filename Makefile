@@ -85,6 +85,7 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	bash tests/splice_tables.sh
 	bash tests/stability.sh $(B)
 	bash tests/certify.sh $(B)
+	bash tests/replicas.sh $(B)
 	bash tests/traction_irregular.sh $(B)
 
 check-sanitize: $(B)/run_tests_san $(B)/servo-bc $(B)/servo-bc-plot $(FUZZ_REPLAY) $(B)/fuzz/corpus/restart/seed.bin

@@ -301,7 +301,7 @@ static sbc_status expect_touching(const sbc_packing *p, sbc_error *err)
     return SBC_OK;
 }
 
-static sbc_status cmd_run(script *s, sbc_error *err)
+sbc_status sbc_script_run_once(script *s, sbc_error *err)
 {
     run_state r;
     sbc_engine_def def = sbc_engine_def_default();
@@ -560,6 +560,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
     }
     if (strcmp(c, "vtk") == 0) return cmd_snapshots(nw, w, &s->vtk_every, s->vtk_prefix, err);
     if (strcmp(c, "network") == 0) return cmd_snapshots(nw, w, &s->network_every, s->network_prefix, err);
+    if (strcmp(c, "replicas") == 0) return sbc_script_replicas_command(s, nw, w, err);
     if (strcmp(c, "plot") == 0) {
         if ((st = sbc_script_expect_count(nw, w, 2, "plot FILE.svg", err)) != SBC_OK) return st;
         if (strlen(w[1]) >= SBC_NAME_LEN) return sbc_fail(err, SBC_ERR_INPUT, "plot: file name is too long");
@@ -569,11 +570,13 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
     if (strcmp(c, "run") == 0) {
         if ((st = sbc_script_expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
         s->servo_pending = 0;
-        return s->decks_dir ? sbc_script_write_decks(s, s->decks_dir, err) : cmd_run(s, err);
+        if (s->decks_dir)
+            return sbc_script_write_decks(s, s->decks_dir, err);
+        return s->replicas > 0 ? sbc_script_replicas(s, err) : sbc_script_run_once(s, err);
     }
     return sbc_fail(err, SBC_ERR_INPUT,
                     "unknown command '%s' (expected dimension, lattice, read_packing, generate, write_packing, rose, "
-                    "contact, density, timestep, servo_bc, vtk, network, plot or run)",
+                    "contact, density, timestep, servo_bc, vtk, network, plot, replicas or run)",
                     c);
 }
 

@@ -45,6 +45,10 @@ typedef struct script {
     struct bpm_script *bpm; /* after 'dimension 3': the 3D bonded particle model (script_bpm.c) */
     int actions;            /* commands that computed or wrote something (run, write_packing, rose) */
     int servo_pending;      /* a servo_bc line no run has used yet */
+    int replicas;           /* replicas K: the runs that follow are K histories (script_replicas.c); 0: one */
+    double perturb;         /* ... the interior's centres moved by up to this many radii in replicas 1 .. K-1 */
+    int jobs;               /* ... replicas run at once */
+    int replica;            /* the replica this process runs (0: the unperturbed one) */
     sbc_file_id files[SBC_SCRIPT_FILES], script_id;
     int nfiles;
 } script;
@@ -79,6 +83,13 @@ sbc_status sbc_script_rose(script *s, int nw, char **w, sbc_error *err);
 sbc_status sbc_script_bpm_begin(script *s, sbc_error *err);
 sbc_status sbc_script_bpm(script *s, int nw, char **w, sbc_error *err);
 void sbc_script_bpm_free(script *s);
+
+/* One run of the servo_bc line (script.c). */
+sbc_status sbc_script_run_once(script *s, sbc_error *err);
+
+/* replicas K [perturb EPS] [jobs J], and the runs it makes (script_replicas.c). */
+sbc_status sbc_script_replicas_command(script *s, int nw, char **w, sbc_error *err);
+sbc_status sbc_script_replicas(script *s, sbc_error *err);
 
 /* The case for every host (script_decks.c): in dir, the packing (packing.txt,
  * packing.lammps.data, packing.liggghts.data, packing.yade) and embedded.sbc,
