@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # The spread of a path, measured with `replicas` (docs/speed-accuracy.md,
 # "The spread of a path"): K histories of the same case (replica 0 plain,
-# the others with the interior's centres moved by up to 1e-4 R), J at a
+# the others with the interior's centres moved by up to 1e-6 R), J at a
 # time, at the default preset (accuracy balanced: stated accuracy 1e-4),
 # on generated packings of 34, 121, 232, 439 and 649 discs (n0 = 25 ... 600):
 #  - the irregular (P) case of Sect. 4.2 (inputs/paper/irregular_case.sh,
 #    converged set) to F12 = 0.05 in 10 increments;
 #  - the frictional mixed layer of Sect. 5 (inputs/paper/fig11.sh, converged
-#    set): P22* = -1.05e6 N/m in 6 increments, then F12 = 0.02 in 10.
+#    set, its touching packing): P22* = -1.05e6 N/m in 6 increments, then
+#    F12 = 0.02 in 10.
 # Prints one markdown row per run: the largest spread (max - min over the
 # replicas) of a sigma component over the path, absolute and relative to the
 # path's stress scale (the largest |mean sigma|), the spread of sigma12 at the

@@ -29,7 +29,7 @@ sbc_status sbc_script_replicas_command(script *s, int nw, char **w, sbc_error *e
 {
     static const char usage[] = "replicas K [perturb EPS] [jobs J]";
     long k = 0, jobs = 2;
-    double eps = 1e-4;
+    double eps = 1e-6;
     int at;
     if (nw < 2)
         return sbc_fail(err, SBC_ERR_INPUT, "replicas: missing values (expected '%s')", usage);
