@@ -49,7 +49,7 @@ printf '%s\nreplicas 3\n%s max_iterations 3 file stop.csv\nrun\n' "$head" "$word
 (cd "$tmp" && "$B/servo-bc" stop.sbc > stop.log 2>&1)
 rc=$?
 if [ $rc -ge 1 ] && [ $rc -le 125 ] && grep -q "^ERROR: replica [0-9]*: .*max_iterations" "$tmp/stop.log" &&
-   grep -q "replicas stopped (replica [0-9]* first" "$tmp/stop.log"; then
+   grep -q "replicas stopped (replica [0-9]* first" "$tmp/stop.log" && [ "$(wc -l < "$tmp/stop_replicas.csv")" = 1 ]; then
   ok "a replica that stops is named (exit $rc): $(grep -m1 '^ERROR: .*replicas:' "$tmp/stop.log" | cut -c1-140)"
 else
   no "a stopping replica (exit $rc):"; tail -n 3 "$tmp/stop.log"

@@ -5,9 +5,9 @@
  * servo_bc line names); replica k >= 1 starts from the packing with every
  * interior centre moved by a random vector of length up to EPS R_i (uniform
  * over the disc of that radius; seed k, splitmix64), and writes
- * FILE_replicaKK.csv. The summary FILE_replicas.csv holds, per increment
- * every replica reached, F of replica 0, the replica count, and the mean,
- * standard deviation, min and max of each sigma component over the
+ * FILE_replicaKK.csv. The summary FILE_replicas.csv holds, per increment,
+ * F of the first replica that reached it, how many did, and the mean,
+ * standard deviation, min and max of each sigma component over those
  * replicas: the spread of a path that the presets' stated accuracy (the
  * balance of the state reached) does not bound (docs/speed-accuracy.md). */
 #include "script_state.h"
@@ -177,7 +177,7 @@ static sbc_status summarize(script *s, int K, char *summary, size_t size, int *r
                             double *scale, sbc_error *err)
 {
     double(*rows[REPLICAS_MAX])[FIELDS];
-    int n[REPLICAS_MAX], rows_all = -1, k, i, c;
+    int n[REPLICAS_MAX], rows_all = 0, k, i, c;
     char path[2 * SBC_NAME_LEN];
     FILE *fp;
     sbc_status st = SBC_OK;
@@ -186,7 +186,7 @@ static sbc_status summarize(script *s, int K, char *summary, size_t size, int *r
         n[k] = read_rows(path, &rows[k]);
         if (n[k] < 0)
             n[k] = 0;
-        rows_all = rows_all < 0 || n[k] < rows_all ? n[k] : rows_all;
+        rows_all = n[k] > rows_all ? n[k] : rows_all; /* the longest; each row over the replicas that reached it */
     }
     replica_name(s->settings.file, -1, summary, size);
     *rows_out = rows_all;
@@ -202,21 +202,30 @@ static sbc_status summarize(script *s, int K, char *summary, size_t size, int *r
     }
     fprintf(fp, "\n");
     for (i = 0; i < rows_all; ++i) {
-        fprintf(fp, "%d,%.17g,%.17g,%.17g,%.17g,%d", (int)rows[0][i][0], rows[0][i][1], rows[0][i][2], rows[0][i][3],
-                rows[0][i][4], K);
+        int first = -1, count = 0;
+        for (k = 0; k < K; ++k)
+            if (n[k] > i) {
+                count++;
+                if (first < 0) first = k;
+            }
+        fprintf(fp, "%d,%.17g,%.17g,%.17g,%.17g,%d", (int)rows[first][i][0], rows[first][i][1], rows[first][i][2],
+                rows[first][i][3], rows[first][i][4], count);
         for (c = 9; c <= 12; ++c) { /* sigma11 .. sigma22: columns 10 .. 13 */
             double sum = 0.0, sq = 0.0, lo = HUGE_VAL, hi = -HUGE_VAL, mean;
-            for (k = 0; k < K; ++k) {
-                const double v = rows[k][i][c];
-                sum += v;
-                lo = fmin(lo, v);
-                hi = fmax(hi, v);
-            }
-            mean = sum / K;
             for (k = 0; k < K; ++k)
-                sq += (rows[k][i][c] - mean) * (rows[k][i][c] - mean);
-            fprintf(fp, ",%.17g,%.6g,%.17g,%.17g", mean, K > 1 ? sqrt(sq / (K - 1)) : 0.0, lo, hi);
-            *spread = fmax(*spread, hi - lo);
+                if (n[k] > i) {
+                    const double v = rows[k][i][c];
+                    sum += v;
+                    lo = fmin(lo, v);
+                    hi = fmax(hi, v);
+                }
+            mean = sum / count;
+            for (k = 0; k < K; ++k)
+                if (n[k] > i)
+                    sq += (rows[k][i][c] - mean) * (rows[k][i][c] - mean);
+            fprintf(fp, ",%.17g,%.6g,%.17g,%.17g", mean, count > 1 ? sqrt(sq / (count - 1)) : 0.0, lo, hi);
+            if (count > 1)
+                *spread = fmax(*spread, hi - lo);
             *scale = fmax(*scale, fabs(mean));
         }
         fprintf(fp, "\n");
@@ -287,12 +296,13 @@ sbc_status sbc_script_replicas(script *s, sbc_error *err)
         return st;
     sbc_script_files_note(s, summary, "replicas' summary");
     if (s->log)
-        fprintf(s->log, "replicas: %d increments reached by all %d replicas; the largest spread (max - min) of a "
-                "sigma component is %.4g N/m, %.3g of the stress scale %.4g N/m; summary: %s\n", rows, K, spread,
-                scale > 0.0 ? spread / scale : 0.0, scale, summary);
+        fprintf(s->log, "replicas: %d increments, each over the replicas that reached it (%d of %d reached every "
+                "one); the largest spread (max - min) of a sigma component is %.4g N/m, %.3g of the stress scale "
+                "%.4g N/m; summary: %s\n", rows, K - failed, K, spread, scale > 0.0 ? spread / scale : 0.0, scale,
+                summary);
     if (failed)
         return sbc_fail(err, SBC_ERR_DIVERGED, "replicas: %d of %d replicas stopped (replica %d first; its message "
-                        "is above); %s covers the %d increments every replica reached", failed, K, first_failed,
-                        summary, rows);
+                        "is above); %s covers each increment over the replicas that reached it (column replicas)",
+                        failed, K, first_failed, summary);
     return SBC_OK;
 }
