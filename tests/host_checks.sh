@@ -110,6 +110,27 @@ refuses() {
   refused_deck "$1" bad.in "$3"
 }
 
+# outputs_checks: the results file may not name the input deck (refused, the
+# deck intact: the core overwrites only its own files, output_file.h)
+outputs_checks() {
+  deck_with 's|file ${csv}|file self.in|' "$TMP/self.in"
+  local sum
+  sum=$(md5sum < "$TMP/self.in")
+  refused_deck "a results file that names the input deck" self.in \
+    "cannot write 'self.in': it exists and is not a servo_bc results file"
+  if [ "$(md5sum < "$TMP/self.in")" = "$sum" ]; then ok "the deck named as the results file is intact"
+  else no "the deck named as the results file was changed"; fi
+  # an output index past the fix's 21: the host itself refuses it
+  deck_with 's/^thermo_style .*/thermo_style    custom step f_servo[22]/' "$TMP/index.in"
+  run_deck 1 index.in "$TMP/index.csv" "$TMP/index.log"
+  local rc=$?
+  if [ $rc -ne 0 ] && grep -q "ERROR.*Thermo fix vector is accessed out-of-range" "$TMP/index.log"; then
+    ok "refuses an output index that does not exist (f_servo[22], by the host)"
+  else
+    no "an output index that does not exist (exit $rc):"; grep -m1 ERROR "$TMP/index.log"
+  fi
+}
+
 # bad_words_checks: every line of tests/bad_words.txt as the deck's servo_bc
 # words, refused with the core's message
 bad_words_checks() {

@@ -30,8 +30,7 @@ refuses "dampflag 1" 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pa
 refuses "a time step beyond the critical step of the lightest atom" 's/^timestep .*/timestep 2e-3/' \
   "time step 0.002 s exceeds the critical step 0.00114342 s = 2 sqrt(M / (2 kn)) of particle"
 frictional_checks 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 2e3 0 0 0.4 0/'
-refuses "an output index that does not exist (f_servo[22])" 's/^thermo_style .*/thermo_style    custom step f_servo[22]/' \
-  "Thermo fix vector is accessed out-of-range"
+outputs_checks
 refuses "a 3d box" 's/^dimension       2/dimension 3/; s/lattice         sq/lattice sc/; /enforce2d/d; s/nve\/sphere disc/nve\/sphere/' \
   "the box is 3d"
 cat > "$TMP/restart_head.in" <<LMP

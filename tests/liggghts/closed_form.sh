@@ -15,8 +15,7 @@ printf 'dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\ndensity 2e3
 "$emb" "$TMP/packing.sbc" > /dev/null || echo "servo-bc could not write the packing"
 lattice_checks
 frictional_checks 's/^fix             kt all property\/global kt peratomtypepair 2 0 0 0 0/fix             kt all property\/global kt peratomtypepair 2 2e3 2e3 2e3 2e3/'
-refuses "an output index that does not exist (f_servo[22])" 's/^thermo_style .*/thermo_style    custom step f_servo[22]/' \
-  "Thermo fix vector is accessed out-of-range"
+outputs_checks
 refuses "a 3d box" 's/^dimension       2/dimension 3/; /enforce2d/d' "the box is 3d"
 refuses "a pair style without tangential history" 's/tangential history/tangential no_history/' \
   "keeps no tangential history"
