@@ -155,6 +155,7 @@ $(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_DEV)
 check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_driver
 	bash tests/lammps/closed_form.sh $(B)/lmp_servo $(B)/plugin_driver $(B)/servo_bc_plugin.so
 	bash tests/lammps/bonds.sh $(B)/lmp_servo
+	bash tests/lammps/restart_repro.sh $(B)/lmp_servo
 
 # LIGGGHTS adapter: the LAMMPS fix source compiled against LIGGGHTS 3.8
 # (lammps_fix/fix_servo_bc.cpp with -DSERVO_BC_LIGGGHTS; the differences are in
