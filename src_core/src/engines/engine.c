@@ -120,7 +120,7 @@ sbc_engine *sbc_engine_create(const sbc_engine_def *d, sbc_error *err)
             return NULL;
         }
         e->r[k] = R;
-        e->mass[k] = d->density * (M_PI * R * R);        /* M = rho pi R^2, kg */
+        e->mass[k] = d->density * M_PI * R * R;          /* M = rho pi R^2, kg */
         e->inv_m[k] = 1.0 / e->mass[k];
         e->inv_I[k] = 1.0 / (0.5 * e->mass[k] * R * R); /* I = M R^2 / 2 (eq. 9) */
         if (!isfinite(e->mass[k]) || !(e->inv_m[k] > 0.0) || !isfinite(e->inv_m[k]) || !(e->inv_I[k] > 0.0) ||

@@ -582,10 +582,14 @@ static sbc_status measure(sbc_controller *c, const sbc_snapshot *snap, sbc_error
                         "servo_bc %s: increment %d: det F = %g <= 0 (F = [%g %g; %g %g]): the frame is inverted or "
                         "collapsed",
                         sbc_bc_name(c->s.bc), c->increment, sbc_det2(r->F), r->F[0], r->F[1], r->F[2], r->F[3]);
-    /* a stress collapsed below the path floor is judged on the path's scale (relax.h) */
+    /* a stress collapsed below the path floor is judged on the path's scale
+       (relax.h), and none below the round-off floor's stress, kn 1e-10 (the
+       force floor of set_floors over the sample's size): a stress-free state
+       has a Hill-Mandel residual of round-off size, not of its own scale */
     scale = sbc_homogenize_work_scale(r->P, r->F);
     if (scale < SBC_RELAX_PATH_FLOOR * c->work_path)
         scale = c->work_path;
+    scale = fmax(scale, 1e-10 * c->kn);
     r->hill_mandel = sbc_homogenize_hill_mandel(f, c->a, snap->x, r->F, r->P);
     if (scale > 0.0)
         r->hill_mandel /= scale;

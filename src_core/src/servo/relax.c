@@ -52,8 +52,9 @@ int sbc_relax_balanced(const sbc_relax *r)
 
 static int force_counts(const sbc_relax *r, const sbc_relax_sample *s)
 {
-    const double fc = contact_scale(r, s);
-    const double lift = r->floor_force > 0.0 ? sbc_relax_scale_floor(r) / r->floor_force : 1.0;
+    const double fc = contact_scale(r, s), mean = s->contact_count > 0 ? s->contact_sum / (double)s->contact_count : 0.0;
+    /* below the path floor, the energy floor rises with it (a state of its forces is at rest) */
+    const double lift = r->floor_force > 0.0 && mean < sbc_relax_scale_floor(r) ? sbc_relax_scale_floor(r) / r->floor_force : 1.0;
     return s->net_max <= fmax(r->tol * fc, SBC_RELAX_NET_FLOOR * r->floor_force) &&
            s->ek <= fmax(0.5 * r->tol * r->tol * s->ep, r->floor_energy * lift * lift);
 }
@@ -110,8 +111,13 @@ int sbc_relax_update(sbc_relax *r, const sbc_relax_sample *s)
         r->ep_known = s->ep;
         r->ek_known = s->ek;
         r->fc_known = s->contact_count > 0 ? s->contact_sum / (double)s->contact_count : 0.0;
-        /* reported: against the state's own forces, or the path's once they collapsed below the floor */
-        const double fc = r->fc_known >= sbc_relax_scale_floor(r) ? r->fc_known : fmax(r->path_force, r->floor_force);
+        /* reported: against the state's own forces, or the path's once they
+           collapsed below the floor, and never against less than the force
+           whose tol is the round-off rule's net force (force_counts: then U <=
+           tol exactly when (a) holds) */
+        double fc = r->fc_known >= sbc_relax_scale_floor(r) ? r->fc_known : fmax(r->path_force, r->floor_force);
+        if (r->tol > 0.0)
+            fc = fmax(fc, SBC_RELAX_NET_FLOOR * r->floor_force / r->tol);
         r->unbalanced = fc > 0.0 ? s->net_max / fc : 0.0;
         r->net_known = s->net_max;
     }
