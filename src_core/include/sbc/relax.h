@@ -118,7 +118,8 @@ int sbc_relax_balanced(const sbc_relax *r);
 void sbc_relax_start(sbc_relax *r, sbc_criterion criterion, double tol, int window, int at_rest);
 
 /* Absolute floors of the force criterion: forces below floor_force (N) are
- * round-off; energies below floor_energy (J) too. */
+ * round-off; energies below floor_energy (J) too. Starts the path's scale
+ * (path_force) at 0: call it once per loading path, before sbc_relax_start. */
 void sbc_relax_floor(sbc_relax *r, double floor_force, double floor_energy);
 
 /* Records one step; returns 1 when the criterion has held for the whole

@@ -26,6 +26,7 @@ void sbc_relax_floor(sbc_relax *r, double floor_force, double floor_energy)
 {
     r->floor_force = floor_force;
     r->floor_energy = floor_energy;
+    r->path_force = 0.0; /* a new path: no increment converged yet */
 }
 
 double sbc_relax_scale_floor(const sbc_relax *r) { return fmax(r->floor_force, SBC_RELAX_PATH_FLOOR * r->path_force); }
