@@ -29,9 +29,6 @@ typedef enum sbc_output_kind {
     SBC_OUTPUT_DECK         /* the hosts' inputs of servo-bc --decks */
 } sbc_output_kind;
 
-/* "results file", "VTK file", ... */
-const char *sbc_output_kind_name(sbc_output_kind kind);
-
 /* Opens path for writing an output of KIND as above; NULL with err set
  * ("WHAT: cannot write 'path': the reason") otherwise. */
 FILE *sbc_output_open(const char *path, sbc_output_kind kind, const char *what, sbc_error *err);

@@ -22,8 +22,6 @@ static const struct {
     [SBC_OUTPUT_DECK] = {"deck", NULL, "(servo-bc --decks)"},
 };
 
-const char *sbc_output_kind_name(sbc_output_kind kind) { return kinds[kind].name; }
-
 int sbc_output_folder(const char *path)
 {
     size_t len = strlen(path), k;
