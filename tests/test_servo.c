@@ -8,6 +8,7 @@
 
 #include "sbc/controller.h"
 #include "sbc/engine.h"
+#include "sbc/generate.h"
 #include "sbc/homogenize.h"
 #include "sbc/packing.h"
 #include "sbc/script.h"
@@ -25,13 +26,15 @@ typedef struct final_state {
     char message[SBC_ERROR_LEN];
 } final_state;
 
-/* Runs a 5 x 5 lattice (spacing 2 mm, R 1.02 mm, kn 1e4, ks, mu 0.4,
- * density 2e3, dt 1e-5) with the given servo_bc words to the end. */
-static void run_lattice(const char *words, double ks, final_state *out)
+/* Runs the packing p (kn 1e4, ks, mu 0.4, density 2e3, dt 1e-5) with the
+ * given servo_bc words to the end; p is freed. A host that misreports: with
+ * misreport > 0 the snapshot's frame positions are off those of the engine
+ * by misreport radii, +/- alternately along the frame (a non-affine
+ * pattern). */
+static void run_packing(sbc_packing p, const char *words, double ks, double misreport, final_state *out)
 {
     char buf[512], *w[64];
     int nw = 0, q;
-    sbc_packing p;
     sbc_settings s;
     sbc_error err;
     sbc_engine_def def = sbc_engine_def_default();
@@ -44,8 +47,7 @@ static void run_lattice(const char *words, double ks, final_state *out)
         ;
     out->status = sbc_settings_parse(&s, nw, (const char *const *)w, &err);
     CHECK(out->status == SBC_OK);
-    sbc_packing_lattice_square(&p, 5, 5, 2e-3, 1.02e-3, &err);
-    sbc_frame_detect(&out->frame, p.n, p.x, p.r, 0.0, &err);
+    sbc_frame_detect_packing(&out->frame, &p, &err);
     def.n = p.n;
     def.x = p.x;
     def.r = p.r;
@@ -62,11 +64,20 @@ static void run_lattice(const char *words, double ks, final_state *out)
         snprintf(out->message, sizeof out->message, "%s", err.message);
     }
     CHECK(c != NULL || (out->status == SBC_ERR_INPUT && out->message[0]));
+    double *reported = malloc(sizeof(double) * 2 * (size_t)out->frame.n);
     for (; c;) {
         sbc_event ev;
         sbc_commands cmd;
         sbc_engine_step(e, &err);
         sbc_engine_snapshot(e, &snap);
+        if (misreport > 0.0) {
+            for (q = 0; q < out->frame.n; ++q) {
+                const double d = (q % 2 ? misreport : -misreport) * out->frame.R[q];
+                reported[2 * q] = snap.x[2 * q] + d;
+                reported[2 * q + 1] = snap.x[2 * q + 1] - d;
+            }
+            snap.x = reported;
+        }
         ev = sbc_controller_step(c, &snap, &err);
         if (ev == SBC_EVENT_FAILED) {
             out->status = err.status;
@@ -93,9 +104,19 @@ static void run_lattice(const char *words, double ks, final_state *out)
         cmd = sbc_controller_commands(c);
         sbc_engine_move_frame(e, &cmd);
     }
+    free(reported);
     sbc_controller_free(c);
     sbc_engine_free(e);
     sbc_packing_free(&p);
+}
+
+/* the 5 x 5 lattice: spacing 2 mm, R 1.02 mm */
+static void run_lattice(const char *words, double ks, final_state *out)
+{
+    sbc_packing p;
+    sbc_error err;
+    CHECK(sbc_packing_lattice_square(&p, 5, 5, 2e-3, 1.02e-3, &err) == SBC_OK);
+    run_packing(p, words, ks, 0.0, out);
 }
 
 static void final_free(final_state *f)
@@ -362,6 +383,43 @@ static void divergence(void)
     CHECK(csv_read(csv, rows, 8) >= 0); /* header at least, every field finite */
 }
 
+/* Certified rows (docs/servo_bc.md): on an irregular packing under load
+ * (n0 30, strain 0.01), a host whose reported frame positions are 0.01 radii
+ * off the engine's, alternately, breaks eq. 30 (its residual is
+ * sum (a_q - P A_q) . dx_q / V, and a_q != P A_q off a lattice); under (D) at
+ * tight the Hill-Mandel residual of the first row exceeds the stated 1e-6 and
+ * the run stops naming it, the increment and the frame particle farthest from
+ * F X (0.01 radii: sqrt(2) 0.01 = 0.0141), instead of writing the row. The
+ * same host reporting truly passes. */
+static void irregular(sbc_packing *p)
+{
+    sbc_generate_def g = sbc_generate_def_default();
+    sbc_error err;
+    g.n = 30;
+    g.strain = 0.01;
+    CHECK(sbc_generate_periodic(&g, p, NULL, &err) == SBC_OK);
+}
+
+static void certification_failure(void)
+{
+    final_state f;
+    sbc_packing p;
+    const char *hm;
+    irregular(&p);
+    run_packing(p, "D F 0.99 0 0 0.99 increments 2 accuracy tight", 2e3, 0.01, &f);
+    CHECK(f.status == SBC_ERR_DIVERGED);
+    hm = strstr(f.message, "|hill_mandel| ");
+    CHECK(strstr(f.message, "servo_bc D: increment 0, iteration 0: the state reached cannot be certified at accuracy "
+                            "tight") != NULL);
+    CHECK(hm && strtod(hm + 14, NULL) > 1e-6 && strstr(hm, "> the stated accuracy 1e-06"));
+    CHECK(strstr(f.message, "is 0.0141 radii from F X") && strstr(f.message, "the row is not written"));
+    final_free(&f);
+    irregular(&p);
+    run_packing(p, "D F 0.99 0 0 0.99 increments 2 accuracy tight", 2e3, 0.0, &f);
+    CHECK(f.status == SBC_OK && fabs(f.result.hill_mandel) <= 1e-6);
+    final_free(&f);
+}
+
 /* With the frame moved in one step (speed 0, accuracy paper), an increment
  * whose first step would move a frame particle by more than half a radius is
  * refused, with the jump in radii and how many more
@@ -400,5 +458,6 @@ void test_servo(void)
     dirichlet_hill_mandel();
     prediction();
     divergence();
+    certification_failure();
     first_step_jump();
 }

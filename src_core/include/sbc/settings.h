@@ -63,7 +63,7 @@ typedef struct sbc_settings {
     double tol_relative;     /* > 0: force and moment residuals relative to the frame's own forces
                                 (servo.h) must fall below this instead of tol_force, tol_moment; 0 */
     double predict;          /* inheritance factor n_f in [0, 1]; 0 = no prediction */
-    int max_iterations;      /* servo iterations per increment; 10000 */
+    int max_iterations;      /* servo iterations per increment; 100000 */
     int seal;                /* 1: the edges of the frame's polygon are walls for the interior (seal.h); 0 */
     sbc_update update;       /* fixed (the paper's) or secant; fixed */
     char accuracy[16];       /* preset in force (keyword accuracy; balanced by default) */

@@ -794,7 +794,7 @@ static int certified(const sbc_controller *c, const sbc_snapshot *snap, sbc_erro
         if (d > worst)
             worst = d, at = q;
     }
-    if (c->s.bc != SBC_BC_D && f->n > 0)
+    if (f->n > 0)
         snprintf(moved, sizeof moved, "; frame particle %d (position %d of the frame) is %.3g radii from F X",
                  f->particle[at], at, worst);
     sbc_fail(err, SBC_ERR_DIVERGED,
@@ -1040,18 +1040,20 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
         int k;
         /* Tables 2-3: after the initial relaxation (1.2) correct at once (1.3);
          * after each later relaxation (1.4) check the residuals (1.5-1.6). */
+        const sbc_servo_floors floors = {sbc_relax_scale_floor(&c->relax),
+                                         SBC_RELAX_NET_FLOOR * c->relax.floor_force};
         if (c->s.bc == SBC_BC_MIXED) {
             double target[4];
             for (k = 0; k < 4; ++k)
                 target[k] = c->P_star[k] + c->P_shift[k];
-            sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->kn, sbc_relax_scale_floor(&c->relax), target, c->P_fixed, c->a, c->m, c->du,
-                            c->dtheta, &nrm);
+            sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->kn, &floors, target, c->P_fixed, c->a, c->m,
+                            c->du, c->dtheta, &nrm);
             nrm.r_deformation = mixed_lag(c, snap->x, F_measured);
             c->P_miss = mixed_stress_miss(c, P_measured, P_hat);
         }
         else
-            sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->kn, sbc_relax_scale_floor(&c->relax), c->F_now, c->a, c->m, snap->x, c->du,
-                                c->dtheta, &nrm);
+            sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->kn, &floors, c->F_now, c->a, c->m, snap->x,
+                                c->du, c->dtheta, &nrm);
         c->norms = nrm;
         if (!isfinite(nrm.r_force) || !isfinite(nrm.r_moment) || !isfinite(nrm.r_deformation)) {
             sbc_fail(err, SBC_ERR_NUMERIC, "servo_bc %s: increment %d, iteration %d: non-finite residual",

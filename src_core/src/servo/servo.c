@@ -25,14 +25,29 @@ typedef struct raw_sums {
     double kn;           /* the host's contact stiffness, N/m (0: unknown) */
     double floor;        /* force floor, N (the force criterion's, relax.h) */
     double fs_lo, ms_lo; /* the scales' floors: floor^2 and (floor R)^2 summed like fs, ms */
+    double roundoff;     /* round-off force, N (relax.h) */
+    double fr_lo, mr_lo; /* roundoff^2 and (roundoff R)^2 summed like fr, mr */
 } raw_sums;
 
-static raw_sums no_sums(double kn, double floor)
+static raw_sums no_sums(double kn, const sbc_servo_floors *floors)
 {
-    raw_sums w = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    raw_sums w = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     w.kn = kn;
-    w.floor = floor;
+    w.floor = floors->scale;
+    w.roundoff = floors->roundoff;
     return w;
+}
+
+/* one force residual da (N) of a particle or pair of radius R, and one moment
+ * residual dm (N m) if moment */
+static void add_residual(raw_sums *w, double da2, double R, int moment, double dm)
+{
+    w->fr += da2;
+    w->fr_lo += w->roundoff * w->roundoff;
+    if (moment) {
+        w->mr += dm * dm;
+        w->mr_lo += w->roundoff * w->roundoff * R * R;
+    }
 }
 
 /* The gains. update fixed: the paper's, from the dimensionless values of
@@ -71,12 +86,21 @@ static void add_scale(raw_sums *w, const double *a, double R)
  * tol_relative r_force and r_moment so: 0 when there is neither residual nor
  * force. Frame forces below the floor count as the floor: a packing that has
  * come apart (no stress to be relative to) is converged once its residual
- * forces are below the floor too. */
+ * forces are below the floor too. With tol_relative eps, the scale is never
+ * below the force whose eps-th part is the round-off force: residuals whose
+ * root mean square per frame particle is below it meet eps, as a net force
+ * below it does in the relaxation (relax.h); eps times a floor can lie below
+ * the round-off of the forces (tight: 1e-7 of the path floor). */
 static void relative_norms(const sbc_settings *s, const raw_sums *w, sbc_servo_norms *o)
 {
-    const double fs = fmax(w->fs, w->fs_lo), ms = fmax(w->ms, w->ms_lo);
+    const double eps2 = s->tol_relative * s->tol_relative;
+    double fs = fmax(w->fs, w->fs_lo), ms = fmax(w->ms, w->ms_lo);
+    if (eps2 > 0.0) {
+        fs = fmax(fs, w->fr_lo / eps2);
+        ms = fmax(ms, w->mr_lo / eps2);
+    }
     o->relative_force = w->fr > 0.0 ? (fs > 0.0 ? sqrt(w->fr / fs) : 1.0) : 0.0;
-    if (!(s->tol_relative > 0.0))
+    if (!(eps2 > 0.0))
         return;
     o->r_force = o->relative_force;
     o->r_moment = w->mr > 0.0 ? (ms > 0.0 ? sqrt(w->mr / ms) : 1.0) : 0.0;
@@ -96,8 +120,7 @@ static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const doubl
     double u0 = -ga * da0, u1 = -ga * da1, step;
     *sf += (da0 * da0 + da1 * da1) / (at * at);
     *sm += dm * dm / (mt * mt);
-    w->fr += da0 * da0 + da1 * da1;
-    w->mr += dm * dm;
+    add_residual(w, da0 * da0 + da1 * da1, R, 1, dm);
     add_scale(w, &a[2 * q], f->R[q]);
     add_scale(w, &a[2 * p], f->R[p]);
     du[2 * q] = du[2 * p] = u0;
@@ -109,11 +132,11 @@ static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const doubl
     if (step > o->max_step) o->max_step = step;
 }
 
-static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double kn, double floor,
+static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double kn, const sbc_servo_floors *floors,
                            const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double sf = 0.0, sm = 0.0, dmc = 0.0, mc = 0.0, rc = 0.0;
-    raw_sums w = no_sums(kn, floor);
+    raw_sums w = no_sums(kn, floors);
     int q, c;
     for (q = 0; q < f->n; ++q)
         if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT) /* each pair once */
@@ -126,6 +149,7 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
         add_scale(&w, &a[2 * qc], f->R[qc]);
     }
     w.mr += dmc * dmc;
+    w.mr_lo += w.roundoff * w.roundoff * rc * rc;
     {
         double mt = mc * rc * rc / (dt * dt);
         double gm = gain_moment(s, &w, dt, mc, rc);
@@ -153,12 +177,12 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
  * imposed F. Gains: g_a = G_a dt^2 / M_q, g_F = G_F / R_q^2; normalizations of
  * eq. 37: a~ = M R / dt^2, F~ = R^3. O(Q^2) for the sum over r; the frame
  * is O(sqrt N) particles, so this stays far below the cost of a DEM step. */
-static void servo_traction(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double kn, double floor,
+static void servo_traction(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double kn, const sbc_servo_floors *floors,
                            const double F[4], const double *a, const double *x, double *du, double *dtheta,
                            sbc_servo_norms *o)
 {
     double P[4], sf = 0.0, sd = 0.0;
-    raw_sums w = no_sums(kn, floor);
+    raw_sums w = no_sums(kn, floors);
     int q, r;
     /* eq. 23 */
     for (q = 0; q < 4; ++q)
@@ -185,7 +209,7 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
         }
         sf += (da0 * da0 + da1 * da1) / (at * at);
         sd += (dF0 * dF0 + dF1 * dF1) / (Ft * Ft);
-        w.fr += da0 * da0 + da1 * da1;
+        add_residual(&w, da0 * da0 + da1 * da1, R, 0, 0.0);
         add_scale(&w, &a[2 * q], R);
         {
             const double t[2] = {P[0] * A[0] + P[1] * A[1], P[2] * A[0] + P[3] * A[1]};
@@ -208,14 +232,14 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
 }
 
 void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                         double kn, double floor, const double F[4], const double *a, const double *m, const double *x,
+                         double kn, const sbc_servo_floors *floors, const double F[4], const double *a, const double *m, const double *x,
                          double *du, double *dtheta, sbc_servo_norms *out)
 {
     out->max_step = 0.0;
     if (bc == SBC_BC_P)
-        servo_periodic(f, s, mass, dt, kn, floor, a, m, du, dtheta, out);
+        servo_periodic(f, s, mass, dt, kn, floors, a, m, du, dtheta, out);
     else
-        servo_traction(f, s, mass, dt, kn, floor, F, a, x, du, dtheta, out);
+        servo_traction(f, s, mass, dt, kn, floors, F, a, x, du, dtheta, out);
 }
 
 /* Mixed, Table 5 with the modes as data (mode[2q + c] = sbc_mode):
@@ -227,11 +251,11 @@ void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, c
  * r_force gathers the force residuals of P pairs and T components (r_a^p and
  * r_a^t of Table 5, one tolerance); r_moment those of the P pairs. */
 void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_settings *s, const double *mass,
-                     double dt, double kn, double floor, const double P_star[4], const unsigned char P_fixed[4],
+                     double dt, double kn, const sbc_servo_floors *floors, const double P_star[4], const unsigned char P_fixed[4],
                      const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
     double P[4] = {0.0, 0.0, 0.0, 0.0}, sf = 0.0, sm = 0.0;
-    raw_sums w = no_sums(kn, floor);
+    raw_sums w = no_sums(kn, floors);
     int q, k;
     o->max_step = 0.0;
     sbc_homogenize_P(f, a, P); /* eq. 23 */
@@ -256,9 +280,9 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
                 continue;
             da = P[2 * c] * A[0] + P[2 * c + 1] * A[1] - a[2 * q + c];
             sf += da * da / (at * at);
-            w.fr += da * da;
+            add_residual(&w, da * da, R, 0, 0.0);
             w.fs += a[2 * q + c] * a[2 * q + c] + (da + a[2 * q + c]) * (da + a[2 * q + c]); /* measured and target */
-            w.fs_lo += 2.0 * floor * floor;
+            w.fs_lo += 2.0 * w.floor * w.floor;
             du[2 * q + c] = ga * da;
             step = fabs(ga * da) / R;
             if (step > o->max_step) o->max_step = step;

@@ -17,20 +17,28 @@ typedef struct sbc_servo_norms {
     double max_step;      /* largest correction, relative to the particle's radius */
 } sbc_servo_norms;
 
+/* Force floors of the relative norms, N (relax.h): frame forces below scale
+ * count as scale; residuals whose root mean square per frame particle is
+ * below roundoff count as none. */
+typedef struct sbc_servo_floors {
+    double scale;
+    double roundoff;
+} sbc_servo_floors;
+
 /* Residual norms of the state (a [2Q] boundary forces, m [Q] boundary
  * moments, x [2Q] positions) and the corrections (eqs. 33-34 for P, 36 for
  * T) written to du [2Q] (m) and dtheta [Q] (rad). F is the imposed
  * macroscopic deformation gradient, mass [Q] in kg, dt in s; kn (N/m) the
- * host's contact stiffness (0: unknown), for the secant update's gains; floor (N): frame
- * forces below it count as it in the relative norms (relax.h). */
+ * host's contact stiffness (0: unknown), for the secant update's gains; floors:
+ * those of the relative norms. */
 void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                         double kn, double floor, const double F[4], const double *a, const double *m, const double *x,
+                         double kn, const sbc_servo_floors *floors, const double F[4], const double *a, const double *m, const double *x,
                          double *du, double *dtheta, sbc_servo_norms *out);
 
 /* Mixed (D)-(P)-(T), Table 5 and eq. 48, with the modes per frame component
  * (mode [2Q], sbc_mode) and the stress targets P_star where P_fixed. */
 void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_settings *s, const double *mass,
-                     double dt, double kn, double floor, const double P_star[4], const unsigned char P_fixed[4],
+                     double dt, double kn, const sbc_servo_floors *floors, const double P_star[4], const unsigned char P_fixed[4],
                      const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o);
 
 #endif

@@ -25,7 +25,7 @@ sbc_settings sbc_settings_default(void)
     s.tol_force = 1.0e-6;
     s.tol_moment = 1.0e-6;
     s.predict = 0.0;
-    s.max_iterations = 10000;
+    s.max_iterations = 100000;
     sbc_mixed_default(&s);
     sbc_settings_preset(&s, "balanced");
     return s;
