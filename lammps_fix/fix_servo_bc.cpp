@@ -248,6 +248,11 @@ void FixServoBC::init()
       fail(std::string(err.message) + (strstr(err.message, "particle")
                                             ? " (particle = atom ID; discs need a disc's mass: 'set mass', not 'set density')"
                                             : ""));
+    char note[SBC_ERROR_LEN];
+    if (comm->me == 0 && !slow_step_noted && lightest.mass < 1e300 &&
+        sbc_time_step_note_mass(&settings, update->dt, law.kn, lightest.mass, note, sizeof note))
+      error->warning(FLERR, (std::string("Fix servo_bc: ") + (strncmp(note, "servo_bc: ", 10) ? note : note + 10)).c_str());
+    slow_step_noted = 1;
   }
   {    // every interior atom is integrated by some fix (else the servo waits for ever)
     int orphans = 0, all = 0;

@@ -96,6 +96,7 @@ class FixServoBC : public Fix {
   int seal_on;                       // seal initialised
   std::vector<double> seal_reaction; // [2Q] the walls' reactions on the frame from this rank's atoms, N
   double seal_energy;                // the walls' energy from this rank's atoms, J
+  int slow_step_noted = 0;           // the time step's note (time_step.h) given, once per fix
 
   void find_contacts();
   void seal_pass();

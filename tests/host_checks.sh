@@ -113,6 +113,7 @@ refuses() {
 # outputs_checks: the results file may not name the input deck (refused, the
 # deck intact: the core overwrites only its own files, output_file.h)
 outputs_checks() {
+  slow_step_check
   deck_with 's|file ${csv}|file self.in|' "$TMP/self.in"
   local sum
   sum=$(md5sum < "$TMP/self.in")
@@ -128,6 +129,20 @@ outputs_checks() {
     ok "refuses an output index that does not exist (f_servo[22], by the host)"
   else
     no "an output index that does not exist (exit $rc):"; grep -m1 ERROR "$TMP/index.log"
+  fi
+}
+
+# slow_step_check: a time step of 1/1143 of the critical step runs (a short
+# run, exit 0) with the core's warning (time_step.h)
+slow_step_check() {
+  deck_with '/jump SELF loop/d; s/^timestep .*/timestep 1e-6/; s/^run  *[1-9][0-9]*.*/run 100/' "$TMP/slow.in"
+  run_deck 1 slow.in "$TMP/slow.csv" "$TMP/slow.log"
+  local rc=$?
+  if [ $rc -eq 0 ] && [ "$(grep -c "WARNING: Fix servo_bc: time step 1e-06 s is 1/1143 of the critical step 0.00114342 s" \
+       "$TMP/slow.log")" = 1 ]; then
+    ok "warns once of a time step of 1/1143 of the critical step"
+  else
+    no "no warning (or more than one) at a time step of 1/1143 of the critical step (exit $rc):"; grep -m2 -E 'WARN|ERROR' "$TMP/slow.log"
   fi
 }
 

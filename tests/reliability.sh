@@ -20,7 +20,7 @@ cp "$here"/reliability/* "$TMP"/
 chmod u+w "$TMP"/*
 
 # the runner reproducers whose input is legitimate: the run must succeed
-legitimate="runner_acc_as_value2.sbc runner_r3_D_ignores_P_keywords.sbc"
+legitimate="runner_acc_as_value2.sbc runner_r3_D_ignores_P_keywords.sbc runner_r3_lattice_slow_step.sbc"
 for f in "$TMP"/runner_*.sbc; do
   name=$(basename "$f")
   # the inputs (scripts, packings, restart blocks) must be there after the run, unchanged
@@ -47,6 +47,19 @@ for f in "$TMP"/runner_*.sbc; do
     no "$name: exit $rc (expected 1-125 with an ERROR line)"; tail -n 2 "$TMP/$name.err"
   fi
 done
+
+# a time step far below the critical one: warned, and as accurate as at 0.087 of it
+# (sigma11 within the balance's 1e-5 of each other)
+sed 's/timestep 1e-6/timestep 1e-4/; s/slow_step.csv/usual_step.csv/' "$TMP/runner_r3_lattice_slow_step.sbc" > "$TMP/usual_step.sbc"
+(cd "$TMP" && timeout 120 "$runner" usual_step.sbc > usual_step.out 2>&1)
+slow=$(tail -n 1 "$TMP/slow_step.csv" | cut -d, -f10) usual=$(tail -n 1 "$TMP/usual_step.csv" | cut -d, -f10)
+if grep -q "^WARNING: servo_bc: time step 1e-06 s is 1/1143 of the critical step" "$TMP/runner_r3_lattice_slow_step.sbc.out" &&
+   ! grep -q "^WARNING" "$TMP/usual_step.out" &&
+   awk -v a="$slow" -v b="$usual" 'BEGIN { d = a - b; exit !(a < 0 && (d < 0 ? -d : d) <= 1e-5 * (b < 0 ? -b : b)) }'; then
+  ok "slow time step: warned at 1/1143 of the critical step, sigma11 $slow against $usual N/m at 1e-4 s"
+else
+  no "slow time step: warning or sigma11 ($slow against $usual N/m)"; head -n 3 "$TMP/runner_r3_lattice_slow_step.sbc.out"
+fi
 
 # round 3 (docs/reliability.md): the runner's files, each refused by name with the inputs intact
 refused_by() {  # LABEL EXPECTED-TEXT RC ERRFILE [FILE-THAT-MUST-BE-INTACT SUM]

@@ -239,9 +239,56 @@ static void bad_input(void)
     refused("D file /dev/null/dir/x.csv", 0, NULL, "cannot write '/dev/null/dir/x.csv'");
 }
 
+/* sbc_host_warning: the words' note and the time step's, one per line; a
+ * time step of 1e-6 s is 1/1143 of the lattice's critical step 1.143e-3 s
+ * (noted below 1/500), 1e-5 s 1/114 (not); none under update fixed */
+static void warnings(void)
+{
+    static const struct {
+        const char *words;
+        double dt;
+        const char *first, *second;
+    } cases[] = {
+        {"D F 0.99 0 0 0.99", 1e-5, NULL, NULL},
+        {"D F 0.99 0 0 0.99", 1e-6, "servo_bc: time step 1e-06 s is 1/1143 of the critical step 0.00114342 s", NULL},
+        {"D F 0.99 0 0 0.99 tol_relative 1e-3", 1e-6, "tol_relative", "\nservo_bc: time step 1e-06 s is 1/1143"},
+        {"D F 0.99 0 0 0.99 tol_relative 1e-3", 1e-5, "tol_relative", NULL},
+        {"P F 0.99 0 0 0.99 update fixed", 1e-6, NULL, NULL},
+        {"P F 0.99 0 0 0.99 accuracy paper", 1e-6, NULL, NULL},
+    };
+    sbc_packing p;
+    sbc_error err;
+    double mass[25];
+    int k, i;
+    CHECK(sbc_packing_lattice_square(&p, 5, 5, 2e-3, 1.02e-3, &err) == SBC_OK);
+    for (k = 0; k < p.n; ++k)
+        mass[k] = 2e3 * 3.14159265358979323846 * 1.02e-3 * 1.02e-3;
+    for (i = 0; i < (int)(sizeof cases / sizeof cases[0]); ++i) {
+        char msg[1024] = "";
+        sbc_host *h = sbc_host_create(cases[i].words, p.n, p.x, p.r, mass, 0, NULL, cases[i].dt, 1e4, msg, sizeof msg);
+        int warned;
+        CHECK(h != NULL);
+        if (!h)
+            continue;
+        warned = sbc_host_warning(h, msg, sizeof msg);
+        CHECK(warned == (cases[i].first != NULL));
+        {
+            const char *at = cases[i].first ? strstr(msg, cases[i].first) : NULL, *nl = strchr(msg, '\n');
+            CHECK(!cases[i].first || (at && (!nl || at < nl))); /* on the first line */
+        }
+        CHECK(!cases[i].second || strstr(msg, cases[i].second) != NULL);
+        CHECK(cases[i].second || !warned || !strchr(msg, '\n'));
+        if (warned != (cases[i].first != NULL))
+            printf("  '%s' at %g s: warning %d '%s'\n", cases[i].words, cases[i].dt, warned, msg);
+        sbc_host_free(h);
+    }
+    sbc_packing_free(&p);
+}
+
 void test_host(void)
 {
     lazy_equals_full();
     escape();
     bad_input();
+    warnings();
 }

@@ -393,9 +393,10 @@ class ServoBC(object):
         self._seal_energy = ctypes.c_double(0.0)
         print('servo_bc %s: %s on %d bodies, frame of %d, kn %g N/m' % (version(), words.split()[0], n, self.Q,
                                                                           self.kn), flush=True)
-        warning = ctypes.create_string_buffer(512)
-        if lib.sbc_host_warning(self._h, warning, 512):
-            print('servo_bc: WARNING: %s' % warning.value.decode(), flush=True)
+        warning = ctypes.create_string_buffer(2048)
+        if lib.sbc_host_warning(self._h, warning, 2048):
+            for line in warning.value.decode().splitlines():
+                print('servo_bc: WARNING: %s' % line, flush=True)
         self._apply_commands()
 
     def _frame_list(self, words):

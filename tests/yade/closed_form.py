@@ -1,6 +1,8 @@
 # The YADE engine on the closed-form lattice of tests/test_lattice.c, and its
 # refusals. Run: yade -n -x tests/yade/closed_form.py PACKING (a 5 x 5 lattice,
 # spacing 2 mm, R = 1.02 mm, written by the runner). Prints "N passed, N failed".
+import contextlib
+import io
 import math
 import os
 import sys
@@ -134,6 +136,17 @@ try:
     check(False, 'sphere mass: accepted at 1e-4 s')
 except servo_bc.ServoBCError as e:
     check('exceeds the critical step' in str(e) and 'of particle 7 (mass 8.89' in str(e), 'sphere mass: %s' % e)
+
+# a time step of 1/1143 of the critical step: accepted, with the core's warning
+# (time_step.h) printed once, as one line
+servo_bc.O.reset()
+ids, _ = servo_bc.load_packing(packing, 2e3, 1e4, 2e3, 0.4)
+printed = io.StringIO()
+with contextlib.redirect_stdout(printed):
+    servo_bc.ServoBC('D F 0.999 0 0 0.999', ids, 1e-6, 1e4)
+slow = [l for l in printed.getvalue().splitlines() if l.startswith('servo_bc: WARNING: ')]
+check(len(slow) == 1 and 'servo_bc: WARNING: servo_bc: time step 1e-06 s is 1/1143 of the critical step 0.00114342 s'
+      in slow[0], 'a slow time step: %s' % (slow or 'no warning'))
 
 # a diverging controller stops the run with the core's message, no NaN
 servo_bc.O.reset()

@@ -27,8 +27,9 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
                           const int *list, double dt, double kn, char *msg, size_t cap);
 void sbc_host_free(sbc_host *h);
 
-/* A warning about the words (sbc_settings_ignored_message): 1 with the
- * message in msg [cap], 0 when there is none. */
+/* A warning about the words (sbc_settings_ignored_message) and the time
+ * step (sbc_time_step_note), one per line: 1 with the message in msg [cap],
+ * 0 when there is none. */
 int sbc_host_warning(const sbc_host *h, char *msg, size_t cap);
 
 /* The damping the words ask for (sbc_damping of settings.h: 0 none, 1 eq.

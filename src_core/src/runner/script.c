@@ -393,6 +393,8 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         char note[SBC_ERROR_LEN];
         if (s->log && sbc_settings_ignored_message(&s->settings, note, sizeof note))
             fprintf(s->log, "WARNING: %s\n", note);
+        if (s->log && sbc_time_step_note(&s->settings, s->dt, dtc, note, sizeof note))
+            fprintf(s->log, "WARNING: %s\n", note);
     }
     if (s->log && s->cohesive)
         fprintf(s->log, "servo_bc: %d cohesive bonds between the pairs touching at the start\n",

@@ -28,6 +28,7 @@ struct sbc_host {
     double *r, kn;    /* [n] radii (m), N/m */
     int *slot;        /* [n] frame position, -1 interior */
     double *reaction; /* [2Q] N */
+    char step_note[SBC_ERROR_LEN]; /* time_step.h: sbc_time_step_note, or "" */
 };
 
 static int host_slot(const void *ctx, int k) { return ((const int *)ctx)[k]; }
@@ -140,6 +141,8 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
         if (sbc_time_step_check(dt, kn, m[lightest], lightest, h->settings.max_relax_steps, &err) != SBC_OK ||
             sbc_packing_distinct(n, xy, r, &err) != SBC_OK)
             return fail_create(h, &err, msg, cap);
+        if (!sbc_time_step_note_mass(&h->settings, dt, kn, m[lightest], h->step_note, sizeof h->step_note))
+            h->step_note[0] = '\0';
     }
     if (h->settings.frame_group[0] && nlist < 1) {
         sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: keyword 'frame': '%s' names no particle", h->settings.frame_group);
@@ -193,7 +196,17 @@ void sbc_host_free(sbc_host *h)
 
 int sbc_host_warning(const sbc_host *h, char *msg, size_t cap)
 {
-    return sbc_settings_ignored_message(&h->settings, msg, cap);
+    size_t used;
+    if (!sbc_settings_ignored_message(&h->settings, msg, cap)) {
+        if (!h->step_note[0] || cap == 0)
+            return 0;
+        snprintf(msg, cap, "%s", h->step_note);
+        return 1;
+    }
+    used = strlen(msg);
+    if (h->step_note[0] && used + 1 < cap)
+        snprintf(msg + used, cap - used, "\n%s", h->step_note);
+    return 1;
 }
 
 int sbc_host_damping(const sbc_host *h, double *alpha, double *beta)

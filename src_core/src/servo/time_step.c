@@ -41,3 +41,22 @@ sbc_status sbc_time_step_check(double dt, double kn, double mass_min, long index
                  mass_min, kn);
     return sbc_time_step_bound(dt, 2.0 * sqrt(mass_min / (2.0 * kn)), formula, max_relax_steps, err);
 }
+
+int sbc_time_step_note(const sbc_settings *s, double dt, double dtc, char *out, size_t cap)
+{
+    if (s->update == SBC_UPDATE_FIXED || !(dt > 0.0) || !(dt < SBC_TIME_STEP_SLOW * dtc) || cap == 0)
+        return 0;
+    snprintf(out, cap,
+             "servo_bc: time step %g s is 1/%.0f of the critical step %g s: a relaxation's DEM steps grow about as "
+             "1/dt for the same balance (docs/stability.md, \"Time step\"); %g s, 0.1 of the critical step, is as "
+             "accurate and about %.0f times faster",
+             dt, dtc / dt, dtc, 0.1 * dtc, 0.1 * dtc / dt);
+    return 1;
+}
+
+int sbc_time_step_note_mass(const sbc_settings *s, double dt, double kn, double mass_min, char *out, size_t cap)
+{
+    if (!(kn > 0.0) || !(mass_min > 0.0))
+        return 0;
+    return sbc_time_step_note(s, dt, 2.0 * sqrt(mass_min / (2.0 * kn)), out, cap);
+}
