@@ -79,8 +79,15 @@ check: deps
 deps:
 	@bash scripts/install-deps.sh core
 
-check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
+# every public header in one C++ translation unit, linked without a wrapper
+$(B)/cxx_headers: tests/cxx_headers.cpp $(B)/libservo_bc.a $(wildcard src_core/include/sbc/*.h)
+	c++ -std=c++11 -Wall -Wextra -pedantic -Werror -Isrc_core/include -o $@ tests/cxx_headers.cpp $(B)/libservo_bc.a -lm
+
+check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers
 	$(B)/run_tests $(B)/servo-bc
+	$(B)/cxx_headers
+	bash tests/headers.sh
+	bash tests/columns.sh $(B)
 	bash tests/path_error.sh
 	bash tests/splice_tables.sh
 	bash tests/stability.sh $(B)

@@ -30,9 +30,7 @@
 #include <numeric>
 #include <unordered_map>
 
-extern "C" {
 #include "sbc/results.h"
-}
 
 using namespace LAMMPS_NS;
 using namespace FixConst;

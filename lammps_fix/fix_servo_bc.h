@@ -28,7 +28,6 @@ FixStyle(servo_bc,FixServoBC);
 #include <unordered_map>
 #include <vector>
 
-extern "C" {
 #include "sbc/confine.h"
 #include "sbc/controller.h"
 #include "sbc/fire_damping.h"
@@ -39,7 +38,6 @@ extern "C" {
 #include "sbc/time_step.h"
 #include "sbc/settings.h"
 #include "sbc/version.h"
-}
 
 namespace LAMMPS_NS {
 

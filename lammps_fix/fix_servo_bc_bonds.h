@@ -26,12 +26,10 @@ FixStyle(servo_bc/bonds,FixServoBCBonds);
 #include <unordered_map>
 #include <vector>
 
-extern "C" {
 #include "sbc/bpm_host.h"
 #include "sbc/cohesive_host.h"
 #include "sbc/contact.h"
 #include "sbc/saved.h"
-}
 
 namespace LAMMPS_NS {
 

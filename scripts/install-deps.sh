@@ -13,6 +13,7 @@ for what in "$@"; do
   case "$what" in
     core)
       command -v cc >/dev/null || need+=(gcc libc6-dev)
+      command -v c++ >/dev/null || need+=(g++)   # tests/cxx_headers.cpp: the headers from C++
       command -v make >/dev/null || need+=(make)
       command -v valgrind >/dev/null || need+=(valgrind)
       command -v python3 >/dev/null || need+=(python3)   # tests/reliability.sh holds a file lock with it

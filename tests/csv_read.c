@@ -1,6 +1,6 @@
 #include "csv_read.h"
 
-#include "sbc/results.h"
+#include "sbc/columns.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -10,11 +10,12 @@
 int csv_read(const char *path, double rows[][CSV_COLS], int max)
 {
     FILE *fp = fopen(path, "r");
-    char line[4096];
+    char line[4096], header[4096];
+    const int h = sbc_columns_header(header, sizeof header);
     int n = 0;
     if (!fp)
         return -1;
-    if (!fgets(line, sizeof line, fp) || strncmp(line, sbc_csv_header, strlen(sbc_csv_header)) != 0) {
+    if (!fgets(line, sizeof line, fp) || strncmp(line, header, (size_t)h) != 0) {
         fclose(fp);
         return -1;
     }

@@ -2,7 +2,12 @@
 #ifndef SBC_TEST_CSV_READ_H
 #define SBC_TEST_CSV_READ_H
 
-#define CSV_COLS 23
+#include "sbc/columns.h"
+
+#define CSV_COLS SBC_COLUMNS
+
+/* the column called name (columns.h); tests read columns by name */
+#define COL(name) sbc_column_index(name)
 
 /* Reads up to max rows of CSV_COLS numbers after the header; returns the
  * row count, -1 when the file is missing or a field is not a finite number. */

@@ -118,12 +118,12 @@ static void traction_lattice(void)
         n = csv_read(csv, rows, 4);
         CHECK(n == 3);
         for (k = 1; k < n; ++k) {
-            const double eps = 1.0 - rows[k][1];
+            const double eps = 1.0 - rows[k][COL("F11")];
             const double P11 = -kn * eps * (N - 1) / (N - 1.5);
-            CHECK_REL(rows[k][1], 1.0 - 0.005 * k, 1e-12); /* eq. 15 holds exactly (restore_eq15) */
-            CHECK_REL(rows[k][5], P11, tol);
-            CHECK_ABS(rows[k][8], 0.0, tol * fabs(P11));
-            CHECK_ABS(rows[k][6], 0.0, tol * fabs(P11));
+            CHECK_REL(rows[k][COL("F11")], 1.0 - 0.005 * k, 1e-12); /* eq. 15 holds exactly (restore_eq15) */
+            CHECK_REL(rows[k][COL("P11")], P11, tol);
+            CHECK_ABS(rows[k][COL("P22")], 0.0, tol * fabs(P11));
+            CHECK_ABS(rows[k][COL("P12")], 0.0, tol * fabs(P11));
         }
     }
 }
@@ -150,8 +150,8 @@ static int shear_lattice(double f, const char *words, double *s11, double *s12)
     n = csv_read(csv, rows, 6);
     if (n != 5)
         return 0;
-    *s11 = rows[4][9];
-    *s12 = rows[4][10];
+    *s11 = rows[4][COL("sigma11")];
+    *s12 = rows[4][COL("sigma12")];
     return 1;
 }
 

@@ -227,7 +227,7 @@ static int shear_lattice(const char *law, const char *tag, double *sigma12)
     if (!ok)
         printf("  %s: %s\n", tag, err.message);
     n = csv_read(csv, rows, 8);
-    *sigma12 = n == 3 ? rows[2][10] : NAN;
+    *sigma12 = n == 3 ? rows[2][COL("sigma12")] : NAN;
     return ok && n == 3;
 }
 

@@ -132,7 +132,8 @@ static int lazy_rows(double rows[][CSV_COLS], const char *csv, double *measured,
             sbc_host_result(h, row);
             /* last increment, F12 (eq. 15 from the frame, round-off), Hill-Mandel */
             if (!escape)
-                CHECK(row[0] == 2.0 && fabs(row[2] + 0.02) < 1e-14 && fabs(row[22]) < 1e-6);
+                CHECK(row[COL("increment")] == 2.0 && fabs(row[COL("F12")] + 0.02) < 1e-14 &&
+                      fabs(row[COL("hill_mandel")]) < 1e-6);
         }
         sbc_frame_free(&frame);
     }

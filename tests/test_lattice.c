@@ -52,18 +52,18 @@ static void lattice_case(int N, double F11, double F22, double ks, double shear_
         double P11 = -N * kn * (2 * R - d * f11) / ((N - 1) * d);
         double P22 = -N * kn * (2 * R - d * f22) / ((N - 1) * d);
         double *r = rows[k];
-        CHECK_REL(r[1], f11, 1e-13);
-        CHECK_ABS(r[2], 0.0, 1e-13);
-        CHECK_ABS(r[3], 0.0, 1e-13);
-        CHECK_REL(r[4], f22, 1e-13);
-        CHECK_REL(r[5], P11, 1e-9);
-        CHECK_ABS(r[6], 0.0, shear_tol * fabs(P11));
-        CHECK_ABS(r[7], 0.0, shear_tol * fabs(P11));
-        CHECK_REL(r[8], P22, 1e-9);
-        CHECK_REL(r[9], P11 / f22, 1e-9);
-        CHECK_REL(r[12], P22 / f11, 1e-9);
+        CHECK_REL(r[COL("F11")], f11, 1e-13);
+        CHECK_ABS(r[COL("F12")], 0.0, 1e-13);
+        CHECK_ABS(r[COL("F21")], 0.0, 1e-13);
+        CHECK_REL(r[COL("F22")], f22, 1e-13);
+        CHECK_REL(r[COL("P11")], P11, 1e-9);
+        CHECK_ABS(r[COL("P12")], 0.0, shear_tol * fabs(P11));
+        CHECK_ABS(r[COL("P21")], 0.0, shear_tol * fabs(P11));
+        CHECK_REL(r[COL("P22")], P22, 1e-9);
+        CHECK_REL(r[COL("sigma11")], P11 / f22, 1e-9);
+        CHECK_REL(r[COL("sigma22")], P22 / f11, 1e-9);
         /* eq. 39: mean overlap / Rbar over the 2N(N-1) contacts */
-        CHECK_REL(r[13], ((2 * R - d * f11) + (2 * R - d * f22)) / (2 * R), 1e-9);
+        CHECK_REL(r[COL("overlap_mean")], ((2 * R - d * f11) + (2 * R - d * f22)) / (2 * R), 1e-9);
     }
     if (err.status != SBC_OK)
         printf("  %s\n", err.message);

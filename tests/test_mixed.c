@@ -105,7 +105,7 @@ static void mixed_preset(void)
     n = csv_read(csv, rows, 8);
     CHECK(n == 5);
     if (n == 5)
-        CHECK_REL(rows[2][8], -1.05e6, 5e-2); /* P22 at the end of the stress stage */
+        CHECK_REL(rows[2][COL("P22")], -1.05e6, 5e-2); /* P22 at the end of the stress stage */
 }
 
 /* A flat-bottomed frictionless 6 x 6 lattice layer (spacing 2^-9 m, touching
@@ -151,13 +151,13 @@ static void lattice_layer(void)
     }
     if (n[0] != 5 || n[1] != 5)
         return;
-    CHECK_REL(rows[0][2][4], 1.0 - 100.0 * 4.5 / (1e4 * 5.0), 1e-9); /* F22 = 0.991 */
-    CHECK_REL(rows[0][2][8], -100.0, 1e-9);
-    CHECK_REL(rows[0][3][8], -100.0, 1e-4); /* the shear stage keeps P22* */
-    CHECK_REL(rows[0][4][8], -100.0, 1e-4);
-    CHECK_REL(rows[0][4][2], 0.01, 1e-9);
+    CHECK_REL(rows[0][2][COL("F22")], 1.0 - 100.0 * 4.5 / (1e4 * 5.0), 1e-9); /* F22 = 0.991 */
+    CHECK_REL(rows[0][2][COL("P22")], -100.0, 1e-9);
+    CHECK_REL(rows[0][3][COL("P22")], -100.0, 1e-4); /* the shear stage keeps P22* */
+    CHECK_REL(rows[0][4][COL("P22")], -100.0, 1e-4);
+    CHECK_REL(rows[0][4][COL("F12")], 0.01, 1e-9);
     for (k = 0; k < 5; ++k) {
-        if (fabs(rows[0][k][22]) > hm) hm = fabs(rows[0][k][22]);
+        if (fabs(rows[0][k][COL("hill_mandel")]) > hm) hm = fabs(rows[0][k][COL("hill_mandel")]);
         for (c = 1; c <= 12; ++c) { /* F, P and sigma, against the stress scale 100 N/m or 1 */
             double d = fabs(rows[0][k][c] - rows[1][k][c]) / (c <= 4 ? 1.0 : 100.0);
             if (d > worst) worst = d;
@@ -166,7 +166,7 @@ static void lattice_layer(void)
     CHECK(hm <= 1e-6);
     CHECK(worst <= 1e-9);
     printf("  mixed lattice layer: F22 %.12f after the stress stage, P22 %.9f N/m at F12 = 0.01, Hill-Mandel <= %.1e, "
-           "translated layer %.1e apart\n", rows[0][2][4], rows[0][4][8], hm, worst);
+           "translated layer %.1e apart\n", rows[0][2][COL("F22")], rows[0][4][COL("P22")], hm, worst);
 }
 
 void test_mixed(void)

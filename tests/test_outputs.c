@@ -36,7 +36,7 @@ void test_outputs(void)
     CHECK(sbc_script_run_string(script, "outputs", NULL, &err) == SBC_OK);
     n = csv_read(csv, rows, 16);
     CHECK(n == 5); /* increments 0..4, all fields finite */
-    CHECK(n == 5 && rows[4][0] == 4.0 && rows[4][16] > 0.0);
+    CHECK(n == 5 && rows[4][COL("increment")] == 4.0 && rows[4][COL("relax_steps")] > 0.0);
     snprintf(path, sizeof path, "%s_particles_000002.vtk", prefix);
     CHECK(file_contains(path, "POINTS 16 double"));
     CHECK(file_contains(path, "SCALARS radius double 1"));

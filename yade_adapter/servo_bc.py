@@ -31,11 +31,6 @@ from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb,
 __all__ = ['ServoBCError', 'ServoBC', 'Bonds', 'Cohesive', 'load_packing', 'engines', 'run_case', 'COLUMNS',
            'FRAME_MASK']
 
-# the CSV columns (sbc_csv_header, docs/servo_bc.md)
-COLUMNS = ('increment', 'F11', 'F12', 'F21', 'F22', 'P11', 'P12', 'P21', 'P22', 'sigma11', 'sigma12',
-           'sigma21', 'sigma22', 'overlap_mean', 'rotation_mean', 'iterations', 'relax_steps', 'r_force',
-           'r_moment', 'r_deformation', 'unbalanced', 'frame_residual', 'hill_mandel')
-ROW = len(COLUMNS)                      # SBC_HOST_ROW
 EP_UNMEASURED = -1.0                    # SBC_RELAX_EP_UNMEASURED
 NEED_CONTACTS, NEED_FRAME = 1, 2        # SBC_NEED_*
 DAMPING_NONE, DAMPING_LOCAL, DAMPING_FIRE = 0, 1, 2  # sbc_damping (settings.h)
@@ -80,6 +75,8 @@ def _library():
         'sbc_host_damping': (I, [P, pd, pd]),
         'sbc_host_warning': (I, [P, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_version': (ctypes.c_char_p, []),
+        'sbc_column_count': (I, []),
+        'sbc_column_name': (ctypes.c_char_p, [I]),
         'sbc_host_fire_mix': (None, [P, pd, pd]),
         'sbc_host_confined': (I, [P, pd, I, ctypes.POINTER(L), pd, pd]),
         'sbc_bpm_host_create': (P, [ctypes.c_char_p, D, D, D, pd, I, pd, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
@@ -115,6 +112,12 @@ def _core():
     if _lib is None:
         _lib = _library()
     return _lib
+
+
+def _columns():
+    """The result columns in the results file's order, from the library (columns.h)."""
+    lib = _core()
+    return tuple(lib.sbc_column_name(k).decode() for k in range(lib.sbc_column_count()))
 
 
 def _doubles(values):
@@ -281,8 +284,12 @@ def version():
 
 
 def __getattr__(name):
+    """servo_bc.__version__ and servo_bc.COLUMNS (the result columns, columns.h): read from the library when
+    first asked for (PEP 562)."""
     if name == '__version__':
         return version()
+    if name == 'COLUMNS':
+        return _columns()
     raise AttributeError(name)
 
 
@@ -382,7 +389,8 @@ class ServoBC(object):
         self._moving = False
         self._buffers = [(ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)(),
                          (ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)()]
-        self._row = (ctypes.c_double * ROW)()
+        self._columns = _columns()
+        self._row = (ctypes.c_double * len(self._columns))()
         self._m = (ctypes.c_double * MEASURES)()
         self._fc_mean = 0.0       # the last measured mean |contact force|, N
         # keyword seal (seal.h): the walls' forces, computed by the core each step
@@ -610,7 +618,7 @@ class ServoBC(object):
             return
         if ev in (INCREMENT, FINISHED):
             lib.sbc_host_result(self._h, self._row)
-            row = dict(zip(COLUMNS, self._row))
+            row = dict(zip(self._columns, self._row))
             self.rows.append(row)
             print('servo_bc: increment %d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %d iterations %d'
                   % (row['increment'], row['F12'], row['sigma11'], row['sigma12'], row['relax_steps'],
@@ -712,7 +720,7 @@ class ServoBC(object):
 
     def plot_data(self):
         """The converged increments as columns, e.g. for yade.plot.data."""
-        return {c: [row[c] for row in self.rows] for c in COLUMNS}
+        return {c: [row[c] for row in self.rows] for c in self._columns}
 
 
 class Bonds(_BondedBodies):

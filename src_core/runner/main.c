@@ -2,8 +2,10 @@
  *   servo-bc SCRIPT              runs the script
  *   servo-bc --check SCRIPT      checks every command of the script, runs and writes nothing
  *   servo-bc --decks DIR SCRIPT  writes the script's case for every host into DIR
- *   servo-bc --version           prints the version */
+ *   servo-bc --version           prints the version
+ *   servo-bc --columns           prints the results file's columns (columns.h) as a Markdown table */
 #define _POSIX_C_SOURCE 200809L
+#include "sbc/columns.h"
 #include "sbc/script.h"
 #include "sbc/version.h"
 
@@ -15,7 +17,20 @@ static const char usage[] =
     "usage: servo-bc SCRIPT              run the script (docs/runner.md)\n"
     "       servo-bc --check SCRIPT      check every command of the script; run and write nothing\n"
     "       servo-bc --decks DIR SCRIPT  write the script's case for every host into DIR\n"
-    "       servo-bc --version           print the version (CHANGELOG.md)\n";
+    "       servo-bc --version           print the version (CHANGELOG.md)\n"
+    "       servo-bc --columns           print the results file's columns as a Markdown table\n";
+
+/* the columns of the results file (columns.h), as docs/servo_bc.md shows them */
+static void print_columns(void)
+{
+    static const char *const written[] = {"count", "17 digits", "6 digits"}; /* by sbc_column_format */
+    int k;
+    puts("| column | unit | written as | meaning |");
+    puts("| --- | --- | --- | --- |");
+    for (k = 0; k < SBC_COLUMNS; ++k)
+        printf("| `%s` | %s | %s | %s |\n", sbc_columns[k].name, sbc_columns[k].unit, written[sbc_columns[k].format],
+               sbc_columns[k].description);
+}
 
 int main(int argc, char **argv)
 {
@@ -30,6 +45,10 @@ int main(int argc, char **argv)
     }
     if (argc == 2 && strcmp(argv[1], "--version") == 0) {
         printf("servo-bc %s\n", sbc_version());
+        return 0;
+    }
+    if (argc == 2 && strcmp(argv[1], "--columns") == 0) {
+        print_columns();
         return 0;
     }
     if (argc == 2 && argv[1][0] != '-')

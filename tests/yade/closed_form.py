@@ -176,6 +176,12 @@ except servo_bc.ServoBCError as e:
     check(('increment 0: interior particle %d escaped through a gap between frame particles (its centre (0.0105, '
            '0.004) m' % centre) in str(e) and lines == 1, 'escaped disc: %s; the CSV keeps its header alone' % e)
 
+# the module's COLUMNS are the library's (columns.h): the results file's header
+with open(escape_csv) as f:
+    header = f.readline().strip()
+check(header == ','.join(servo_bc.COLUMNS) and len(servo_bc.COLUMNS) == 23,
+      'COLUMNS from the library: %d names, the results file\'s header' % len(servo_bc.COLUMNS))
+
 # the documented 0.1 call forms (CHANGELOG.md): ServoBC(words, ids, dt) takes kn from
 # the contact law engines() builds, and a fourth positional argument may be `done`;
 # the rows equal those of the kn form to the last digit

@@ -36,6 +36,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum sbc_bond_model { SBC_BOND_PARALLEL = 0, SBC_BOND_BEAM = 1 } sbc_bond_model;
 
 typedef struct sbc_bpm_settings {
@@ -129,5 +133,9 @@ sbc_bpm_energy sbc_bpm_energies(const sbc_bpm *e);
 
 /* Mean coordination number (bonds per sphere). */
 double sbc_bpm_mean_coordination(const sbc_bpm *e);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -10,6 +10,10 @@
 #ifndef SBC_BPM_BOND_H
 #define SBC_BPM_BOND_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SBC_PI 3.14159265358979323846
 
 /* c = a x b */
@@ -183,5 +187,9 @@ double sbc_broken_bond_energy(const sbc_friction_law *law, const sbc_broken_bond
  * the bond's axial stiffness (k^n A for the parallel bond, E A / L for the
  * beam) and C_n the coordination number (the mean over the two particles). */
 double sbc_bond_damping(double xi, double k, double ma, double mb, double cn);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,6 +14,10 @@
 
 #include "sbc/bpm.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Bonds between every pair of the n spheres (centres x [3n], radii r [n],
  * masses m [n]: m, kg) that touch (gap <= 1e-9 of the radii's sum), with
  * model "beam" (Timoshenko beams, E_b = E Pa, nu_b = nu) or "parallel"
@@ -58,5 +62,9 @@ void sbc_bpm_host_set_fracture_energy(sbc_bpm *e, double w);
 int sbc_bpm_host_state_doubles(const sbc_bpm *e);
 void sbc_bpm_host_state_get(const sbc_bpm *e, int k, double *state);
 void sbc_bpm_host_state_set(sbc_bpm *e, int k, const double *state);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -39,6 +39,10 @@
 
 #include <stdio.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct sbc_bpm_uniaxial {
     double rp;       /* particle radius r_p, m (sets the zones) */
     double zone;     /* end and bounding zones, in r_p (thesis: 1.5) */
@@ -84,5 +88,9 @@ typedef struct sbc_bpm_bending_result {
 
 sbc_status sbc_bpm_bending_run(sbc_bpm *e, const sbc_bpm_bending *test, sbc_bpm_bending_result *res,
                                sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,10 @@
 
 #include "sbc/bpm.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum sbc_bpm_lattice { SBC_PACK_CUBIC = 0, SBC_PACK_HCP = 1 } sbc_bpm_lattice;
 
 /* Adds the lattice to e. extent (may be NULL) receives the bounding box of
@@ -47,5 +51,9 @@ void sbc_bpm_extent(const sbc_bpm *e, double extent[6]);
 
 /* Porosity of the spheres in the box extent: 1 - sum(4/3 pi r^3) / volume. */
 double sbc_bpm_porosity(const sbc_bpm *e, const double extent[6]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,11 +19,19 @@
 
 #include "sbc/bpm.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* sigma: 9 per sphere, row-major, Pa. */
 sbc_status sbc_bpm_particle_stress(const sbc_bpm *e, double *sigma, sbc_error *err);
 
 /* sigma[9], Pa. */
 sbc_status sbc_bpm_rve_stress(const sbc_bpm *e, const unsigned char *mask, double volume, double sigma[9],
                               sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -9,6 +9,14 @@
 
 #include "sbc/bpm.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 sbc_status sbc_bpm_vtk_write(const char *prefix, const sbc_bpm *e, sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct sbc_cohesive_host sbc_cohesive_host;
 
 /* words: "kn KN ks KS kr KR fn FN fs FS mr MR mu MU" (N/m, N/m, N m/rad, N,
@@ -58,5 +62,9 @@ void sbc_cohesive_host_sums(const sbc_cohesive_host *h, double *sums);
 size_t sbc_cohesive_host_state_size(const sbc_cohesive_host *h);
 void sbc_cohesive_host_state_get(const sbc_cohesive_host *h, double *state);
 int sbc_cohesive_host_state_set(sbc_cohesive_host *h, const double *state, size_t size);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,6 +14,10 @@
 
 #include "sbc/frame.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Steps between two checks during a relaxation. */
 #define SBC_CONFINE_EVERY 10000
 
@@ -31,5 +35,9 @@ int sbc_confine_inside(const sbc_frame *f, const double *fx, const double p[2]);
  * O(Q). */
 sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment, long id, const double x[2],
                              const double v[2], sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -11,6 +11,11 @@
 #define SBC_CONTACT_H
 
 #include <math.h>
+#include "sbc/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* Frictional contact law, eq. 6. */
 typedef struct sbc_frictional {
@@ -100,7 +105,6 @@ sbc_cohesive sbc_cohesive_default(void);
  * this order), shared by the runner's `contact cohesive` and the hosts'
  * `servo_bc/bonds cohesive`; cmd names the command in the messages (which
  * keyword, which value, what was expected). */
-#include "sbc/status.h"
 sbc_status sbc_cohesive_parse(int nw, char *const *w, const char *cmd, sbc_cohesive *law, sbc_error *err);
 
 /* Per-pair state of a cohesive contact. */
@@ -120,5 +124,9 @@ double sbc_cohesive_criterion(const sbc_cohesive *law, double fn, const sbc_bond
 
 /* Elastic energy of the contact, eq. 12 with the rotational term kr dtheta^2/2 = m^2/(2 kr) (J). */
 double sbc_cohesive_energy(const sbc_cohesive *law, double dn, const sbc_bond *b);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -16,6 +16,10 @@
 #include "sbc/relax.h"
 #include "sbc/settings.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum sbc_event {
     SBC_EVENT_RELAXING = 0, /* keep stepping with the same commands */
     SBC_EVENT_CORRECTED,    /* new commands within the increment (servo correction) */
@@ -125,5 +129,9 @@ const sbc_frame *sbc_controller_frame(const sbc_controller *c);
 
 /* Increment now being relaxed, 0 .. i_tot. */
 int sbc_controller_increment(const sbc_controller *c);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -17,6 +17,10 @@
 #include "sbc/controller.h"
 #include "sbc/frame.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct sbc_engine_def {
     int n;               /* particles */
     const double *x;     /* [2n] initial centres, m */
@@ -109,5 +113,9 @@ sbc_status sbc_engine_set_pair_records(sbc_engine *e, const double *rec, int cou
  * of the stiffest particle-contact oscillator; with bonds also
  * 2 sqrt(I_min / (2 kr)) for the bending spring, whichever is smaller. */
 double sbc_engine_critical_dt(const sbc_engine *e);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -25,6 +25,10 @@
 #ifndef SBC_FIRE_DAMPING_H
 #define SBC_FIRE_DAMPING_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct sbc_fire_state {
     double alpha; /* FIRE's mixing factor a */
     long positive; /* steps in a row with P > 0 */
@@ -52,5 +56,9 @@ void sbc_fire_start(sbc_fire_state *s);
 
 /* Advances the state by one step and returns that step's mix. */
 sbc_fire_mix sbc_fire_step(sbc_fire_state *s, const double sums[SBC_FIRE_SUMS]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

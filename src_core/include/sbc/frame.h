@@ -12,6 +12,10 @@
 #include "sbc/packing.h"
 #include "sbc/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum sbc_side {
     SBC_SIDE_CORNER = 0,
     SBC_SIDE_BOTTOM,
@@ -78,5 +82,9 @@ sbc_status sbc_frame_load(sbc_frame *frame, const double *in, size_t n, sbc_erro
 
 /* Frees the arrays of frame and zeroes it. */
 void sbc_frame_free(sbc_frame *frame);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -24,6 +24,10 @@
 
 #include <stdio.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct sbc_generate_def {
     int n;               /* particles before the reconstruction, n0 */
     double r_min;        /* smallest radius, m */
@@ -51,5 +55,9 @@ typedef struct sbc_generate_info {
  * (centres in m), info with its figures. */
 sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sbc_generate_info *info,
                                  sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

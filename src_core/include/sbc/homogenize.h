@@ -7,6 +7,10 @@
 
 #include "sbc/frame.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Deformation gradient, eq. 15: F = (1/V) sum_q x_q (x) A_q. x is [2Q], m. */
 void sbc_homogenize_F(const sbc_frame *frame, const double *x, double F[4]);
 
@@ -40,5 +44,9 @@ double sbc_homogenize_path_norm(int n, const double *param, const double *sigma)
 
 /* det of a 2x2 row-major tensor. */
 double sbc_det2(const double T[4]);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

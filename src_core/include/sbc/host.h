@@ -11,7 +11,12 @@
 
 #include <stddef.h>
 
+#include "sbc/columns.h"
 #include "sbc/controller.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct sbc_host sbc_host;
 
@@ -107,8 +112,12 @@ const double *sbc_host_command_theta(const sbc_host *h);
 const unsigned char *sbc_host_command_free(const sbc_host *h);
 
 /* The last accepted increment as SBC_HOST_ROW doubles, in the columns of
- * sbc_csv_header (results.h). */
-#define SBC_HOST_ROW 23
+ * columns.h (sbc_column_name gives their names). */
+#define SBC_HOST_ROW SBC_COLUMNS
 void sbc_host_result(const sbc_host *h, double *row);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

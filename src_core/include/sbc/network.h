@@ -12,7 +12,15 @@
 #include "sbc/engine.h"
 #include "sbc/frame.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 sbc_status sbc_network_svg(const char *path, const char *title, const sbc_engine_view *view, const sbc_frame *frame,
                            sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -20,6 +20,10 @@
 
 #include "sbc/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum sbc_output_kind {
     SBC_OUTPUT_RESULTS = 0, /* the servo_bc CSV (results.h) */
     SBC_OUTPUT_SERIES,      /* a 3D test's time series (CSV beginning "step,") */
@@ -48,5 +52,9 @@ sbc_status sbc_output_owned(const char *path, sbc_output_kind kind, const char *
 
 /* Creates the folder path and its missing parents; 0 on success. */
 int sbc_output_folder(const char *path);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

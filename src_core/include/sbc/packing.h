@@ -6,6 +6,10 @@
 
 #include "sbc/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct sbc_packing {
     int n;
     double *x; /* [2n] centres, m */
@@ -64,5 +68,9 @@ sbc_status sbc_packing_contact_angles(const sbc_packing *p, double tol, double *
 sbc_status sbc_packing_distinct(int n, const double *x, const double *r, sbc_error *err);
 
 void sbc_packing_free(sbc_packing *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

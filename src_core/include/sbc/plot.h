@@ -4,6 +4,10 @@
 
 #include "sbc/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct sbc_series {
     const char *label;
     int n;           /* points */
@@ -23,5 +27,9 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
  * each contact normal, counted with its opposite direction, in `bins` equal
  * sectors (even, 4 to 720); bar length proportional to the count. */
 sbc_status sbc_plot_rose(const char *path, const char *title, int n, const double *angle, int bins, sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -53,6 +53,10 @@
 #ifndef SBC_RELAX_H
 #define SBC_RELAX_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SBC_RELAX_NET_FLOOR 1e-3
 #define SBC_RELAX_ROUNDOFF 1e-20
 
@@ -137,5 +141,9 @@ int sbc_relax_update(sbc_relax *r, const sbc_relax_sample *s);
  * frame standing still; factor 2 for the integrator's energy error). */
 #define SBC_RELAX_EP_REFRESH 100
 int sbc_relax_needs_contacts(const sbc_relax *r, const sbc_relax_sample *s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,8 +1,6 @@
 /* servo_bc: the results file (docs/servo_bc.md, Output), one row per
- * converged increment, written and flushed at once so that nothing is lost
- * if a run stops. After the contract's 20 columns come the accuracy measures
- * of the row: unbalanced (relax.h), frame_residual (servo.h) and hill_mandel
- * (eq. 30, relative); new columns are only ever appended.
+ * converged increment in the columns of columns.h, written and flushed at
+ * once so that nothing is lost if a run stops.
  *
  * The file is opened through output_file.h (never over a file servo_bc did
  * not write; locked while the run writes it). A row is whole or absent: a
@@ -15,8 +13,9 @@
 
 #include "sbc/controller.h"
 
-/* The CSV header line (no newline). */
-extern const char sbc_csv_header[];
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 typedef struct sbc_csv {
     FILE *fp;                  /* NULL: no results file */
@@ -39,5 +38,9 @@ sbc_status sbc_csv_write(sbc_csv *csv, const sbc_result *r, sbc_error *err);
 
 /* Closes the file (nothing when none is open). */
 void sbc_csv_close(sbc_csv *csv);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -11,6 +11,10 @@
 
 #include "sbc/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct sbc_saved {
     const double *in;
     size_t at, n;
@@ -29,5 +33,9 @@ double sbc_saved_real(sbc_saved *s, const char *name);
 
 /* The next value, finite and > 0. */
 double sbc_saved_positive(sbc_saved *s, const char *name);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

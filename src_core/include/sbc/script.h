@@ -21,6 +21,10 @@
 
 #include "sbc/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Runs the script text; `name` labels error messages; progress goes to log
  * (may be NULL). */
 sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, sbc_error *err);
@@ -40,5 +44,9 @@ sbc_status sbc_script_check_file(const char *path, FILE *log, sbc_error *err);
  * embedded.sbc, lammps.in, liggghts.in, yade.py, each of which, run in dir,
  * writes dir/HOST.csv (frictional contact law only). */
 sbc_status sbc_script_decks_file(const char *path, const char *dir, FILE *log, sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -41,6 +41,10 @@
 #include "sbc/frame.h"
 #include "sbc/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* w: where the wall meets a disc, in radii of the disc from the line of centres */
 #define SBC_SEAL_WALL 0.5
 
@@ -83,5 +87,9 @@ void sbc_seal_free(sbc_seal *s);
  * walls' energy (J) in *energy. Fails only without memory. */
 sbc_status sbc_seal_forces(sbc_seal *s, const sbc_frame *f, const double *fx, const sbc_seal_particles *p,
                            double kn, int collect, double *reaction, double *energy, sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -12,6 +12,10 @@
 #include "sbc/relax.h"
 #include "sbc/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum sbc_bc { SBC_BC_D = 0, SBC_BC_P, SBC_BC_T, SBC_BC_MIXED } sbc_bc;
 
 #define SBC_NAME_LEN 256
@@ -115,5 +119,9 @@ const char *sbc_bc_name(sbc_bc bc);
  * value in the error message. */
 sbc_status sbc_parse_real(const char *word, const char *what, double *out, sbc_error *err);
 sbc_status sbc_parse_int(const char *word, const char *what, long lo, long hi, long *out, sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -5,6 +5,10 @@
 #ifndef SBC_STATUS_H
 #define SBC_STATUS_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum sbc_status {
     SBC_OK = 0,
     SBC_ERR_INPUT,     /* bad command, keyword or value */
@@ -36,5 +40,9 @@ sbc_status sbc_fail(sbc_error *err, sbc_status status, const char *fmt, ...)
 
 /* Clears err to SBC_OK with an empty message. */
 void sbc_error_clear(sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

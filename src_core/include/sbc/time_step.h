@@ -20,6 +20,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SBC_TIME_STEP_FRACTION 0.6
 
 /* Below this fraction of the critical step a run is slow for nothing: a
@@ -49,5 +53,9 @@ int sbc_time_step_note(const sbc_settings *s, double dt, double dtc, char *out, 
 /* The same with dtc = 2 sqrt(mass_min / (2 kn)); 0 when kn or mass_min is
  * not > 0. */
 int sbc_time_step_note_mass(const sbc_settings *s, double dt, double kn, double mass_min, char *out, size_t cap);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

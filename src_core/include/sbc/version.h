@@ -4,9 +4,17 @@
 #ifndef SBC_VERSION_H
 #define SBC_VERSION_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define SBC_VERSION "0.3.0"
 
 /* SBC_VERSION as the library was built, for hosts that load it at run time. */
 const char *sbc_version(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

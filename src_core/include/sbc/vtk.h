@@ -13,6 +13,14 @@
 
 #include "sbc/engine.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_view *view, sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 /* servo_bc: the results file (results.h). */
 #include "sbc/results.h"
+#include "sbc/columns.h"
 #include "sbc/output_file.h"
 
 #include <errno.h>
@@ -9,10 +10,6 @@
 #include <string.h>
 #include <sys/types.h>
 #include <unistd.h>
-
-const char sbc_csv_header[] = "increment,F11,F12,F21,F22,P11,P12,P21,P22,sigma11,sigma12,sigma21,sigma22,"
-                              "overlap_mean,rotation_mean,iterations,relax_steps,r_force,r_moment,r_deformation,"
-                              "unbalanced,frame_residual,hill_mandel";
 
 static const char what[] = "keyword 'file'";
 
@@ -47,11 +44,12 @@ static sbc_status put(sbc_csv *csv, const char *text, size_t n, int increment, s
 
 static sbc_status begin(sbc_csv *csv, const char *path, FILE *fp, sbc_error *err)
 {
-    char line[sizeof sbc_csv_header + 1];
+    char line[SBC_COLUMNS * 32];
+    const int n = sbc_columns_header(line, sizeof line - 1);
     csv->fp = fp;
     snprintf(csv->path, sizeof csv->path, "%s", path);
-    snprintf(line, sizeof line, "%s\n", sbc_csv_header);
-    return put(csv, line, strlen(line), -1, err);
+    line[n] = '\n';
+    return put(csv, line, (size_t)n + 1, -1, err);
 }
 
 sbc_status sbc_csv_open(sbc_csv *csv, const char *path, sbc_error *err)
@@ -103,26 +101,22 @@ sbc_status sbc_csv_resume(sbc_csv *csv, const char *path, int next, int *kept, s
 
 sbc_status sbc_csv_write(sbc_csv *csv, const sbc_result *r, sbc_error *err)
 {
-    const double check[20] = {r->F[0], r->F[1], r->F[2], r->F[3], r->P[0], r->P[1], r->P[2], r->P[3],
-                              r->sigma[0], r->sigma[1], r->sigma[2], r->sigma[3], r->overlap_mean,
-                              r->rotation_mean, r->r_force, r->r_moment, r->r_deformation, r->unbalanced,
-                              r->frame_residual, r->hill_mandel};
-    static const char *const names[20] = {"F11", "F12", "F21", "F22", "P11", "P12", "P21", "P22", "sigma11",
-                                          "sigma12", "sigma21", "sigma22", "overlap_mean", "rotation_mean",
-                                          "r_force", "r_moment", "r_deformation", "unbalanced", "frame_residual",
-                                          "hill_mandel"};
+    static const char *const formats[] = {"%.0f", "%.17g", "%.6g"}; /* by sbc_column_format */
+    double v[SBC_COLUMNS];
     char row[2048];
-    int k, n = snprintf(row, sizeof row, "%d", r->increment);
-    for (k = 0; k < 20; ++k)
-        if (!isfinite(check[k]))
+    int k, n = 0;
+    sbc_column_values(r, v);
+    for (k = 0; k < SBC_COLUMNS; ++k)
+        if (!isfinite(v[k]))
             return sbc_fail(err, SBC_ERR_NUMERIC, "results file '%s': increment %d has %s = %g; the row is not "
-                            "written and the run stops", csv->path, r->increment, names[k], check[k]);
-    for (k = 0; k < 4; ++k) n += snprintf(row + n, sizeof row - (size_t)n, ",%.17g", r->F[k]);
-    for (k = 0; k < 4; ++k) n += snprintf(row + n, sizeof row - (size_t)n, ",%.17g", r->P[k]);
-    for (k = 0; k < 4; ++k) n += snprintf(row + n, sizeof row - (size_t)n, ",%.17g", r->sigma[k]);
-    n += snprintf(row + n, sizeof row - (size_t)n, ",%.17g,%.17g,%d,%ld,%.17g,%.17g,%.17g,%.6g,%.6g,%.6g\n",
-                  r->overlap_mean, r->rotation_mean, r->iterations, r->relax_steps, r->r_force, r->r_moment,
-                  r->r_deformation, r->unbalanced, r->frame_residual, r->hill_mandel);
+                            "written and the run stops", csv->path, r->increment, sbc_columns[k].name, v[k]);
+    for (k = 0; k < SBC_COLUMNS && n >= 0 && (size_t)n < sizeof row; ++k) {
+        if (k)
+            row[n++] = ',';
+        n += snprintf(row + n, sizeof row - (size_t)n, formats[sbc_columns[k].format], v[k]);
+    }
+    if (n >= 0 && (size_t)n + 1 < sizeof row)
+        row[n++] = '\n';
     if (n <= 0 || (size_t)n >= sizeof row)
         return sbc_fail(err, SBC_ERR_IO, "results file '%s': the row of increment %d does not fit", csv->path,
                         r->increment);

@@ -2,6 +2,7 @@
 #include "sbc/host.h"
 #include "sbc/fire_damping.h"
 
+#include "sbc/columns.h"
 #include "sbc/confine.h"
 #include "sbc/packing.h"
 #include "sbc/results.h"
@@ -329,20 +330,5 @@ const unsigned char *sbc_host_command_free(const sbc_host *h)
 
 void sbc_host_result(const sbc_host *h, double *row)
 {
-    const sbc_result *r = sbc_controller_result(h->ctl);
-    int k, at = 0;
-    row[at++] = r->increment;
-    for (k = 0; k < 4; ++k) row[at++] = r->F[k];
-    for (k = 0; k < 4; ++k) row[at++] = r->P[k];
-    for (k = 0; k < 4; ++k) row[at++] = r->sigma[k];
-    row[at++] = r->overlap_mean;
-    row[at++] = r->rotation_mean;
-    row[at++] = r->iterations;
-    row[at++] = (double)r->relax_steps;
-    row[at++] = r->r_force;
-    row[at++] = r->r_moment;
-    row[at++] = r->r_deformation;
-    row[at++] = r->unbalanced;
-    row[at++] = r->frame_residual;
-    row[at] = r->hill_mandel; /* at = SBC_HOST_ROW - 1 */
+    sbc_column_values(sbc_controller_result(h->ctl), row);
 }

@@ -1,0 +1,58 @@
+/* servo_bc: the result columns, one table (name, unit, the dimensions that
+ * have the column, how it is written, description) that drives the results
+ * file's header and rows (results.h), the hosts' result row (host.h), the
+ * YADE module's COLUMNS and the docs' column table (tests/columns.sh checks
+ * docs/servo_bc.md against it). Adding a column is one line here and the code
+ * that computes it; new columns are only ever appended. */
+#ifndef SBC_COLUMNS_H
+#define SBC_COLUMNS_H
+
+#include <stddef.h>
+
+#include "sbc/controller.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* How a column's value is written: a count ("%d"/"%ld"), a measured value to
+ * 17 significant digits ("%.17g", read back bit for bit), or an accuracy
+ * measure to 6 ("%.6g"). */
+typedef enum sbc_column_format { SBC_COLUMN_COUNT, SBC_COLUMN_VALUE, SBC_COLUMN_MEASURE } sbc_column_format;
+
+typedef struct sbc_column {
+    const char *name;        /* the header's word */
+    const char *unit;        /* SI unit, "-" for none */
+    unsigned dimensions;     /* bit 2: 2D, bit 3: 3D (SBC_COLUMN_2D ...) */
+    sbc_column_format format;
+    const char *description; /* one line, with the paper's equation */
+    size_t offset;           /* of the value in sbc_result */
+    char type;               /* its C type there: 'i' int, 'l' long, 'd' double */
+} sbc_column;
+
+#define SBC_COLUMN_2D (1u << 2)
+
+/* The columns, in the file's order. */
+#define SBC_COLUMNS 23
+extern const sbc_column sbc_columns[SBC_COLUMNS];
+
+/* The values of r in the columns' order, as doubles (counts exactly). */
+void sbc_column_values(const sbc_result *r, double values[SBC_COLUMNS]);
+
+/* For hosts that load the library at run time (the YADE module): the
+ * number of columns and the name of column k (NULL outside). */
+int sbc_column_count(void);
+const char *sbc_column_name(int k);
+
+/* The index of the column called name, or -1. */
+int sbc_column_index(const char *name);
+
+/* The header line of the results file into out [cap]: the names joined by
+ * commas, no newline. Returns its length (as snprintf). */
+int sbc_columns_header(char *out, size_t cap);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
