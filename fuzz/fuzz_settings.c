@@ -6,7 +6,7 @@
 #include "sbc/frame.h"
 #include "sbc/packing.h"
 #include "sbc/settings.h"
-#include "io/words.h"
+#include "base/words.h"
 
 
 static void drive(const sbc_settings *s)

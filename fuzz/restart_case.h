@@ -7,7 +7,7 @@
 #include "sbc/frame.h"
 #include "sbc/packing.h"
 #include "sbc/settings.h"
-#include "io/words.h"
+#include "base/words.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -10,6 +10,7 @@
 #include <stddef.h>
 
 #include "sbc/relax.h"
+#include "sbc/numbers.h"
 #include "sbc/status.h"
 
 #ifdef __cplusplus
@@ -115,10 +116,6 @@ int sbc_settings_total_increments(const sbc_settings *s);
 /* Name of a BC ("D", "P", "T", "mixed"). */
 const char *sbc_bc_name(sbc_bc bc);
 
-/* Checked conversions used by every parser of the project. `what` names the
- * value in the error message. */
-sbc_status sbc_parse_real(const char *word, const char *what, double *out, sbc_error *err);
-sbc_status sbc_parse_int(const char *word, const char *what, long lo, long hi, long *out, sbc_error *err);
 
 #ifdef __cplusplus
 }

@@ -1,7 +1,7 @@
 #include "sbc/packing.h"
 
 #include "sbc/settings.h"
-#include "io/words.h"
+#include "base/words.h"
 
 #include <math.h>
 #include <stdio.h>

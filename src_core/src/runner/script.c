@@ -15,7 +15,7 @@
 #include "sbc/version.h"
 #include "sbc/vtk.h"
 #include "script_state.h"
-#include "io/words.h"
+#include "base/words.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -31,32 +31,6 @@ static sbc_status at_line(script *s, sbc_status st, sbc_error *err)
         return st;
     snprintf(msg, sizeof msg, "%s", err->message);
     return sbc_fail(err, st, "%s:%d: %s", s->name, s->line, msg);
-}
-
-sbc_status sbc_script_expect_count(int nw, char **w, int want, const char *usage, sbc_error *err)
-{
-    if (nw < want)
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: missing values (expected '%s')", w[0], usage);
-    if (nw > want)
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: unexpected extra value '%s' (expected '%s')", w[0], w[want], usage);
-    return SBC_OK;
-}
-
-sbc_status sbc_script_expect_key(const char *cmd, const char *word, const char *key, const char *usage, sbc_error *err)
-{
-    if (strcmp(word, key) != 0)
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: expected keyword '%s' but found '%s' (usage '%s')", cmd, key, word,
-                        usage);
-    return SBC_OK;
-}
-
-sbc_status sbc_script_positive(const char *cmd, const char *what, const char *word, double *out, sbc_error *err)
-{
-    if (sbc_parse_real(word, what, out, NULL) != SBC_OK)
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: %s '%s' is not a number (expected a real > 0)", cmd, what, word);
-    if (!(*out > 0.0))
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: %s %s is not positive (expected a real > 0)", cmd, what, word);
-    return SBC_OK;
 }
 
 static sbc_status cmd_lattice(script *s, int nw, char **w, sbc_error *err)
@@ -574,7 +548,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
         s->servo_pending = 0;
         if (s->decks_dir)
             return sbc_script_write_decks(s, s->decks_dir, err);
-        return s->replicas > 0 ? sbc_script_replicas(s, err) : sbc_script_run_once(s, err);
+        return s->replicas > 0 ? sbc_script_replicas(s, sbc_script_run_once, err) : sbc_script_run_once(s, err);
     }
     return sbc_fail(err, SBC_ERR_INPUT,
                     "unknown command '%s' (expected dimension, lattice, read_packing, generate, write_packing, rose, "

@@ -13,7 +13,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "script_state.h"
 #include "sbc/output_file.h"
-#include "io/words.h"
+#include "base/words.h"
 
 #include "sbc/bpm.h"
 #include "sbc/bpm_loading.h"

@@ -112,7 +112,7 @@ static sbc_status perturb(script *s, int k, sbc_error *err)
 }
 
 /* the child's run: replica k's outputs, its packing, one run; the exit status */
-static int run_replica(script *s, int k)
+static int run_replica(script *s, sbc_script_run_fn run_once, int k)
 {
     sbc_error e;
     sbc_status st = SBC_OK;
@@ -130,7 +130,7 @@ static int run_replica(script *s, int k)
         st = perturb(s, k, &e);
     }
     if (st == SBC_OK)
-        st = sbc_script_run_once(s, &e);
+        st = run_once(s, &e);
     if (st != SBC_OK)
         fprintf(stderr, "ERROR: replica %d: %s\n", k, e.message);
     fflush(NULL);
@@ -238,7 +238,7 @@ done:
     return st;
 }
 
-sbc_status sbc_script_replicas(script *s, sbc_error *err)
+sbc_status sbc_script_replicas(script *s, sbc_script_run_fn run_once, sbc_error *err)
 {
     const int K = s->replicas;
     int status[REPLICAS_MAX], running = 0, next = 0, failed = 0, first_failed = -1, rows, k;
@@ -256,7 +256,7 @@ sbc_status sbc_script_replicas(script *s, sbc_error *err)
             return st;
     }
     if (s->check)
-        return sbc_script_run_once(s, err);
+        return run_once(s, err);
     if (s->log)
         fprintf(s->log, "replicas: %d histories, %d at a time; replicas 1 to %d move each interior centre by up to "
                 "%g R\n", K, s->jobs, K - 1, s->perturb);
@@ -267,7 +267,7 @@ sbc_status sbc_script_replicas(script *s, sbc_error *err)
             if (pid[next] < 0)
                 return sbc_fail(err, SBC_ERR_IO, "replicas: cannot start replica %d", next);
             if (pid[next] == 0)
-                _exit(run_replica(s, next));
+                _exit(run_replica(s, run_once, next));
             ++next;
             ++running;
             continue;

@@ -63,7 +63,8 @@ sbc_status sbc_script_files_check(script *s, const char *path, const char *what,
  * nor one another; with --check, each is probed (output_file.h). */
 sbc_status sbc_script_outputs_check(script *s, sbc_error *err);
 
-/* "cmd: missing values / unexpected extra value" unless nw == want. */
+/* The checks of a command's words (script_words.c).
+ * "cmd: missing values / unexpected extra value" unless nw == want. */
 sbc_status sbc_script_expect_count(int nw, char **w, int want, const char *usage, sbc_error *err);
 /* word must equal key. */
 sbc_status sbc_script_expect_key(const char *cmd, const char *word, const char *key, const char *usage,
@@ -87,9 +88,13 @@ void sbc_script_bpm_free(script *s);
 /* One run of the servo_bc line (script.c). */
 sbc_status sbc_script_run_once(script *s, sbc_error *err);
 
-/* replicas K [perturb EPS] [jobs J], and the runs it makes (script_replicas.c). */
+/* One run of the case, as sbc_script_run_once. */
+typedef sbc_status (*sbc_script_run_fn)(script *s, sbc_error *err);
+
+/* replicas K [perturb EPS] [jobs J], and the runs it makes (script_replicas.c),
+ * each by run_once. */
 sbc_status sbc_script_replicas_command(script *s, int nw, char **w, sbc_error *err);
-sbc_status sbc_script_replicas(script *s, sbc_error *err);
+sbc_status sbc_script_replicas(script *s, sbc_script_run_fn run_once, sbc_error *err);
 
 /* The case for every host (script_decks.c): in dir, the packing (packing.txt,
  * packing.lammps.data, packing.liggghts.data, packing.yade) and embedded.sbc,

@@ -8,7 +8,7 @@
 #include "sbc/results.h"
 #include "sbc/seal.h"
 #include "sbc/time_step.h"
-#include "io/words.h"
+#include "base/words.h"
 
 #include <math.h>
 #include <stdio.h>

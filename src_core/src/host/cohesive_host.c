@@ -4,7 +4,7 @@
 #include "sbc/cohesive_host.h"
 #include "sbc/contact.h"
 #include "sbc/engine.h"
-#include "io/words.h"
+#include "base/words.h"
 
 #include <math.h>
 #include <stdio.h>
