@@ -113,6 +113,11 @@ int sbc_settings_ignored_message(const sbc_settings *s, char *out, size_t cap);
  * of a mixed BC (i_vs + i_tot - i_vs in Table 5). */
 int sbc_settings_total_increments(const sbc_settings *s);
 
+/* The F imposed at increment i of the path, I + t (F - I): t = i / increments
+ * (mixed: 0 during the stress stage, then (i - stress_increments) /
+ * increments). */
+void sbc_settings_target_F(const sbc_settings *s, int increment, double F[4]);
+
 /* Name of a BC ("D", "P", "T", "mixed"). */
 const char *sbc_bc_name(sbc_bc bc);
 

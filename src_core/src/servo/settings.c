@@ -414,6 +414,17 @@ int sbc_settings_ignored_message(const sbc_settings *s, char *out, size_t cap)
     return 1;
 }
 
+void sbc_settings_target_F(const sbc_settings *s, int increment, double F[4])
+{
+    static const double I[4] = {1.0, 0.0, 0.0, 1.0};
+    /* mixed: F stays I during the stress stage, then ramps over `increments` */
+    int stage = s->bc == SBC_BC_MIXED ? s->stress_increments : 0;
+    double t = increment <= stage ? 0.0 : (double)(increment - stage) / (double)s->increments;
+    int k;
+    for (k = 0; k < 4; ++k)
+        F[k] = I[k] + t * (s->F[k] - I[k]);
+}
+
 int sbc_settings_total_increments(const sbc_settings *s)
 {
     return s->increments + (s->bc == SBC_BC_MIXED ? s->stress_increments : 0);

@@ -1,0 +1,97 @@
+/* Private: the controller's state and the functions its files share.
+ * controller.c          the state machine (Tables 1-3, 5): create, step, accept
+ * controller_mixed.c    the mixed condition's bookkeeping (Table 5, Sect. 5.1)
+ * controller_checks.c   refusals, failure messages, the certification of a row
+ * controller_update.c   the update rules (fixed, secant) and eq. 15 under (T)
+ * controller_state.c    the restart state (save, load) */
+#ifndef SBC_CONTROLLER_PRIVATE_H
+#define SBC_CONTROLLER_PRIVATE_H
+
+#include "sbc/controller.h"
+#include "sbc/relax.h"
+#include "motion.h"
+#include "servo.h"
+
+struct sbc_controller {
+    sbc_frame ref;       /* the controller's copy of the frame: the reference of
+                            mixed stage 2 is the state after stage 1 (Sect. 5.1) */
+    const sbc_frame *frame; /* = &ref */
+    unsigned char *mode; /* [2Q] mixed: sbc_mode of each component of each frame position */
+    double P_star[4];    /* mixed: prescribed stress of this increment, N/m */
+    unsigned char P_fixed[4]; /* mixed: 1 where P_star holds (prescribed, or 0 in the stress stage) */
+    double P_shift[4];   /* mixed: the top's traction targets P_star + P_shift, so that the measured
+                            P of eq. 23 (which the support's reactions enter) meets P_star, N/m */
+    double P_miss;       /* mixed: |P measured - P_star| over |P_star| in the traction rows */
+    double *a_hat;       /* [2Q] mixed: the boundary forces with the top's traction components at their targets */
+    sbc_settings s;
+    double dt;           /* s */
+    double kn;           /* the host's normal contact stiffness, N/m (0: unknown) */
+    sbc_motion motion;   /* the frame's travel to the commands (motion.h) */
+    double *mass;        /* [Q] kg */
+    int increment;       /* 0 .. i_tot */
+    sbc_relax relax;
+    double *x_cmd;       /* [2Q] m */
+    double *theta_cmd;   /* [Q] rad */
+    unsigned char *free_rot;
+    double *a;           /* [2Q] boundary forces a_q = -sum of contact forces (eq. 5), N */
+    double *m;           /* [Q] boundary moments m_q = -sum of contact moments (eq. 5), N m */
+    double *x_prev;      /* [2Q] converged positions of the previous increment (prediction), m */
+    double *du, *dtheta; /* [2Q], [Q] servo corrections, m, rad */
+    double lambda;       /* update secant: factor on the fixed-gain corrections */
+    int have_prev;       /* update secant: d_prev holds this increment's last correction */
+    double *d_prev;      /* [3Q] update secant: last fixed-gain correction (du, R dtheta), m */
+    double F_prev[4];    /* F imposed at the previous increment */
+    double F_now[4];     /* F imposed at this increment */
+    int total;           /* increments of the whole path, sbc_settings_total_increments */
+    int servo;           /* 0: initial relaxation of the increment, 1: servo iterations */
+    int iteration;       /* servo iterations in this increment */
+    double r_first;      /* first force residual of the increment (growth check) */
+    double win_min;      /* smallest residual/tolerance ratio in this window of iterations */
+    double prev_min;     /* ... in the window before (stagnation check) */
+    long steps;          /* host steps spent on this increment */
+    sbc_servo_norms norms; /* last residual norms of this increment (zero for D) */
+    sbc_result result;
+    double work_path;    /* the largest work scale |P||F| of the path's converged increments, N/m */
+    double sigma_path;   /* the largest |sigma| (largest component) of those increments, N/m */
+};
+
+/* Stagnation on round-off: the servo iterations of an increment, after the
+ * first check, in windows of this many; when the smallest residual ratio of
+ * a window is not 1 % below that of the window before while the force
+ * residual is within STAGNATION_ROUNDOFF of the frame's own forces, the
+ * tolerances lie below what double precision resolves, and no iteration
+ * reaches them. Above round-off a plateau is left to run (to max_iterations):
+ * relaxation noise takes a floor near the tolerances below them sooner or
+ * later, and a frictional packing under load holds the residual for
+ * hundreds of iterations before it rearranges and converges (the mixed layer
+ * of Sect. 5.3, increment 36: 1400 iterations at 186 times the
+ * tolerances; the whole path of eq. 38 under (T): 27 of 300 increments take
+ * 1000 to 2822 iterations, and converge). */
+#define STAGNATION_WINDOW 200
+#define STAGNATION_ROUNDOFF 1e-9
+
+/* controller_mixed.c: the mixed condition's bookkeeping (Table 5) */
+int sbc_ctl_row_measured(const sbc_controller *c, int i);
+void sbc_ctl_mixed_follow_F(sbc_controller *c);
+void sbc_ctl_start_mixed(sbc_controller *c);
+void sbc_ctl_mixed_stress_targets(sbc_controller *c);
+void sbc_ctl_assign_modes(sbc_controller *c);
+double sbc_ctl_mixed_lag_tol(const sbc_controller *c);
+double sbc_ctl_mixed_lag(const sbc_controller *c, const double *x, double Fm[4]);
+double sbc_ctl_mixed_stress_miss(sbc_controller *c, double P[4], double P_hat[4]);
+void sbc_ctl_new_reference(sbc_controller *c, const double *x);
+
+/* controller_checks.c: refusals, failure messages and the certification of a row */
+double sbc_ctl_tol_force(const sbc_controller *c);
+double sbc_ctl_tol_moment(const sbc_controller *c);
+int sbc_ctl_increments_too_coarse(const sbc_controller *c, sbc_error *err);
+void sbc_ctl_diverged(const sbc_controller *c, const sbc_servo_norms *n, const char *why, int too_slow, sbc_error *err);
+void sbc_ctl_stagnated(const sbc_controller *c, const sbc_servo_norms *n, sbc_error *err);
+double sbc_ctl_largest_component(const double t[4]);
+int sbc_ctl_certified(const sbc_controller *c, const sbc_snapshot *snap, sbc_error *err);
+
+/* controller_update.c: the update rules (fixed, secant) and eq. 15 under (T) */
+void sbc_ctl_restore_eq15(sbc_controller *c);
+void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n);
+
+#endif

@@ -1,0 +1,115 @@
+/* The controller's update rules: the fixed gains of Table 4 (servo.c) and
+ * the secant update's factor; eq. 15 restored under (T) (controller_private.h). */
+#include "controller_private.h"
+#include "sbc/homogenize.h"
+
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* (T): after a force correction, the frame is put back on the imposed F
+ * (eq. 15) exactly, by the smallest change of the commands in the metric of
+ * the area vectors:
+ *   x_q += M S^-1 A_q,  M = F G - sum_r x_r (x) A_r,  S = sum_r A_r (x) A_r,
+ * G = sum_r X_r (x) A_r (eq. 15 normalized as sbc_homogenize_F does), since
+ * sum_q (M S^-1 A_q) (x) A_q = M. The force correction then only moves the
+ * frame within the set of positions that keep F, and the deformation
+ * residual of eq. 35 stays at round-off instead of being won back at
+ * g_F per iteration (the stall near F12 = 0.2 of the irregular packing). */
+void sbc_ctl_restore_eq15(sbc_controller *c)
+{
+    const sbc_frame *f = c->frame;
+    const double *F = c->F_now;
+    double S[4] = {0.0, 0.0, 0.0, 0.0}, G[4] = {0.0, 0.0, 0.0, 0.0}, X[4] = {0.0, 0.0, 0.0, 0.0}, M[4], Si[4], det;
+    int q, i, j;
+    for (q = 0; q < f->n; ++q) {
+        const double *A = &f->A[2 * q];
+        for (i = 0; i < 2; ++i)
+            for (j = 0; j < 2; ++j) {
+                S[2 * i + j] += A[i] * A[j];
+                G[2 * i + j] += f->X[2 * q + i] * A[j];
+                X[2 * i + j] += c->x_cmd[2 * q + i] * A[j];
+            }
+    }
+    det = sbc_det2(S);
+    if (!(fabs(det) > 0.0))
+        return;
+    Si[0] = S[3] / det;
+    Si[1] = -S[1] / det;
+    Si[2] = -S[2] / det;
+    Si[3] = S[0] / det;
+    for (i = 0; i < 2; ++i)
+        for (j = 0; j < 2; ++j)
+            M[2 * i + j] = F[2 * i] * G[j] + F[2 * i + 1] * G[2 + j] - X[2 * i + j];
+    for (q = 0; q < f->n; ++q) {
+        const double *A = &f->A[2 * q];
+        const double b0 = Si[0] * A[0] + Si[1] * A[1], b1 = Si[2] * A[0] + Si[3] * A[1];
+        c->x_cmd[2 * q] += M[0] * b0 + M[1] * b1;
+        c->x_cmd[2 * q + 1] += M[2] * b0 + M[3] * b1;
+    }
+}
+
+/* update secant: the largest correction of one frame particle, in radii.
+ * Larger corrections cost fewer iterations but move the frame back and forth
+ * through frictional contacts, which then slip along another path: on the
+ * regular packing under (P) at dt = 1e-4 s, 0.05 R gave a path error of 1.2 %,
+ * 0.01 R 0.65 %, 0.002 R 0.37 % and 0.0005 R 0.30 % against the reference
+ * (whose own spread is about 0.4 %), at 15, 16, 29 and 103 thousand steps
+ * (docs/speed-accuracy.md). */
+#define SECANT_MAX_STEP 0.002
+
+/* update secant with kn known: bounds of the factor on the scale-free
+ * corrections (servo.c). Without a lower bound the factor halves on every
+ * iteration whose residual did not fall, which frictional noise makes
+ * common: on the 232-disc irregular packing it reached 1e-34 and the servo
+ * stalled at a relative residual of 4e-4 for thousands of iterations. */
+#define SECANT_LAMBDA_MIN 1e-2
+#define SECANT_LAMBDA_MAX 1e2
+
+/* update secant: scales the fixed-gain correction d_k (du, R dtheta of every
+ * frame particle, m) by lambda_k. Within an increment, from the previous
+ * correction d_(k-1) and its factor, the Barzilai-Borwein step of the
+ * preconditioned iteration x <- x + lambda d(x):
+ *   s = lambda_(k-1) d_(k-1),  y = d_(k-1) - d_k  (~ P J s),
+ *   lambda_k = s.y / y.y = lambda_(k-1) d_(k-1).(d_(k-1) - d_k) / |d_(k-1) - d_k|^2,
+ * when s.y > 0; when s.y <= 0 (the residual did not fall along s) lambda
+ * halves. The first correction of an increment keeps the factor of the last
+ * one. No frame particle moves more than SECANT_MAX_STEP of its radius in one
+ * correction, which also bounds the first step whatever the gains. */
+void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n)
+{
+    const sbc_frame *f = c->frame;
+    double dd = 0.0, dy = 0.0, yy = 0.0, lam = c->lambda, cap = DBL_MAX;
+    int q, k;
+    for (q = 0; q < f->n; ++q) {
+        double d[3] = {c->du[2 * q], c->du[2 * q + 1], f->R[q] * c->dtheta[q]};
+        double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (k = 0; k < 3; ++k) {
+            double y = c->d_prev[3 * q + k] - d[k];
+            dd += d[k] * d[k];
+            dy += c->d_prev[3 * q + k] * y;
+            yy += y * y;
+            c->d_prev[3 * q + k] = d[k];
+        }
+        if (len > 0.0 && SECANT_MAX_STEP * f->R[q] / len < cap)
+            cap = SECANT_MAX_STEP * f->R[q] / len;
+    }
+    if (c->have_prev)
+        lam = dy > 0.0 && yy > 0.0 ? c->lambda * dy / yy : 0.5 * c->lambda;
+    if (c->kn > 0.0) /* scale-free first steps (servo.c): the factor stays within two decades of them */
+        lam = fmin(fmax(lam, SECANT_LAMBDA_MIN), SECANT_LAMBDA_MAX);
+    if (dd > 0.0) {
+        c->lambda = lam = fmin(lam, cap);
+    } else {
+        lam = c->lambda; /* no correction to scale; the factor stays */
+    }
+    c->have_prev = 1;
+    for (k = 0; k < 2 * f->n; ++k)
+        c->du[k] *= lam;
+    for (k = 0; k < f->n; ++k)
+        c->dtheta[k] *= lam;
+    n->max_step *= lam;
+}
