@@ -433,10 +433,13 @@ static int correction_moves_frame(const sbc_controller *c)
     return 0;
 }
 
-sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
+/* The stages of sbc_controller_step. A stage that ends the step returns its
+ * event; STAGE_ON lets the step go on to the next stage. */
+#define STAGE_ON ((sbc_event) - 1)
+
+/* The path still open, the energies finite. */
+static sbc_event stage_open(const sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
 {
-    const char *what = NULL;
-    const sbc_relax_sample sample = sample_of(snap);
     if (c->increment > c->total) {
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: the loading path is already finished", sbc_bc_name(c->s.bc));
         return SBC_EVENT_FAILED;
@@ -449,10 +452,14 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
                  isfinite(snap->kinetic_energy) ? "potential energy" : "kinetic energy");
         return SBC_EVENT_FAILED;
     }
-    if (sbc_motion_advance(&c->motion, c->frame->n, c->x_cmd, c->theta_cmd)) {
-        c->steps++;
-        return SBC_EVENT_CORRECTED; /* the frame travels on (motion.h) */
-    }
+    return STAGE_ON;
+}
+
+/* The relaxation (relax.h): the host's measures checked, then the criterion;
+ * over, or RELAXING, or FAILED after max_relax_steps. */
+static sbc_event stage_relax(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
+{
+    const sbc_relax_sample sample = sample_of(snap);
     if (!(snap->unbalanced_max >= 0.0) || !isfinite(snap->unbalanced_max) || snap->contact_count < 0 ||
         !(snap->contact_force_sum >= 0.0 || snap->potential_energy < 0.0)) {
         sbc_fail(err, SBC_ERR_NUMERIC,
@@ -469,26 +476,33 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
                  sbc_bc_name(c->s.bc), c->increment, c->relax.steps + 1);
         return SBC_EVENT_FAILED;
     }
-    if (!sbc_relax_update(&c->relax, &sample)) {
-        if (c->relax.steps >= c->s.max_relax_steps) {
-            if (c->s.criterion == SBC_CRITERION_FORCE)
-                sbc_fail(err, SBC_ERR_DIVERGED,
-                         "servo_bc %s: increment %d, iteration %d: relaxation did not reach force balance %g for %d "
-                         "steps within %ld steps (unbalanced force ratio %.3g, Ek = %g J, Ep = %g J); check damping "
-                         "and time step, loosen 'balance' or raise max_relax_steps",
-                         sbc_bc_name(c->s.bc), c->increment, c->iteration, c->relax.tol, c->s.window,
-                         c->relax.steps, c->relax.unbalanced, snap->kinetic_energy, snap->potential_energy);
-            else
-                sbc_fail(err, SBC_ERR_DIVERGED,
-                         "servo_bc %s: increment %d, iteration %d: relaxation did not reach Ek/Ep <= %g for %d steps "
-                         "within %ld steps (Ek = %g J, Ep = %g J); check damping and time step, or raise "
-                         "max_relax_steps",
-                         sbc_bc_name(c->s.bc), c->increment, c->iteration, c->s.tol_E, c->s.window, c->relax.steps,
-                         snap->kinetic_energy, snap->potential_energy);
-            return SBC_EVENT_FAILED;
-        }
+    if (sbc_relax_update(&c->relax, &sample))
+        return STAGE_ON;
+    if (c->relax.steps < c->s.max_relax_steps)
         return SBC_EVENT_RELAXING;
-    }
+    if (c->s.criterion == SBC_CRITERION_FORCE)
+        sbc_fail(err, SBC_ERR_DIVERGED,
+                 "servo_bc %s: increment %d, iteration %d: relaxation did not reach force balance %g for %d "
+                 "steps within %ld steps (unbalanced force ratio %.3g, Ek = %g J, Ep = %g J); check damping "
+                 "and time step, loosen 'balance' or raise max_relax_steps",
+                 sbc_bc_name(c->s.bc), c->increment, c->iteration, c->relax.tol, c->s.window,
+                 c->relax.steps, c->relax.unbalanced, snap->kinetic_energy, snap->potential_energy);
+    else
+        sbc_fail(err, SBC_ERR_DIVERGED,
+                 "servo_bc %s: increment %d, iteration %d: relaxation did not reach Ek/Ep <= %g for %d steps "
+                 "within %ld steps (Ek = %g J, Ep = %g J); check damping and time step, or raise "
+                 "max_relax_steps",
+                 sbc_bc_name(c->s.bc), c->increment, c->iteration, c->s.tol_E, c->s.window, c->relax.steps,
+                 snap->kinetic_energy, snap->potential_energy);
+    return SBC_EVENT_FAILED;
+}
+
+/* The relaxed frame: positions and forces there and finite; the boundary
+ * forces and moments of eq. 5 taken from it. */
+static sbc_event stage_read_frame(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
+{
+    const char *what = NULL;
+    int k;
     if (!snap->x || !snap->force || !snap->theta || !snap->torque) {
         sbc_fail(err, SBC_ERR_INPUT,
                  "servo_bc %s: increment %d, relaxation step %ld: the relaxation is over but the host passed no "
@@ -503,103 +517,137 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
                  sbc_bc_name(c->s.bc), c->increment, c->relax.steps, what);
         return SBC_EVENT_FAILED;
     }
-    {
-        int k;
-        for (k = 0; k < 2 * c->frame->n; ++k)
-            c->a[k] = -snap->force[k]; /* eq. 5: sum of contact forces = -a_q */
-        for (k = 0; k < c->frame->n; ++k)
-            c->m[k] = -snap->torque[k];
-    }
+    for (k = 0; k < 2 * c->frame->n; ++k)
+        c->a[k] = -snap->force[k]; /* eq. 5: sum of contact forces = -a_q */
+    for (k = 0; k < c->frame->n; ++k)
+        c->m[k] = -snap->torque[k];
     c->steps += c->relax.steps;
-    if (c->s.bc != SBC_BC_D) {
-        sbc_servo_norms nrm;
-        double ratio, F_measured[4], P_measured[4], P_hat[4];
-        const int first = !c->servo;
+    return STAGE_ON;
+}
+
+/* Steps 1.5 of Tables 2-3 and 5: the residuals and the corrections (servo.c)
+ * into c->norms, c->du, c->dtheta; mixed: F and P measured (F_measured,
+ * P_hat). */
+static sbc_event stage_residuals(sbc_controller *c, const sbc_snapshot *snap, double F_measured[4], double P_hat[4],
+                                 sbc_error *err)
+{
+    const sbc_servo_floors floors = {sbc_relax_scale_floor(&c->relax), SBC_RELAX_NET_FLOOR * c->relax.floor_force};
+    sbc_servo_norms nrm;
+    if (c->s.bc == SBC_BC_MIXED) {
+        double target[4], P_measured[4];
         int k;
-        /* Tables 2-3: after the initial relaxation (1.2) correct at once (1.3);
-         * after each later relaxation (1.4) check the residuals (1.5-1.6). */
-        const sbc_servo_floors floors = {sbc_relax_scale_floor(&c->relax),
-                                         SBC_RELAX_NET_FLOOR * c->relax.floor_force};
-        if (c->s.bc == SBC_BC_MIXED) {
-            double target[4];
-            for (k = 0; k < 4; ++k)
-                target[k] = c->P_star[k] + c->P_shift[k];
-            sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->kn, &floors, target, c->P_fixed, c->a, c->m,
+        for (k = 0; k < 4; ++k)
+            target[k] = c->P_star[k] + c->P_shift[k];
+        sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->kn, &floors, target, c->P_fixed, c->a, c->m,
+                        c->du, c->dtheta, &nrm);
+        nrm.r_deformation = sbc_ctl_mixed_lag(c, snap->x, F_measured);
+        c->P_miss = sbc_ctl_mixed_stress_miss(c, P_measured, P_hat);
+    } else {
+        sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->kn, &floors, c->F_now, c->a, c->m, snap->x,
                             c->du, c->dtheta, &nrm);
-            nrm.r_deformation = sbc_ctl_mixed_lag(c, snap->x, F_measured);
-            c->P_miss = sbc_ctl_mixed_stress_miss(c, P_measured, P_hat);
-        }
-        else
-            sbc_servo_residuals(c->s.bc, c->frame, &c->s, c->mass, c->dt, c->kn, &floors, c->F_now, c->a, c->m, snap->x,
-                                c->du, c->dtheta, &nrm);
-        c->norms = nrm;
-        if (!isfinite(nrm.r_force) || !isfinite(nrm.r_moment) || !isfinite(nrm.r_deformation)) {
-            sbc_fail(err, SBC_ERR_NUMERIC, "servo_bc %s: increment %d, iteration %d: non-finite residual",
-                     sbc_bc_name(c->s.bc), c->increment, c->iteration);
-            return SBC_EVENT_FAILED;
-        }
-        ratio = residual_ratio(c, &nrm);
-        if (!first && ratio < c->win_min)
-            c->win_min = ratio;
-        if (first) {
-            c->r_first = nrm.r_force;
-        } else if (ratio <= 1.0 && c->relax.tol > relax_tol(&c->s)) {
-            /* converged on an inexact relaxation: relax in place to the
-               tolerance, then check again */
-            sbc_relax_start(&c->relax, c->s.criterion, relax_tol(&c->s), c->s.window, 1);
-            return SBC_EVENT_RELAXING;
-        } else if (ratio <= 1.0) {
-            return accept(c, snap, err);
-        } else if (c->s.update == SBC_UPDATE_FIXED &&
-                   nrm.r_force > 1e3 * fmax(c->r_first, 1e3 * sbc_ctl_tol_force(c))) {
-            /* growth over the first residual of the increment (that one can be
-             * round-off small: an already periodic state, hence the floor) under
-             * fixed gains, which can run away; the secant update caps its
-             * corrections, and a residual that grows under it is the packing
-             * leaving an unstable equilibrium, which the servo follows to a
-             * stable one (docs/servo_bc.md, "Divergence") */
-            sbc_ctl_diverged(c, &nrm, "the force residual grew more than 1000-fold", 0, err);
-            return SBC_EVENT_FAILED;
-        } else if (c->iteration >= c->s.max_iterations) {
-            sbc_ctl_diverged(c, &nrm, "max_iterations reached", 1, err);
-            return SBC_EVENT_FAILED;
-        } else if (c->iteration % STAGNATION_WINDOW == 0) {
-            if (c->win_min > 0.99 * c->prev_min && nrm.relative_force < STAGNATION_ROUNDOFF) {
-                sbc_ctl_stagnated(c, &nrm, err);
-                return SBC_EVENT_FAILED;
-            }
-            c->prev_min = c->win_min;
-            c->win_min = DBL_MAX;
-        }
-        if (c->s.update == SBC_UPDATE_SECANT)
-            sbc_ctl_secant_scale(c, &nrm);
-        if (nrm.max_step > 0.5) { /* fixed gains only: the secant update caps its steps */
-            sbc_ctl_diverged(c, &nrm, "a correction moved a frame particle by more than half its radius", 0, err);
-            return SBC_EVENT_FAILED;
-        }
-        {
-            const int moved = correction_moves_frame(c);
-            save_commands(c);
-            for (k = 0; k < 2 * c->frame->n; ++k)
-                c->x_cmd[k] += c->du[k];
-            for (k = 0; k < c->frame->n; ++k)
-                c->theta_cmd[k] += c->dtheta[k];
-            c->servo = 1;
-            c->iteration++;
-            if (c->s.bc == SBC_BC_T && c->s.update != SBC_UPDATE_FIXED)
-                sbc_ctl_restore_eq15(c);
-            if (c->s.bc == SBC_BC_MIXED) { /* the frame follows the measured rows of F */
-                for (k = 0; k < 2; ++k)
-                    if (sbc_ctl_row_measured(c, k))
-                        c->F_now[3 * k] = F_measured[3 * k];
-                for (k = 0; k < 2; ++k) /* the measured P_kk towards P_star (the normal stress of the traction row) */
-                    if (c->P_fixed[3 * k] && sbc_ctl_row_measured(c, k))
-                        c->P_shift[3 * k] += c->P_star[3 * k] - P_hat[3 * k];
-                sbc_ctl_mixed_follow_F(c);
-            }
-            begin_move(c, !moved, inexact_tol(c, nrm.relative_force));
-        }
-        return SBC_EVENT_CORRECTED;
     }
-    return accept(c, snap, err);
+    c->norms = nrm;
+    if (!isfinite(nrm.r_force) || !isfinite(nrm.r_moment) || !isfinite(nrm.r_deformation)) {
+        sbc_fail(err, SBC_ERR_NUMERIC, "servo_bc %s: increment %d, iteration %d: non-finite residual",
+                 sbc_bc_name(c->s.bc), c->increment, c->iteration);
+        return SBC_EVENT_FAILED;
+    }
+    return STAGE_ON;
+}
+
+/* Step 1.6: after the initial relaxation (1.2) correct at once (1.3); after
+ * each later relaxation (1.4) accept, relax in place once more, stop with
+ * the reason, or go on to the correction. */
+static sbc_event stage_decide(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
+{
+    const sbc_servo_norms *nrm = &c->norms;
+    const double ratio = residual_ratio(c, nrm);
+    const int first = !c->servo;
+    if (!first && ratio < c->win_min)
+        c->win_min = ratio;
+    if (first) {
+        c->r_first = nrm->r_force;
+    } else if (ratio <= 1.0 && c->relax.tol > relax_tol(&c->s)) {
+        /* converged on an inexact relaxation: relax in place to the
+           tolerance, then check again */
+        sbc_relax_start(&c->relax, c->s.criterion, relax_tol(&c->s), c->s.window, 1);
+        return SBC_EVENT_RELAXING;
+    } else if (ratio <= 1.0) {
+        return accept(c, snap, err);
+    } else if (c->s.update == SBC_UPDATE_FIXED && nrm->r_force > 1e3 * fmax(c->r_first, 1e3 * sbc_ctl_tol_force(c))) {
+        /* growth over the first residual of the increment (that one can be
+         * round-off small: an already periodic state, hence the floor) under
+         * fixed gains, which can run away; the secant update caps its
+         * corrections, and a residual that grows under it is the packing
+         * leaving an unstable equilibrium, which the servo follows to a
+         * stable one (docs/servo_bc.md, "Divergence") */
+        sbc_ctl_diverged(c, nrm, "the force residual grew more than 1000-fold", 0, err);
+        return SBC_EVENT_FAILED;
+    } else if (c->iteration >= c->s.max_iterations) {
+        sbc_ctl_diverged(c, nrm, "max_iterations reached", 1, err);
+        return SBC_EVENT_FAILED;
+    } else if (c->iteration % STAGNATION_WINDOW == 0) {
+        if (c->win_min > 0.99 * c->prev_min && nrm->relative_force < STAGNATION_ROUNDOFF) {
+            sbc_ctl_stagnated(c, nrm, err);
+            return SBC_EVENT_FAILED;
+        }
+        c->prev_min = c->win_min;
+        c->win_min = DBL_MAX;
+    }
+    return STAGE_ON;
+}
+
+/* Steps 1.3 / 1.6.B: the correction scaled by the update rule, added to the
+ * commands; the frame travels there and the next relaxation begins. */
+static sbc_event stage_correct(sbc_controller *c, const double F_measured[4], const double P_hat[4], sbc_error *err)
+{
+    sbc_servo_norms nrm = c->norms; /* the scaled step is this correction's; c->norms keeps the residuals' */
+    int moved, k;
+    if (c->s.update == SBC_UPDATE_SECANT)
+        sbc_ctl_secant_scale(c, &nrm);
+    if (nrm.max_step > 0.5) { /* fixed gains only: the secant update caps its steps */
+        sbc_ctl_diverged(c, &nrm, "a correction moved a frame particle by more than half its radius", 0, err);
+        return SBC_EVENT_FAILED;
+    }
+    moved = correction_moves_frame(c);
+    save_commands(c);
+    for (k = 0; k < 2 * c->frame->n; ++k)
+        c->x_cmd[k] += c->du[k];
+    for (k = 0; k < c->frame->n; ++k)
+        c->theta_cmd[k] += c->dtheta[k];
+    c->servo = 1;
+    c->iteration++;
+    if (c->s.bc == SBC_BC_T && c->s.update != SBC_UPDATE_FIXED)
+        sbc_ctl_restore_eq15(c);
+    if (c->s.bc == SBC_BC_MIXED) { /* the frame follows the measured rows of F */
+        for (k = 0; k < 2; ++k)
+            if (sbc_ctl_row_measured(c, k))
+                c->F_now[3 * k] = F_measured[3 * k];
+        for (k = 0; k < 2; ++k) /* the measured P_kk towards P_star (the normal stress of the traction row) */
+            if (c->P_fixed[3 * k] && sbc_ctl_row_measured(c, k))
+                c->P_shift[3 * k] += c->P_star[3 * k] - P_hat[3 * k];
+        sbc_ctl_mixed_follow_F(c);
+    }
+    begin_move(c, !moved, inexact_tol(c, nrm.relative_force));
+    return SBC_EVENT_CORRECTED;
+}
+
+sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
+{
+    double F_measured[4], P_hat[4];
+    sbc_event ev;
+    if ((ev = stage_open(c, snap, err)) != STAGE_ON)
+        return ev;
+    if (sbc_motion_advance(&c->motion, c->frame->n, c->x_cmd, c->theta_cmd)) {
+        c->steps++;
+        return SBC_EVENT_CORRECTED; /* the frame travels on (motion.h) */
+    }
+    if ((ev = stage_relax(c, snap, err)) != STAGE_ON || (ev = stage_read_frame(c, snap, err)) != STAGE_ON)
+        return ev;
+    if (c->s.bc == SBC_BC_D)
+        return accept(c, snap, err);
+    if ((ev = stage_residuals(c, snap, F_measured, P_hat, err)) != STAGE_ON ||
+        (ev = stage_decide(c, snap, err)) != STAGE_ON)
+        return ev;
+    return stage_correct(c, F_measured, P_hat, err);
 }
