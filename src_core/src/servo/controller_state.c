@@ -10,119 +10,151 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Restart layout (doubles): version, Q, bc, increments, F (4), dt | increment, servo,
- * iteration, r_first, steps, norms (4), relax (steps, count, rising, past_peak,
- * ek_prev, at_rest), lambda, have_prev, win_min, prev_min, F_prev (4), F_now (4), relax (tol, known_step, ep_known,
- * ek_known, fc_known, unbalanced), motion (steps, done), P_shift (4), path (force, work, sigma) | result (23) |
- * x_cmd (2Q),
- * theta_cmd (Q), free_rot (Q), x_prev (2Q), reference X (2Q), d_prev (3Q), motion (x_from, x_goal 4Q,
- * th_from, th_goal 2Q). */
+/* Restart layout (doubles): a head (version, Q, bc, increments, F (4),
+ * dt), checked against the controller's own words, then the fields of
+ * state_fields in their order; save and load both walk that one list. */
 #define STATE_VERSION 8.0
 #define STATE_HEAD 9
-#define STATE_SCALARS 42
-#define STATE_RESULT 23
-
-size_t sbc_controller_state_size(const sbc_controller *c)
-{
-    return STATE_HEAD + STATE_SCALARS + STATE_RESULT + 17 * (size_t)c->frame->n;
-}
-
-static double *put_result(const sbc_result *r, double *o)
-{
-    int k;
-    *o++ = r->increment;
-    for (k = 0; k < 4; ++k) *o++ = r->F[k];
-    for (k = 0; k < 4; ++k) *o++ = r->P[k];
-    for (k = 0; k < 4; ++k) *o++ = r->sigma[k];
-    *o++ = r->overlap_mean;
-    *o++ = r->rotation_mean;
-    *o++ = r->iterations;
-    *o++ = (double)r->relax_steps;
-    *o++ = r->r_force;
-    *o++ = r->r_moment;
-    *o++ = r->r_deformation;
-    *o++ = r->hill_mandel;
-    *o++ = r->unbalanced;
-    *o++ = r->frame_residual;
-    return o;
-}
 
 /* counters saved as doubles: at most 2^50, far below where a long or a
  * double stops counting steps one by one */
 #define SAVED_COUNT 1125899906842624L
 
-static void get_result(sbc_result *r, sbc_saved *rd, int total)
+/* One saved field: count values of one kind at `at`. Kinds: 'r' a finite
+ * real, 'p' a real > 0, 'i' an int and 'l' a long in [lo, hi], 'u' an
+ * unsigned char in [lo, hi], 'k' reals checked on load but kept by the
+ * caller (the reference X, set after every check). */
+typedef struct state_field {
+    const char *name;
+    char kind;
+    void *at;
+    size_t count;
+    long lo, hi;
+} state_field;
+
+#define STATE_FIELDS 80
+
+/* The controller's saved state, in the file's order; returns the number of
+ * fields. */
+static int state_fields(sbc_controller *c, state_field f[STATE_FIELDS])
 {
+    const size_t q = (size_t)c->frame->n;
+    sbc_result *r = &c->result;
+    int n = 0;
+#define REAL(name, at, count) f[n++] = (state_field){name, 'r', at, count, 0, 0}
+#define INT(name, at, lo, hi) f[n++] = (state_field){name, 'i', at, 1, lo, hi}
+#define LONG(name, at, lo, hi) f[n++] = (state_field){name, 'l', at, 1, lo, hi}
+    INT("increment", &c->increment, 0, c->total + 1L);
+    INT("servo", &c->servo, 0, 1);
+    INT("iteration", &c->iteration, 0, INT_MAX);
+    REAL("r_first", &c->r_first, 1);
+    LONG("steps", &c->steps, 0, SAVED_COUNT);
+    REAL("r_force", &c->norms.r_force, 1);
+    REAL("r_moment", &c->norms.r_moment, 1);
+    REAL("r_deformation", &c->norms.r_deformation, 1);
+    REAL("max_step", &c->norms.max_step, 1);
+    LONG("relaxation steps", &c->relax.steps, 0, SAVED_COUNT);
+    INT("relaxation count", &c->relax.count, 0, INT_MAX);
+    INT("relaxation rising", &c->relax.rising, 0, 1);
+    INT("relaxation past_peak", &c->relax.past_peak, 0, 1);
+    REAL("relaxation ek_prev", &c->relax.ek_prev, 1);
+    INT("relaxation at_rest", &c->relax.at_rest, 0, 1);
+    REAL("lambda", &c->lambda, 1);
+    INT("have_prev", &c->have_prev, 0, 1);
+    REAL("win_min", &c->win_min, 1);
+    REAL("prev_min", &c->prev_min, 1);
+    REAL("F_prev", c->F_prev, 4);
+    REAL("F_now", c->F_now, 4);
+    f[n++] = (state_field){"relaxation tol", 'p', &c->relax.tol, 1, 0, 0};
+    LONG("relaxation known_step", &c->relax.known_step, 0, SAVED_COUNT);
+    REAL("relaxation ep_known", &c->relax.ep_known, 1);
+    REAL("relaxation ek_known", &c->relax.ek_known, 1);
+    REAL("relaxation fc_known", &c->relax.fc_known, 1);
+    REAL("relaxation unbalanced", &c->relax.unbalanced, 1);
+    LONG("motion steps", &c->motion.steps, 0, SAVED_COUNT);
+    LONG("motion done", &c->motion.done, 0, SAVED_COUNT);
+    REAL("P_shift", c->P_shift, 4);
+    REAL("path force", &c->relax.path_force, 1);
+    REAL("path work scale", &c->work_path, 1);
+    REAL("path stress", &c->sigma_path, 1);
+    INT("result increment", &r->increment, 0, c->total);
+    REAL("result F", r->F, 4);
+    REAL("result P", r->P, 4);
+    REAL("result sigma", r->sigma, 4);
+    REAL("result overlap_mean", &r->overlap_mean, 1);
+    REAL("result rotation_mean", &r->rotation_mean, 1);
+    INT("result iterations", &r->iterations, 0, INT_MAX);
+    LONG("result relax_steps", &r->relax_steps, 0, SAVED_COUNT);
+    REAL("result r_force", &r->r_force, 1);
+    REAL("result r_moment", &r->r_moment, 1);
+    REAL("result r_deformation", &r->r_deformation, 1);
+    REAL("result hill_mandel", &r->hill_mandel, 1);
+    REAL("result unbalanced", &r->unbalanced, 1);
+    REAL("result frame_residual", &r->frame_residual, 1);
+    REAL("x_cmd", c->x_cmd, 2 * q);
+    REAL("theta_cmd", c->theta_cmd, q);
+    f[n++] = (state_field){"free_rot", 'u', c->free_rot, q, 0, 1};
+    REAL("x_prev", c->x_prev, 2 * q);
+    f[n++] = (state_field){"reference X", 'k', c->ref.X, 2 * q, 0, 0};
+    REAL("d_prev", c->d_prev, 3 * q);
+    REAL("motion x_from", c->motion.x_from, 2 * q);
+    REAL("motion x_goal", c->motion.x_goal, 2 * q);
+    REAL("motion th_from", c->motion.th_from, q);
+    REAL("motion th_goal", c->motion.th_goal, q);
+#undef REAL
+#undef INT
+#undef LONG
+    return n;
+}
+
+size_t sbc_controller_state_size(const sbc_controller *c)
+{
+    state_field f[STATE_FIELDS];
+    const int n = state_fields((sbc_controller *)c, f); /* read only */
+    size_t size = STATE_HEAD;
     int k;
-    r->increment = (int)sbc_saved_int(rd, "result increment", 0, total);
-    for (k = 0; k < 4; ++k) r->F[k] = sbc_saved_real(rd, "result F");
-    for (k = 0; k < 4; ++k) r->P[k] = sbc_saved_real(rd, "result P");
-    for (k = 0; k < 4; ++k) r->sigma[k] = sbc_saved_real(rd, "result sigma");
-    r->overlap_mean = sbc_saved_real(rd, "result overlap_mean");
-    r->rotation_mean = sbc_saved_real(rd, "result rotation_mean");
-    r->iterations = (int)sbc_saved_int(rd, "result iterations", 0, INT_MAX);
-    r->relax_steps = sbc_saved_int(rd, "result relax_steps", 0, SAVED_COUNT);
-    r->r_force = sbc_saved_real(rd, "result r_force");
-    r->r_moment = sbc_saved_real(rd, "result r_moment");
-    r->r_deformation = sbc_saved_real(rd, "result r_deformation");
-    r->hill_mandel = sbc_saved_real(rd, "result hill_mandel");
-    r->unbalanced = sbc_saved_real(rd, "result unbalanced");
-    r->frame_residual = sbc_saved_real(rd, "result frame_residual");
+    for (k = 0; k < n; ++k)
+        size += f[k].count;
+    return size;
 }
 
 void sbc_controller_save(const sbc_controller *c, double *o)
 {
-    int k, q = c->frame->n;
+    state_field f[STATE_FIELDS];
+    const int n = state_fields((sbc_controller *)c, f); /* read only */
+    int k;
+    size_t j;
     *o++ = STATE_VERSION;
-    *o++ = q;
+    *o++ = c->frame->n;
     *o++ = c->s.bc;
     *o++ = c->s.increments;
     for (k = 0; k < 4; ++k) *o++ = c->s.F[k];
     *o++ = c->dt;
-    *o++ = c->increment;
-    *o++ = c->servo;
-    *o++ = c->iteration;
-    *o++ = c->r_first;
-    *o++ = (double)c->steps;
-    *o++ = c->norms.r_force;
-    *o++ = c->norms.r_moment;
-    *o++ = c->norms.r_deformation;
-    *o++ = c->norms.max_step;
-    *o++ = (double)c->relax.steps;
-    *o++ = c->relax.count;
-    *o++ = c->relax.rising;
-    *o++ = c->relax.past_peak;
-    *o++ = c->relax.ek_prev;
-    *o++ = c->relax.at_rest;
-    *o++ = c->lambda;
-    *o++ = c->have_prev;
-    *o++ = c->win_min;
-    *o++ = c->prev_min;
-    for (k = 0; k < 4; ++k) *o++ = c->F_prev[k];
-    for (k = 0; k < 4; ++k) *o++ = c->F_now[k];
-    *o++ = c->relax.tol;
-    *o++ = (double)c->relax.known_step;
-    *o++ = c->relax.ep_known;
-    *o++ = c->relax.ek_known;
-    *o++ = c->relax.fc_known;
-    *o++ = c->relax.unbalanced;
-    *o++ = (double)c->motion.steps;
-    *o++ = (double)c->motion.done;
-    for (k = 0; k < 4; ++k) *o++ = c->P_shift[k];
-    *o++ = c->relax.path_force;
-    *o++ = c->work_path;
-    *o++ = c->sigma_path;
-    o = put_result(&c->result, o);
-    for (k = 0; k < 2 * q; ++k) *o++ = c->x_cmd[k];
-    for (k = 0; k < q; ++k) *o++ = c->theta_cmd[k];
-    for (k = 0; k < q; ++k) *o++ = c->free_rot[k];
-    for (k = 0; k < 2 * q; ++k) *o++ = c->x_prev[k];
-    for (k = 0; k < 2 * q; ++k) *o++ = c->ref.X[k];
-    for (k = 0; k < 3 * q; ++k) *o++ = c->d_prev[k];
-    for (k = 0; k < 2 * q; ++k) *o++ = c->motion.x_from[k];
-    for (k = 0; k < 2 * q; ++k) *o++ = c->motion.x_goal[k];
-    for (k = 0; k < q; ++k) *o++ = c->motion.th_from[k];
-    for (k = 0; k < q; ++k) *o++ = c->motion.th_goal[k];
+    for (k = 0; k < n; ++k)
+        for (j = 0; j < f[k].count; ++j) {
+            if (f[k].kind == 'i') *o++ = ((const int *)f[k].at)[j];
+            else if (f[k].kind == 'l') *o++ = (double)((const long *)f[k].at)[j];
+            else if (f[k].kind == 'u') *o++ = ((const unsigned char *)f[k].at)[j];
+            else *o++ = ((const double *)f[k].at)[j];
+        }
+}
+
+/* Reads the fields f [n] from rd; the kept ones ('k') are left where they
+ * are (in rd's input). */
+static void load_fields(const state_field *f, int n, sbc_saved *rd)
+{
+    int k;
+    size_t j;
+    for (k = 0; k < n; ++k)
+        for (j = 0; j < f[k].count; ++j) {
+            if (f[k].kind == 'i') ((int *)f[k].at)[j] = (int)sbc_saved_int(rd, f[k].name, f[k].lo, f[k].hi);
+            else if (f[k].kind == 'l') ((long *)f[k].at)[j] = sbc_saved_int(rd, f[k].name, f[k].lo, f[k].hi);
+            else if (f[k].kind == 'u')
+                ((unsigned char *)f[k].at)[j] = (unsigned char)sbc_saved_int(rd, f[k].name, f[k].lo, f[k].hi);
+            else if (f[k].kind == 'p') ((double *)f[k].at)[j] = sbc_saved_positive(rd, f[k].name);
+            else if (f[k].kind == 'k') (void)sbc_saved_real(rd, f[k].name);
+            else ((double *)f[k].at)[j] = sbc_saved_real(rd, f[k].name);
+        }
 }
 
 sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err)
@@ -163,53 +195,18 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
         return sbc_fail(err, SBC_ERR_INPUT, "restart: time step %.17g s contradicts the saved %.17g s (set the time "
                         "step before the fix)", c->dt, in[8]);
     sbc_saved_start(&rd, in + STATE_HEAD, n - STATE_HEAD, what, err);
-    c->increment = (int)sbc_saved_int(&rd, "increment", 0, c->total + 1L);
-    c->servo = (int)sbc_saved_int(&rd, "servo", 0, 1);
-    c->iteration = (int)sbc_saved_int(&rd, "iteration", 0, INT_MAX);
-    c->r_first = sbc_saved_real(&rd, "r_first");
-    c->steps = sbc_saved_int(&rd, "steps", 0, SAVED_COUNT);
-    c->norms.r_force = sbc_saved_real(&rd, "r_force");
-    c->norms.r_moment = sbc_saved_real(&rd, "r_moment");
-    c->norms.r_deformation = sbc_saved_real(&rd, "r_deformation");
-    c->norms.max_step = sbc_saved_real(&rd, "max_step");
     c->relax.criterion = c->s.criterion;
     c->relax.window = c->s.window;
-    c->relax.steps = sbc_saved_int(&rd, "relaxation steps", 0, SAVED_COUNT);
-    c->relax.count = (int)sbc_saved_int(&rd, "relaxation count", 0, INT_MAX);
-    c->relax.rising = (int)sbc_saved_int(&rd, "relaxation rising", 0, 1);
-    c->relax.past_peak = (int)sbc_saved_int(&rd, "relaxation past_peak", 0, 1);
-    c->relax.ek_prev = sbc_saved_real(&rd, "relaxation ek_prev");
-    c->relax.at_rest = (int)sbc_saved_int(&rd, "relaxation at_rest", 0, 1);
-    c->lambda = sbc_saved_real(&rd, "lambda");
-    c->have_prev = (int)sbc_saved_int(&rd, "have_prev", 0, 1);
-    c->win_min = sbc_saved_real(&rd, "win_min");
-    c->prev_min = sbc_saved_real(&rd, "prev_min");
-    for (k = 0; k < 4; ++k) c->F_prev[k] = sbc_saved_real(&rd, "F_prev");
-    for (k = 0; k < 4; ++k) c->F_now[k] = sbc_saved_real(&rd, "F_now");
-    c->relax.tol = sbc_saved_positive(&rd, "relaxation tol");
-    c->relax.known_step = sbc_saved_int(&rd, "relaxation known_step", 0, SAVED_COUNT);
-    c->relax.ep_known = sbc_saved_real(&rd, "relaxation ep_known");
-    c->relax.ek_known = sbc_saved_real(&rd, "relaxation ek_known");
-    c->relax.fc_known = sbc_saved_real(&rd, "relaxation fc_known");
-    c->relax.unbalanced = sbc_saved_real(&rd, "relaxation unbalanced");
-    c->motion.steps = sbc_saved_int(&rd, "motion steps", 0, SAVED_COUNT);
-    c->motion.done = sbc_saved_int(&rd, "motion done", 0, SAVED_COUNT);
-    for (k = 0; k < 4; ++k) c->P_shift[k] = sbc_saved_real(&rd, "P_shift");
-    c->relax.path_force = sbc_saved_real(&rd, "path force");
-    c->work_path = sbc_saved_real(&rd, "path work scale");
-    c->sigma_path = sbc_saved_real(&rd, "path stress");
-    get_result(&c->result, &rd, c->total);
-    for (k = 0; k < 2 * q; ++k) c->x_cmd[k] = sbc_saved_real(&rd, "x_cmd");
-    for (k = 0; k < q; ++k) c->theta_cmd[k] = sbc_saved_real(&rd, "theta_cmd");
-    for (k = 0; k < q; ++k) c->free_rot[k] = (unsigned char)sbc_saved_int(&rd, "free_rot", 0, 1);
-    for (k = 0; k < 2 * q; ++k) c->x_prev[k] = sbc_saved_real(&rd, "x_prev");
-    ref = rd.in + rd.at; /* the reference, checked here, set below */
-    for (k = 0; k < 2 * q; ++k) (void)sbc_saved_real(&rd, "reference X");
-    for (k = 0; k < 3 * q; ++k) c->d_prev[k] = sbc_saved_real(&rd, "d_prev");
-    for (k = 0; k < 2 * q; ++k) c->motion.x_from[k] = sbc_saved_real(&rd, "motion x_from");
-    for (k = 0; k < 2 * q; ++k) c->motion.x_goal[k] = sbc_saved_real(&rd, "motion x_goal");
-    for (k = 0; k < q; ++k) c->motion.th_from[k] = sbc_saved_real(&rd, "motion th_from");
-    for (k = 0; k < q; ++k) c->motion.th_goal[k] = sbc_saved_real(&rd, "motion th_goal");
+    {
+        /* the reference X: checked with the rest, set after every check */
+        state_field f[STATE_FIELDS];
+        const int nf = state_fields(c, f);
+        size_t before = 0;
+        for (k = 0; k < nf && f[k].kind != 'k'; ++k)
+            before += f[k].count;
+        ref = in + STATE_HEAD + before;
+        load_fields(f, nf, &rd);
+    }
     if (rd.st != SBC_OK)
         return rd.st;
     if (c->motion.done > c->motion.steps)
