@@ -3,9 +3,11 @@
  *   servo-bc --check SCRIPT      checks every command of the script, runs and writes nothing
  *   servo-bc --decks DIR SCRIPT  writes the script's case for every host into DIR
  *   servo-bc --version           prints the version
- *   servo-bc --columns           prints the results file's columns (columns.h) as a Markdown table */
+ *   servo-bc --columns           prints the results file's columns (columns.h) as a Markdown table
+ *   servo-bc --keywords          prints the servo_bc keywords (keywords.h) as a Markdown table */
 #define _POSIX_C_SOURCE 200809L
 #include "sbc/columns.h"
+#include "sbc/keywords.h"
 #include "sbc/script.h"
 #include "sbc/version.h"
 
@@ -18,9 +20,27 @@ static const char usage[] =
     "       servo-bc --check SCRIPT      check every command of the script; run and write nothing\n"
     "       servo-bc --decks DIR SCRIPT  write the script's case for every host into DIR\n"
     "       servo-bc --version           print the version (CHANGELOG.md)\n"
-    "       servo-bc --columns           print the results file's columns as a Markdown table\n";
+    "       servo-bc --columns           print the results file's columns as a Markdown table\n"
+    "       servo-bc --keywords          print the servo_bc keywords as a Markdown table\n";
 
 /* the columns of the results file (columns.h), as docs/servo_bc.md shows them */
+static void print_keywords(void)
+{
+    int k;
+    puts("| keyword | values | meaning | default |");
+    puts("| --- | --- | --- | --- |");
+    for (k = 0; k < SBC_KEYWORDS; ++k) {
+        const char *p = sbc_keywords[k].names;
+        fputs("| ", stdout);
+        while (*p) { /* each name in backquotes */
+            const size_t n = strcspn(p, " ");
+            printf("`%.*s`%s", (int)n, p, p[n] ? " " : "");
+            p += n + (p[n] == ' ');
+        }
+        printf(" | %s | %s | %s |\n", sbc_keywords[k].values, sbc_keywords[k].meaning, sbc_keywords[k].fallback);
+    }
+}
+
 static void print_columns(void)
 {
     static const char *const written[] = {"count", "17 digits", "6 digits"}; /* by sbc_column_format */
@@ -49,6 +69,10 @@ int main(int argc, char **argv)
     }
     if (argc == 2 && strcmp(argv[1], "--columns") == 0) {
         print_columns();
+        return 0;
+    }
+    if (argc == 2 && strcmp(argv[1], "--keywords") == 0) {
+        print_keywords();
         return 0;
     }
     if (argc == 2 && argv[1][0] != '-')

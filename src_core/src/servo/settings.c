@@ -2,6 +2,7 @@
 #include "sbc/settings.h"
 
 #include "settings_mixed.h"
+#include "sbc/keywords.h"
 
 #include <errno.h>
 #include <math.h>
@@ -344,12 +345,11 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
                     found = 1;
                 }
             }
-            if (!found)
-                st = sbc_fail(err, SBC_ERR_INPUT,
-                              "unknown keyword '%s' (expected F, increments, balance, relax, speed, max_relax_steps, damping, "
-                              "gain_force, gain_moment, gain_deformation, tol_force, tol_moment, tol_deformation, "
-                              "predict, update, accuracy, tol_relative, stress, bottom, right, top, left, seal, max_iterations, frame or file)",
-                              key);
+            if (!found) {
+                char list[512];
+                sbc_keywords_list(list, sizeof list);
+                st = sbc_fail(err, SBC_ERR_INPUT, "unknown keyword '%s' (expected %s)", key, list);
+            }
         }
     }
     /* absolute tolerances given without tol_relative are meant absolute */

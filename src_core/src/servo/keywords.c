@@ -1,0 +1,140 @@
+/* servo_bc: the keyword registry (keywords.h). */
+#include "sbc/keywords.h"
+
+#include <stdio.h>
+#include <string.h>
+
+const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
+    {"F",
+     "F11 F12 F21 F22",
+     "final macroscopic deformation gradient (full F̄, not F̄ − I); F̄ ramps linearly from I over the "
+         "increments; det F̄ > 0",
+     "I"},
+    {"increments",
+     "N ≥ 1",
+     "loading increments i_tot; increment 0 relaxes the packing at F̄ = I; with mixed, the increments of "
+         "the deformation stage (i_tot − i_vs), after the stress stage",
+     "1"},
+    {"accuracy",
+     "`fast`, `balanced`, `tight`, `paper`",
+     "a preset: the relaxation criterion and its tolerance, `tol_relative`, `update`, `speed` and "
+         "`damping`; `fast`, `balanced`, `tight` guarantee the relative stress error 1e-2, 1e-4, 1e-6 at every "
+         "converged increment, `paper` is Table 4 as printed and guarantees nothing (see \"Accuracy\"); "
+         "keywords given with it win wherever they stand",
+     "balanced"},
+    {"balance",
+     "tol window",
+     "relaxed when the largest net force on an interior particle is ≤ tol times the mean contact force and "
+         "Ek ≤ tol²/2 · Ep, for `window` consecutive steps (see \"Accuracy\"); 0 < tol ≤ 1",
+     "preset (1e-5 20)"},
+    {"relax",
+     "tolE window",
+     "instead of `balance`: the paper's criterion, Ek/Ep ≤ tolE for `window` consecutive steps after a "
+         "kinetic-energy maximum (eqs. 11–12, see below)",
+     "(`paper`: 1e-3 20)"},
+    {"speed",
+     "v ≥ 0",
+     "the frame travels to new positions (a new increment, a servo correction) along a straight line at no "
+         "more than v radii per critical time step √(2M_q/kn) of each frame particle; 0 = in one time step, as "
+         "the paper",
+     "preset (0.01)"},
+    {"max_relax_steps",
+     "N",
+     "a relaxation longer than N steps stops the run with an error naming the increment, the iteration and "
+         "the criterion's measures",
+     "1e7"},
+    {"damping",
+     "`fire`, α β, or `none`",
+     "what dissipates the interior's energy: `fire`, FIRE's velocity mix (see \"Accuracy\"); α β, the "
+         "local non-viscous damping of eq. 10, 0 ≤ α, β < 1; with `fire`, β = 0.7 still damps the free frame "
+         "rotations of (T)",
+     "preset (`fire`; `paper`: 0.7 0.7)"},
+    {"gain_force gain_moment gain_deformation",
+     "g > 0",
+     "dimensionless servo gains g·M/Δt², g·M·R²/Δt², g·R² (Table 4); used by (P), (T) with `update fixed` "
+         "(the secant update of the presets takes its first step from the host's kn instead)",
+     "1e2, 2e2, 2e-5"},
+    {"tol_force tol_moment tol_deformation",
+     "ε > 0",
+     "servo residual tolerances of eq. 37 (Table 4); used by (P), (T); `tol_force` or `tol_moment` given "
+         "without `tol_relative` sets `tol_relative 0`",
+     "1e-6, 1e-6, 1e-2"},
+    {"predict",
+     "n_f in [0, 1]",
+     "inheritance factor of the displacement prediction; 0 = none; used by (P), (T)",
+     "0"},
+    {"stress",
+     "Pij value N",
+     "mixed only: first Piola–Kirchhoff component P̄ij (N/m) held by the (T) components whose edge normal "
+         "is e_j, ramped linearly over a stress stage of N increments (i_vs); several components share one "
+         "stage",
+     "–"},
+    {"bottom right top left",
+     "Mx My, each D, P or T",
+     "mixed only: how the x and y displacement of that edge's particles are controlled (see \"Mixed\")",
+     "D D, P P, D T, P P"},
+    {"update",
+     "`fixed` or `secant`",
+     "`fixed`: the corrections of eqs. 33, 34, 36, 48 with the gains as given; `secant`: corrections with "
+         "scale-free first steps (1/(4 kn) per ± pair, 1/(2 kn) per particle, 1/(4 kn R²) per rotation) scaled "
+         "by a Barzilai–Borwein factor learned from the last two iterations, at most 0.002 R per correction; "
+         "under (T), each correction is followed by restoring eq. 15 exactly (see below)",
+     "preset (secant)"},
+    {"tol_relative",
+     "ε ≥ 0",
+     "> 0: converge on the force and moment residuals relative to the frame's own forces, "
+         "√(Σ\\|Δa\\|²/Σ\\|a_q\\|²) and √(Σ Δm²/Σ (\\|a_q\\| R_q)²), instead of `tol_force`, `tol_moment`; the "
+         "CSV's `r_force`, `r_moment` are then these",
+     "preset (1e-4)"},
+    {"max_iterations",
+     "K ≥ 1",
+     "servo iterations per increment before a divergence error",
+     "100000"},
+    {"seal",
+     "`yes` or `no`",
+     "the edges of the polygon of the frame's centres become frictionless walls that no disc passes (see "
+         "\"Seal\"); for irregular packings sheared far enough that a disc would slip out between frame discs",
+     "no"},
+    {"frame",
+     "group-ID",
+     "boundary particles given by a host group; the embedded runner detects the frame itself and refuses "
+         "this keyword",
+     "detected"},
+    {"file",
+     "path",
+     "CSV, one row per converged increment, flushed at once",
+     "none"},
+};
+
+/* the name-th word of a row's names into out [cap]; 0 past the last */
+static int name_at(const sbc_keyword *k, int name, char *out, size_t cap)
+{
+    const char *p = k->names;
+    int i;
+    for (i = 0; i < name; ++i) {
+        p = strchr(p, ' ');
+        if (!p)
+            return 0;
+        ++p;
+    }
+    snprintf(out, cap, "%.*s", (int)strcspn(p, " "), p);
+    return 1;
+}
+
+int sbc_keywords_list(char *out, size_t cap)
+{
+    char name[64];
+    size_t used = 0;
+    int k, i, total = 0, at = 0;
+    for (k = 0; k < SBC_KEYWORDS; ++k)
+        for (i = 0; name_at(&sbc_keywords[k], i, name, sizeof name); ++i)
+            ++total;
+    for (k = 0; k < SBC_KEYWORDS; ++k)
+        for (i = 0; name_at(&sbc_keywords[k], i, name, sizeof name); ++i, ++at) {
+            const char *sep = at == 0 ? "" : at == total - 1 ? " or " : ", ";
+            if (used < cap)
+                snprintf(out + used, cap - used, "%s%s", sep, name);
+            used += strlen(sep) + strlen(name);
+        }
+    return (int)used;
+}
