@@ -87,8 +87,7 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers
 	$(B)/run_tests $(B)/servo-bc
 	$(B)/cxx_headers
 	bash tests/headers.sh
-	bash tests/columns.sh $(B)
-	bash tests/keywords.sh $(B)
+	bash tests/tables.sh $(B)
 	bash tests/layers.sh $(B)
 	bash tests/path_error.sh
 	bash tests/splice_tables.sh

@@ -1,7 +1,7 @@
 /* servo_bc: the result columns, one table (name, unit, the dimensions that
  * have the column, how it is written, description) that drives the results
  * file's header and rows (results.h), the hosts' result row (host.h), the
- * YADE module's COLUMNS and the docs' column table (tests/columns.sh checks
+ * YADE module's COLUMNS and the docs' column table (tests/tables.sh checks
  * docs/servo_bc.md against it). Adding a column is one line here and the code
  * that computes it; new columns are only ever appended. */
 #ifndef SBC_COLUMNS_H

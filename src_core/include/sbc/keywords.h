@@ -2,7 +2,7 @@
  * values, meaning, default) that the parser's "unknown keyword" message, the
  * keyword table of docs/servo_bc.md (`servo-bc --keywords`) and the
  * keyword lists of the LAMMPS and LIGGGHTS fix pages follow
- * (tests/keywords.sh compares them). A new keyword is a row here, its branch
+ * (tests/tables.sh compares them). A new keyword is a row here, its branch
  * in settings.c, and a line in the fix pages. */
 #ifndef SBC_KEYWORDS_H
 #define SBC_KEYWORDS_H
