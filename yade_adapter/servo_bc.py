@@ -22,6 +22,10 @@ import math
 import os
 import sys
 
+from servo_bc_core import (ServoBCError, EP_UNMEASURED, NEED_CONTACTS, NEED_FRAME, DAMPING_NONE,  # noqa: F401
+                           DAMPING_LOCAL, DAMPING_FIRE, EK, NET_MAX, EP, CONTACT_SUM, CONTACT_COUNT, OVERLAP_SUM,
+                           ROTATION_SUM, PARTICLE_COUNT, MEASURES, RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED,
+                           library as _core, columns as _columns, doubles as _doubles, version as _version)
 from yade import O, utils
 from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop,
                           Ig2_Sphere_Sphere_ScGeom, Ip2_FrictMat_FrictMat_FrictPhys,
@@ -31,97 +35,10 @@ from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb,
 __all__ = ['ServoBCError', 'ServoBC', 'Bonds', 'Cohesive', 'load_packing', 'engines', 'run_case', 'COLUMNS',
            'FRAME_MASK']
 
-EP_UNMEASURED = -1.0                    # SBC_RELAX_EP_UNMEASURED
-NEED_CONTACTS, NEED_FRAME = 1, 2        # SBC_NEED_*
-DAMPING_NONE, DAMPING_LOCAL, DAMPING_FIRE = 0, 1, 2  # sbc_damping (settings.h)
-# the measures of one step (SBC_HOST_EK ... SBC_HOST_PARTICLE_COUNT, host.h)
-EK, NET_MAX, EP, CONTACT_SUM, CONTACT_COUNT, OVERLAP_SUM, ROTATION_SUM, PARTICLE_COUNT, MEASURES = range(9)
-RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED = range(5)   # sbc_event
 RATTLER_SCAN = 1000                     # steps between full scans for contact-free bodies
 CONFINE_EVERY = 10000                   # SBC_CONFINE_EVERY: steps between confinement checks
 PROGRESS_EVERY = 10.0                   # s of wall time between progress lines of a long increment
 FRAME_MASK = 2                          # groupMask bit of the frame bodies load_packing flags
-
-
-class ServoBCError(RuntimeError):
-    """A servo_bc message: bad words, a frame that cannot be built, a diverging controller."""
-
-
-def _library():
-    here = os.path.dirname(os.path.abspath(__file__))
-    candidates = [os.environ.get('SERVO_BC_LIB', ''), os.path.join(here, 'libservo_bc.so'),
-                  os.path.join(here, '..', 'build', 'libservo_bc.so')]
-    for path in candidates:
-        if path and os.path.exists(path):
-            lib = ctypes.CDLL(os.path.abspath(path))
-            break
-    else:
-        raise ServoBCError('servo_bc: libservo_bc.so not found (run `make yade`, or set SERVO_BC_LIB)')
-    D, I, L, P = ctypes.c_double, ctypes.c_int, ctypes.c_long, ctypes.c_void_p
-    pd, pi = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_int)
-    sig = {
-        'sbc_host_create': (P, [ctypes.c_char_p, I, pd, pd, pd, I, pi, D, D, ctypes.c_char_p, ctypes.c_size_t]),
-        'sbc_host_free': (None, [P]),
-        'sbc_host_frame_size': (I, [P]),
-        'sbc_host_frame_particles': (pi, [P]),
-        'sbc_host_needs': (ctypes.c_uint, [P, pd]),
-        'sbc_host_step': (I, [P, pd, pd, pd, pd, pd]),
-        'sbc_host_message': (ctypes.c_char_p, [P]),
-        'sbc_host_progress': (None, [P, pd]),
-        'sbc_host_command_x': (pd, [P]),
-        'sbc_host_command_theta': (pd, [P]),
-        'sbc_host_command_free': (ctypes.POINTER(ctypes.c_ubyte), [P]),
-        'sbc_host_result': (None, [P, pd]),
-        'sbc_host_damping': (I, [P, pd, pd]),
-        'sbc_host_warning': (I, [P, ctypes.c_char_p, ctypes.c_size_t]),
-        'sbc_version': (ctypes.c_char_p, []),
-        'sbc_column_count': (I, []),
-        'sbc_column_name': (ctypes.c_char_p, [I]),
-        'sbc_host_fire_mix': (None, [P, pd, pd]),
-        'sbc_host_confined': (I, [P, pd, I, ctypes.POINTER(L), pd, pd]),
-        'sbc_bpm_host_create': (P, [ctypes.c_char_p, D, D, D, pd, I, pd, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
-        'sbc_bpm_host_bond_count': (I, [P]),
-        'sbc_bpm_host_intact': (I, [P]),
-        'sbc_bpm_host_dissipated': (D, [P]),
-        'sbc_bpm_host_loads': (I, [P, pd, pd, pd, D, pd]),
-        'sbc_bpm_host_strain_energy': (D, [P]),
-        'sbc_bpm_critical_dt': (D, [P]),
-        'sbc_bpm_destroy': (None, [P]),
-        'sbc_cohesive_host_create': (P, [ctypes.c_char_p, I, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
-        'sbc_cohesive_host_free': (None, [P]),
-        'sbc_cohesive_host_kn': (D, [P]),
-        'sbc_cohesive_host_bond_count': (I, [P]),
-        'sbc_cohesive_host_bonds_initial': (I, [P]),
-        'sbc_cohesive_host_loads': (I, [P, pd, pd, pd, D, pd]),
-        'sbc_cohesive_host_message': (ctypes.c_char_p, [P]),
-        'sbc_cohesive_host_sums': (None, [P, pd]),
-        'sbc_host_sealed': (I, [P]),
-        'sbc_host_seal': (I, [P, pd, pd, pd]),
-    }
-    for name, (res, args) in sig.items():
-        fn = getattr(lib, name)
-        fn.restype, fn.argtypes = res, args
-    return lib
-
-
-_lib = None
-
-
-def _core():
-    global _lib
-    if _lib is None:
-        _lib = _library()
-    return _lib
-
-
-def _columns():
-    """The result columns in the results file's order, from the library (columns.h)."""
-    lib = _core()
-    return tuple(lib.sbc_column_name(k).decode() for k in range(lib.sbc_column_count()))
-
-
-def _doubles(values):
-    return (ctypes.c_double * len(values))(*values)
 
 
 def load_packing(path, density, kn, ks, mu, young=None):
@@ -280,7 +197,7 @@ _bonded_engines = {}    # PyRunner label -> its Bonds or Cohesive
 
 def version():
     """The version of the servo_bc core this module drives (CHANGELOG.md)."""
-    return _core().sbc_version().decode()
+    return _version()
 
 
 def __getattr__(name):

@@ -1,0 +1,58 @@
+"""The core's C API from plain Python (yade_adapter/servo_bc_core.py), no YADE:
+the module loads without it, its version and result columns are the runner's,
+and a host handle is made on a 5 x 5 lattice (16 frame discs) or refused with
+the core's message. Prints "N passed, N failed".
+Usage: python3 tests/python_core.py LIBSERVO_BC.so SERVO_BC"""
+import ctypes
+import os
+import subprocess
+import sys
+import tempfile
+
+lib_path, runner = sys.argv[1], sys.argv[2]
+os.environ['SERVO_BC_LIB'] = os.path.abspath(lib_path)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'yade_adapter'))
+import servo_bc_core as core  # noqa: E402
+
+passed = failed = 0
+
+
+def check(ok, label):
+    global passed, failed
+    if ok:
+        passed += 1
+        print('python core: %s' % label)
+    else:
+        failed += 1
+        print('FAIL python core: %s' % label)
+
+
+check('yade' not in sys.modules, 'servo_bc_core imports without YADE')
+runner_version = subprocess.run([runner, '--version'], capture_output=True, text=True).stdout.split()
+check(runner_version == ['servo-bc', core.version()], 'version %s, the runner\'s' % core.version())
+with tempfile.TemporaryDirectory() as tmp:
+    csv = os.path.join(tmp, 'run.csv')
+    with open(os.path.join(tmp, 'run.sbc'), 'w') as f:
+        f.write('dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\ncontact frictional kn 1e4 ks 0 mu 0.4\n'
+                'density 2e3\ntimestep 1e-5\nservo_bc D F 0.999 0 0 0.999 increments 1 file %s\nrun\n' % csv)
+    subprocess.run([runner, os.path.join(tmp, 'run.sbc')], capture_output=True, check=True)
+    with open(csv) as f:
+        header = f.readline().strip()
+check(','.join(core.columns()) == header and len(core.columns()) == 23,
+      '%d columns, the results file\'s header' % len(core.columns()))
+
+lib = core.library()
+xy = [c * 2e-3 for j in range(5) for i in range(5) for c in (i, j)]
+n = 25
+r = core.doubles([1.02e-3] * n)
+m = core.doubles([2e3 * 3.141592653589793 * 1.02e-3 ** 2] * n)
+msg = ctypes.create_string_buffer(512)
+h = lib.sbc_host_create(b'Q F 1 0 0 1', n, core.doubles(xy), r, m, 0, None, 1e-5, 1e4, msg, 512)
+check(not h and b"'Q'" in msg.value, 'bad words refused with the core\'s message: %s' % msg.value.decode())
+h = lib.sbc_host_create(b'P F 1 0.01 0 1 increments 2', n, core.doubles(xy), r, m, 0, None, 1e-5, 1e4, msg, 512)
+check(bool(h) and lib.sbc_host_frame_size(h) == 16, 'a host handle on the 5 x 5 lattice: a frame of %d discs'
+      % (lib.sbc_host_frame_size(h) if h else -1))
+if h:
+    lib.sbc_host_free(h)
+print('%d passed, %d failed' % (passed, failed))
+sys.exit(failed > 0)
