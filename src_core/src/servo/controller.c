@@ -47,34 +47,6 @@ static void start_classic(sbc_controller *c)
     }
 }
 
-/* Inexact relaxations between servo corrections (force criterion only): a
- * relaxation after a correction ends at INEXACT times the frame residual it
- * corrected (relative, servo.h), not below the tolerance; the first one of
- * an increment of (P), (T) or mixed, which is always corrected, at
- * INEXACT_FIRST. A converged frame residual after an inexact relaxation is
- * not accepted: the packing is first relaxed to the tolerance in place and
- * checked again (sbc_controller_step). The frame forces of an inexact
- * relaxation are off by about U times the contact forces, 3 % of the
- * residual being corrected, which leaves the correction's direction intact
- * (the inexact Newton method). Measured on the 232-disc irregular packing,
- * F12 = 0.005 in one increment at 0.1 of the critical step, `accuracy
- * balanced`: 0.1 stalled near the tolerance (3000 iterations), 0.03 took
- * 446 thousand steps, 0.01 566 thousand. */
-#define INEXACT 0.03
-#define INEXACT_FIRST 1e-3
-/* With FIRE, a frame tolerance of 1e-5 or looser (relative) converges with
- * relaxations at 30 % of the residual: DEM steps at `balanced` for 0.03 /
- * 0.1 / 0.3: regular (P) 414 / 323 / 259 thousand, irregular (P) 2.54 /
- * 2.01 / 1.67 million, regular (T) 1.13 / 0.78 / 0.59 million, the mixed
- * layer 161 / 120 / 96 thousand, each path as close to `tight`. At `tight`
- * (1e-7) 0.3 and 0.1 stalled on the irregular packing (frame residuals 8e-7
- * and 1.3e-7 after 10 000 iterations), and so did 0.3 switched to 0.03
- * within 100 times the tolerance. With eq. 10, 0.1 had stalled on the
- * irregular packing at `balanced` (F12 = 0.005 in one increment): eq. 10
- * keeps 0.03. */
-#define INEXACT_LOOSE 0.3
-#define LOOSE_FRAME_TOL 1e-5
-
 /* The frame travels from the commands saved in c->motion to those in
  * x_cmd, theta_cmd (motion.h); the relaxation starts once it is there, and
  * ends at the tolerance tol. */

@@ -11,6 +11,7 @@
 #include "sbc/relax.h"
 #include "motion.h"
 #include "servo.h"
+#include "tuning.h"
 
 struct sbc_controller {
     sbc_frame ref;       /* the controller's copy of the frame: the reference of
@@ -54,21 +55,6 @@ struct sbc_controller {
     double work_path;    /* the largest work scale |P||F| of the path's converged increments, N/m */
     double sigma_path;   /* the largest |sigma| (largest component) of those increments, N/m */
 };
-
-/* Stagnation on round-off: the servo iterations of an increment, after the
- * first check, in windows of this many; when the smallest residual ratio of
- * a window is not 1 % below that of the window before while the force
- * residual is within STAGNATION_ROUNDOFF of the frame's own forces, the
- * tolerances lie below what double precision resolves, and no iteration
- * reaches them. Above round-off a plateau is left to run (to max_iterations):
- * relaxation noise takes a floor near the tolerances below them sooner or
- * later, and a frictional packing under load holds the residual for
- * hundreds of iterations before it rearranges and converges (the mixed layer
- * of Sect. 5.3, increment 36: 1400 iterations at 186 times the
- * tolerances; the whole path of eq. 38 under (T): 27 of 300 increments take
- * 1000 to 2822 iterations, and converge). */
-#define STAGNATION_WINDOW 200
-#define STAGNATION_ROUNDOFF 1e-9
 
 /* controller_mixed.c: the mixed condition's bookkeeping (Table 5) */
 int sbc_ctl_row_measured(const sbc_controller *c, int i);

@@ -52,23 +52,6 @@ void sbc_ctl_restore_eq15(sbc_controller *c)
     }
 }
 
-/* update secant: the largest correction of one frame particle, in radii.
- * Larger corrections cost fewer iterations but move the frame back and forth
- * through frictional contacts, which then slip along another path: on the
- * regular packing under (P) at dt = 1e-4 s, 0.05 R gave a path error of 1.2 %,
- * 0.01 R 0.65 %, 0.002 R 0.37 % and 0.0005 R 0.30 % against the reference
- * (whose own spread is about 0.4 %), at 15, 16, 29 and 103 thousand steps
- * (docs/speed-accuracy.md). */
-#define SECANT_MAX_STEP 0.002
-
-/* update secant with kn known: bounds of the factor on the scale-free
- * corrections (servo.c). Without a lower bound the factor halves on every
- * iteration whose residual did not fall, which frictional noise makes
- * common: on the 232-disc irregular packing it reached 1e-34 and the servo
- * stalled at a relative residual of 4e-4 for thousands of iterations. */
-#define SECANT_LAMBDA_MIN 1e-2
-#define SECANT_LAMBDA_MAX 1e2
-
 /* update secant: scales the fixed-gain correction d_k (du, R dtheta of every
  * frame particle, m) by lambda_k. Within an increment, from the previous
  * correction d_(k-1) and its factor, the Barzilai-Borwein step of the
