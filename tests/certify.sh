@@ -12,6 +12,7 @@
 # Usage: certify.sh BUILD
 set -u
 B=$(cd "${1:-build}" && pwd)
+. "$(dirname "$0")/csv_columns.sh"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 pass=0 fail=0
@@ -25,8 +26,9 @@ for n in 5 6; do
         "$n" "$n" "$bc" "$F" "$preset" "$tmp/$name" > "$tmp/$name.sbc"
       timeout 300 "$B/servo-bc" "$tmp/$name.sbc" > "$tmp/$name.log" 2>&1
       rc=$?
-      res=$(awk -F, -v bal=$bal -v rel=$rel -v acc=$acc 'NR > 1 { n++; h = $23 < 0 ? -$23 : $23
-              if ($21 > bal || $22 > rel || h > acc) bad++; if ($21 > u) u = $21; if ($22 > f) f = $22; if (h > H) H = h }
+      res=$(awk -F, -v bal=$bal -v rel=$rel -v acc=$acc "$COLUMNS_AWK"'NR > 1 { n++
+              ub = $col("unbalanced"); fr = $col("frame_residual"); h = $col("hill_mandel"); h = h < 0 ? -h : h
+              if (ub > bal || fr > rel || h > acc) bad++; if (ub > u) u = ub; if (fr > f) f = fr; if (h > H) H = h }
             END { printf "%d %d %.2g %.2g %.2g", n, bad, u, f, H }' "$tmp/$name.csv" 2>/dev/null)
       set -- ${res:-0 1 - - -}
       rows=$1 bad=$2

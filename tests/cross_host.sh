@@ -13,6 +13,7 @@
 # Usage: cross_host.sh   (binaries from build/, or B=DIR)
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
+. "$here/csv_columns.sh"
 top=$(cd "$here/.." && pwd)
 tmp=${KEEP:-$(mktemp -d)}
 mkdir -p "$tmp"
@@ -82,8 +83,8 @@ for bc in D P T; do
   # the rank count (LAMMPS' default newton on: ghost forces summed back in
   # another order) within the default preset's stated accuracy, 1e-4 = 0.01 %
   {
-    m=$(paste -d, "$dir/lammps.csv" "$dir/lammps_np2.csv" 2>/dev/null | awk -F, 'NR > 1 { w = NF / 2; n++
-        for (c = 10; c <= 13; c++) { d = $c - $(c + w); if (d < 0) d = -d; if (d > m) m = d; a = $c < 0 ? -$c : $c; if (a > S) S = a } }
+    m=$(paste -d, "$dir/lammps.csv" "$dir/lammps_np2.csv" 2>/dev/null | awk -F, "$COLUMNS_AWK"'NR > 1 { w = NF / 2; n++
+        for (c = col("sigma11"); c <= col("sigma22"); c++) { d = $c - $(c + w); if (d < 0) d = -d; if (d > m) m = d; a = $c < 0 ? -$c : $c; if (a > S) S = a } }
       END { if (n == 31 && S > 0) printf "%.3g", 100 * m / S; else print 100 }')
     if awk -v m="$m" 'BEGIN { exit !(m <= 0.01) }'; then
       pass=$((pass + 1)); echo "cross-host ($bc): LAMMPS 2 ranks against 1 rank (newton on): $m % of the stress scale"
@@ -106,7 +107,7 @@ done
 dir=$tmp/seal_chain_D
 (cd "$top" && RANKS="1 2" bash scripts/compare.sh inputs/compare/seal_chain_D.sbc "$dir" | grep -v "^compare: report")
 for e in embedded lammps liggghts yade lammps_np2 liggghts_np2; do
-  got=$(awk -F, 'NR > 1 { n++; s = $13 } END { if (n == 3) printf "%.12g", s; else print "none" }' "$dir/$e.csv" 2>/dev/null)
+  got=$(awk -F, "$COLUMNS_AWK"'NR > 1 { n++; s = $col("sigma22") } END { if (n == 3) printf "%.12g", s; else print "none" }' "$dir/$e.csv" 2>/dev/null)
   if awk -v s="${got:-none}" 'BEGIN { d = s + 120; if (d < 0) d = -d; exit !(s != "none" && d <= 1.2e-4) }'; then
     pass=$((pass + 1)); echo "seal ($e): the chain on the wall, sigma22 = $got N/m (closed form -120)"
   else

@@ -4,6 +4,7 @@
 # (its closed-form lattice deck: 5 x 5 discs, spacing 2 mm, R = 1.02 mm, kt = 0,
 # `fix servo all servo_bc D F 1.002 0 0 0.997 increments 2 relax 1e-22 20 file
 # ${csv}`, interior integrated by `fix integrate servo_interior ...`) and TMP.
+. "$(dirname "${BASH_SOURCE[0]}")/csv_columns.sh"
 pass=0 fail=0
 ok() { pass=$((pass + 1)); echo "$HOST $1"; }
 no() { fail=$((fail + 1)); echo "FAIL $HOST $1"; }
@@ -27,13 +28,13 @@ deck_with() { sed "$1" "$DECK" > "$2"; }
 # P22 likewise, P12 = P21 = 0, relative to P11, within TOL; ROWS rows
 lattice_form() {
   local out
-  out=$(awk -F, 'NR > 1 {
-      p11 = -5 * 1e4 * (2.04e-3 - 2e-3 * $2) / (4 * 2e-3);
-      p22 = -5 * 1e4 * (2.04e-3 - 2e-3 * $5) / (4 * 2e-3);
-      e = ($6 - p11) / p11; if (e < 0) e = -e; if (e > m) m = e;
-      e = ($9 - p22) / p22; if (e < 0) e = -e; if (e > m) m = e;
-      e = ($7 < 0 ? -$7 : $7) / -p11; if (e > m) m = e;
-      e = ($8 < 0 ? -$8 : $8) / -p11; if (e > m) m = e;
+  out=$(awk -F, "$COLUMNS_AWK"'NR > 1 {
+      p11 = -5 * 1e4 * (2.04e-3 - 2e-3 * $col("F11")) / (4 * 2e-3);
+      p22 = -5 * 1e4 * (2.04e-3 - 2e-3 * $col("F22")) / (4 * 2e-3);
+      e = ($col("P11") - p11) / p11; if (e < 0) e = -e; if (e > m) m = e;
+      e = ($col("P22") - p22) / p22; if (e < 0) e = -e; if (e > m) m = e;
+      e = $col("P12"); e = (e < 0 ? -e : e) / -p11; if (e > m) m = e;
+      e = $col("P21"); e = (e < 0 ? -e : e) / -p11; if (e > m) m = e;
       n++ }
     END { printf "%d %.3g", n, m }' "$2" 2>/dev/null)
   set -- "$1" "$3" "$4" $out
@@ -77,12 +78,13 @@ frictional_checks() {
 same_csvs() {
   local label=$1 want=$2 res
   shift 2
-  res=$(paste -d, "$@" | awk -F, -v files=$# '
-    NR > 1 { n++; w = NF / files; for (c = 2; c <= 14; c++) for (k = 0; k < files; k++) v[n, c, k] = $(c + w * k)
-             for (c = 2; c <= 14; c++) { g = (c <= 5 ? 1 : c <= 9 ? 2 : c <= 13 ? 3 : 4); a = $c < 0 ? -$c : $c; if (a > S[g]) S[g] = a } }
-    END { for (r = 1; r <= n; r++) for (c = 2; c <= 14; c++) {
-            g = (c <= 5 ? 1 : c <= 9 ? 2 : c <= 13 ? 3 : 4)
-            for (k = 1; k < files; k++) { d = (v[r, c, k] - v[r, c, 0]) / S[g]; if (d < 0) d = -d; if (d > m) m = d } }
+  res=$(paste -d, "$@" | awk -F, -v files=$# "$COLUMNS_AWK"'
+    NR == 1 { nc = split("F11 F12 F21 F22 P11 P12 P21 P22 sigma11 sigma12 sigma21 sigma22 overlap_mean", name, " ")
+              for (j = 1; j <= nc; j++) { c[j] = col(name[j]); g[j] = int((j - 1) / 4) + 1 } }
+    NR > 1 { n++; w = NF / files; for (j = 1; j <= nc; j++) for (k = 0; k < files; k++) v[n, j, k] = $(c[j] + w * k)
+             for (j = 1; j <= nc; j++) { a = $c[j] < 0 ? -$c[j] : $c[j]; if (a > S[g[j]]) S[g[j]] = a } }
+    END { for (r = 1; r <= n; r++) for (j = 1; j <= nc; j++)
+            for (k = 1; k < files; k++) { d = (v[r, j, k] - v[r, j, 0]) / S[g[j]]; if (d < 0) d = -d; if (d > m) m = d }
           printf "%d %.3g", n, m }' 2>/dev/null)
   set -- $res
   if [ "${1:-0}" = "$want" ] && awk -v m="$2" -v tol="${TOLERANCE:-1e-8}" 'BEGIN { exit !(m <= tol) }'; then

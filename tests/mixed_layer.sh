@@ -21,6 +21,7 @@ usage="usage: mixed_layer.sh SERVO_BC LMP_SERVO LIGGGHTS_SERVO"
 abs() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
 emb=$(abs "${1:?$usage}") lmp=$(abs "${2:?$usage}") lig=$(abs "${3:?$usage}")
 here=$(cd "$(dirname "$0")" && pwd)
+. "$here/csv_columns.sh"
 tmp=$(mktemp -d)
 pass=0 fail=0
 SERVO="F 1 0.004 0 1 increments 2 stress P22 -1.05e6 3"
@@ -86,9 +87,9 @@ for host in lammps liggghts; do
   csv=$tmp/lmp.csv
   [ $host = liggghts ] && csv=$tmp/liggghts.csv
   # stage 1 (increments 1-3) and the shear increments (4-5), each against its bound
-  res=$(paste -d, "$tmp/emb.csv" "$csv" | awk -F, 'NR == 1 { w = NF / 2 } NR > 1 {
-      for (c = 10; c <= 13; c++) { a = $c < 0 ? -$c : $c; if (a > s) s = a; d = $c - $(c + w); if (d < 0) d = -d
-        if ($1 <= 3 && d > m1) m1 = d; if ($1 > 3 && d > m2) m2 = d }
+  res=$(paste -d, "$tmp/emb.csv" "$csv" | awk -F, "$COLUMNS_AWK"'NR == 1 { w = NF / 2; first = col("sigma11") } NR > 1 {
+      for (c = first; c < first + 4; c++) { a = $c < 0 ? -$c : $c; if (a > s) s = a; d = $c - $(c + w); if (d < 0) d = -d
+        if ($col("increment") <= 3 && d > m1) m1 = d; if ($col("increment") > 3 && d > m2) m2 = d }
       n++ }
     END { printf "%d %.4g %.4g", n, (s > 0 ? 100 * m1 / s : 100), (s > 0 ? 100 * m2 / s : 100) }')
   set -- $res

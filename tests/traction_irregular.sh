@@ -13,6 +13,7 @@
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
 B=$(cd "${1:-$top/build}" && pwd)
+. "$top/tests/csv_columns.sh"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cat > "$tmp/T.sbc" <<EOF
@@ -30,21 +31,23 @@ if (cd "$tmp" && "$B/servo-bc" T.sbc > T.log 2>&1); then
 else
   fail=$((fail + 1)); echo "FAIL (T) irregular: the run stopped: $(tail -n 1 "$tmp/T.log")"
 fi
-# increment,F11,F12,F21,F22,P..,sigma11 (10),sigma12,sigma21,sigma22 (13),..,unbalanced (21),frame_residual,hill_mandel (23)
 while read -r verdict line; do
   if [ "$verdict" = ok ]; then pass=$((pass + 1)); echo "(T) irregular: $line"; else fail=$((fail + 1)); echo "FAIL (T) irregular: $line"; fi
-done < <(awk -F, 'function abs(a) { return a < 0 ? -a : a }
-  NR > 1 { n++; k = $1
+done < <(awk -F, "$COLUMNS_AWK"'function abs(a) { return a < 0 ? -a : a }
+  NR > 1 { n++; k = $col("increment")
+    F11 = $col("F11"); F12 = $col("F12"); F21 = $col("F21"); F22 = $col("F22"); s11 = $col("sigma11")
+    s12 = $col("sigma12"); s21 = $col("sigma21"); s22 = $col("sigma22"); ub = $col("unbalanced")
+    fr = $col("frame_residual"); hm = $col("hill_mandel")
     bad = ""
-    if (abs($2 - 1) > 1e-12 || abs($5 - 1) > 1e-12 || abs($3 - 0.005 * k) > 1e-12 || abs($4) > 1e-12) bad = bad " F"
-    if ($21 > 1e-5) bad = bad " unbalanced " $21
-    if ($22 > 1e-4) bad = bad " frame_residual " $22
-    if (abs($23) > 1e-4) bad = bad " hill_mandel " $23
-    s = abs($10) > abs($13) ? abs($10) : abs($13)
-    if (!($10 < 0 && $13 < 0)) bad = bad " sigma11, sigma22 not compressive"
-    if (k > 0 && !($11 > 0)) bad = bad " sigma12 " $11 " not positive"
-    if (abs($11 - $12) > 1e-3 * s) bad = bad " sigma12 - sigma21 = " ($11 - $12)
-    if (bad == "") printf "ok increment %d: F12 = %.3f, sigma11 %.4g, sigma12 %.4g N/m, unbalanced %.2g, frame residual %.2g, HM %.2g\n", k, $3, $10, $11, $21, $22, $23
+    if (abs(F11 - 1) > 1e-12 || abs(F22 - 1) > 1e-12 || abs(F12 - 0.005 * k) > 1e-12 || abs(F21) > 1e-12) bad = bad " F"
+    if (ub > 1e-5) bad = bad " unbalanced " ub
+    if (fr > 1e-4) bad = bad " frame_residual " fr
+    if (abs(hm) > 1e-4) bad = bad " hill_mandel " hm
+    s = abs(s11) > abs(s22) ? abs(s11) : abs(s22)
+    if (!(s11 < 0 && s22 < 0)) bad = bad " sigma11, sigma22 not compressive"
+    if (k > 0 && !(s12 > 0)) bad = bad " sigma12 " s12 " not positive"
+    if (abs(s12 - s21) > 1e-3 * s) bad = bad " sigma12 - sigma21 = " (s12 - s21)
+    if (bad == "") printf "ok increment %d: F12 = %.3f, sigma11 %.4g, sigma12 %.4g N/m, unbalanced %.2g, frame residual %.2g, HM %.2g\n", k, F12, s11, s12, ub, fr, hm
     else printf "bad increment %d:%s\n", k, bad }
   END { if (n != 5) printf "bad %d rows, expected 5 (increments 0-4)\n", n }' "$tmp/T.csv" 2>/dev/null || echo "bad no results file")
 echo "$pass passed, $fail failed"
