@@ -83,13 +83,14 @@ deps:
 $(B)/cxx_headers: tests/cxx_headers.cpp $(B)/libservo_bc.a $(wildcard src_core/include/sbc/*.h)
 	c++ -std=c++11 -Wall -Wextra -pedantic -Werror -Isrc_core/include -o $@ tests/cxx_headers.cpp $(B)/libservo_bc.a -lm
 
-check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B)/libservo_bc.so
+check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B)/libservo_bc.so $(B)/fuzz/restart_seed
 	$(B)/run_tests $(B)/servo-bc
 	$(B)/cxx_headers
 	bash tests/headers.sh
 	bash tests/tables.sh $(B)
 	python3 tests/python_core.py $(B)/libservo_bc.so $(B)/servo-bc
 	bash tests/layers.sh $(B)
+	bash tests/restart_layout.sh $(B)
 	bash tests/path_error.sh
 	bash tests/splice_tables.sh
 	bash tests/stability.sh $(B)

@@ -60,7 +60,7 @@ int main(int argc, char **argv)
         sbc_engine_set_frame(e, &frame);
         mass = malloc(sizeof(double) * (size_t)frame.n);
         sbc_engine_frame_masses(e, mass);
-        s.F[0] = s.F[3] = 0.999;
+        s.F[SBC_IJ(0, 0)] = s.F[SBC_IJ(1, 1)] = 0.999;
         s.increments = 1000000;
         ctl = sbc_controller_create(&frame, &s, mass, def.dt, def.law.kn, &err);
     }

@@ -6,7 +6,7 @@
 
 void fuzz_drive_controller(sbc_controller *c, int q, long particles)
 {
-    double *zero = calloc(2 * (size_t)q + 1, sizeof(double));
+    double *zero = calloc(3 * (size_t)q + 1, sizeof(double));
     int k, i;
     if (!zero)
         abort();
@@ -15,7 +15,7 @@ void fuzz_drive_controller(sbc_controller *c, int q, long particles)
         sbc_snapshot snap;
         sbc_error err;
         sbc_event ev;
-        for (i = 0; i < 2 * q; ++i)
+        for (i = 0; i < 3 * q; ++i)
             if (!isfinite(cmd.x[i])) {
                 fprintf(stderr, "fuzz: a non-finite command\n");
                 abort();

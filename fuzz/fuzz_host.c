@@ -13,8 +13,8 @@
 static void drive(sbc_host *h, int n)
 {
     const int q = sbc_host_frame_size(h);
-    double measures[SBC_HOST_MEASURES] = {0}, x[2 * MAX_PARTICLES], theta[MAX_PARTICLES] = {0},
-           force[2 * MAX_PARTICLES] = {0}, torque[MAX_PARTICLES] = {0};
+    double measures[SBC_HOST_MEASURES] = {0}, x[3 * MAX_PARTICLES], theta[MAX_PARTICLES] = {0},
+           force[3 * MAX_PARTICLES] = {0}, torque[MAX_PARTICLES] = {0};
     int k, i;
     measures[SBC_HOST_EP] = 1e-9;
     measures[SBC_HOST_CONTACT_SUM] = 1.0;
@@ -23,7 +23,7 @@ static void drive(sbc_host *h, int n)
     for (k = 0; k < 20; ++k) {
         const double *cx = sbc_host_command_x(h);
         int ev;
-        for (i = 0; i < 2 * q; ++i) {
+        for (i = 0; i < 3 * q; ++i) {
             if (!isfinite(cx[i]))
                 abort();
             x[i] = cx[i];

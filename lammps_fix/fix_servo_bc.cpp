@@ -184,8 +184,9 @@ void FixServoBC::detect_frame()
 
 void FixServoBC::make_buffers()
 {
-  buf.assign(6 * frame.n + 2, 0.0);
-  sum.assign(6 * frame.n + 2, 0.0);
+  // frame order: x [3Q], force [3Q] (3 slots whatever the dimension), torque [Q], theta [Q], sum |theta|, count
+  buf.assign(8 * frame.n + 2, 0.0);
+  sum.assign(8 * frame.n + 2, 0.0);
   slot.clear();
   for (int q = 0; q < frame.n; q++) slot[frame_tag[q]] = q;
 }
@@ -300,7 +301,7 @@ void FixServoBC::init()
     if (sbc_seal_init(&seal, &frame, 0.25 * *std::min_element(frame.R, frame.R + frame.n), &err) != SBC_OK)
       fail(err.message);
     seal_on = 1;
-    seal_reaction.assign(2 * frame.n, 0.0);
+    seal_reaction.assign(3 * frame.n, 0.0);
   }
   if (!ctl) {
     sbc_error err;
@@ -361,11 +362,11 @@ void FixServoBC::initial_integrate(int)
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & frame_bit)) continue;
     int q = slot[atom->tag[i]];
-    v[i][0] = (cmd.x[2 * q] - x[i][0]) / dt;
-    v[i][1] = (cmd.x[2 * q + 1] - x[i][1]) / dt;
+    v[i][0] = (cmd.x[3 * q] - x[i][0]) / dt;
+    v[i][1] = (cmd.x[3 * q + 1] - x[i][1]) / dt;
     v[i][2] = 0.0;
-    x[i][0] = cmd.x[2 * q];
-    x[i][1] = cmd.x[2 * q + 1];
+    x[i][0] = cmd.x[3 * q];
+    x[i][1] = cmd.x[3 * q + 1];
     if (cmd.free_rotation[q]) {    // (T): free rotation with the damping of eq. 10
       double m = torque[i][2], w = omega[i][2];
       if (settings.damping) m -= settings.beta * std::fabs(m) * ((w > 0.0) - (w < 0.0));
@@ -532,19 +533,19 @@ void FixServoBC::frame_pass()
     if (!(mask[i] & groupbit)) continue;
     if (mask[i] & frame_bit) {
       int q = slot[atom->tag[i]];
-      buf[2 * q] = x[i][0];
-      buf[2 * q + 1] = x[i][1];
-      buf[2 * Q + 2 * q] = f[i][0];
-      buf[2 * Q + 2 * q + 1] = f[i][1];
-      buf[4 * Q + q] = torque[i][2];
-      buf[5 * Q + q] = per_atom[i][1];
+      buf[3 * q] = x[i][0];
+      buf[3 * q + 1] = x[i][1];
+      buf[3 * Q + 3 * q] = f[i][0];
+      buf[3 * Q + 3 * q + 1] = f[i][1];
+      buf[6 * Q + q] = torque[i][2];
+      buf[7 * Q + q] = per_atom[i][1];
     }
     rot += std::fabs(per_atom[i][1]);
     npart += 1.0;
   }
-  for (int k = 0; k < 2 * Q && seal_on; k++) buf[2 * Q + k] += seal_reaction[k];
-  buf[6 * Q] = rot;
-  buf[6 * Q + 1] = npart;
+  for (int k = 0; k < 3 * Q && seal_on; k++) buf[3 * Q + k] += seal_reaction[k];
+  buf[8 * Q] = rot;
+  buf[8 * Q + 1] = npart;
 }
 
 /* confine.h on the owned interior atoms against the frame's present centres;
@@ -554,7 +555,7 @@ void FixServoBC::check_confined(int increment)
   const int Q = frame.n, nlocal = atom->nlocal, *mask = atom->mask;
   double **x = atom->x, **v = atom->v;
   frame_pass();
-  MPI_Allreduce(buf.data(), sum.data(), 2 * Q, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(buf.data(), sum.data(), 3 * Q, MPI_DOUBLE, MPI_SUM, world);
   long bad = LONG_MAX, first;
   char message[SBC_ERROR_LEN] = "";
   sbc_error err;
@@ -614,11 +615,11 @@ void FixServoBC::post_force(int)
     frame_pass();
     MPI_Allreduce(buf.data(), sum.data(), (int) buf.size(), MPI_DOUBLE, MPI_SUM, world);
     snap.x = &sum[0];
-    snap.force = &sum[2 * Q];
-    snap.torque = &sum[4 * Q];
-    snap.theta = &sum[5 * Q];
-    snap.rotation_sum = sum[6 * Q];
-    snap.particle_count = (long) sum[6 * Q + 1];
+    snap.force = &sum[3 * Q];
+    snap.torque = &sum[6 * Q];
+    snap.theta = &sum[7 * Q];
+    snap.rotation_sum = sum[8 * Q];
+    snap.particle_count = (long) sum[8 * Q + 1];
   }
 
   sbc_error err;
@@ -649,9 +650,11 @@ void FixServoBC::post_force(int)
 double FixServoBC::compute_vector(int n)
 {
   if (n == 0) return last.increment;
-  if (n <= 4) return last.F[n - 1];
-  if (n <= 8) return last.P[n - 5];
-  if (n <= 12) return last.sigma[n - 9];
+  if (n <= 12) {  // 1-12: F, P, sigma, each 11 12 21 22
+    const double *t = n <= 4 ? last.F : n <= 8 ? last.P : last.sigma;
+    const int k = (n - 1) % 4;
+    return t[SBC_IJ(k / 2, k % 2)];
+  }
   // 13-16: the servo's progress in the increment under way (thermo shows it live)
   int iteration;
   double r[3];

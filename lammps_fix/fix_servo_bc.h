@@ -92,7 +92,7 @@ class FixServoBC : public Fix {
   sbc_fire_state fire;               // damping fire: FIRE's state (fire_damping.h)
   sbc_seal seal;                     // keyword seal: walls on the frame's polygon (seal.h)
   int seal_on;                       // seal initialised
-  std::vector<double> seal_reaction; // [2Q] the walls' reactions on the frame from this rank's atoms, N
+  std::vector<double> seal_reaction; // [3Q] the walls' reactions on the frame from this rank's atoms, N
   double seal_energy;                // the walls' energy from this rank's atoms, J
   int slow_step_noted = 0;           // the time step's note (time_step.h) given, once per fix
 

@@ -47,4 +47,7 @@ int file_contains(const char *path, const char *needle);
         }                                                                                    \
     } while (0)
 
+/* a 2D tensor [a b; c d] in the core's 3 x 3 slots (sbc/tensor.h) */
+#define TENSOR2(a, b, c, d) {(a), (b), 0.0, (c), (d), 0.0, 0.0, 0.0, 0.0}
+
 #endif

@@ -28,7 +28,13 @@ static void move(rig *g)
 {
     sbc_commands c;
     sbc_error err;
-    c.x = g->x;
+    double x3[9] = {0.0}; /* the commands' 3 slots per particle from rig.x [2n] */
+    int k;
+    for (k = 0; k < 3; ++k) {
+        x3[3 * k] = g->x[2 * k];
+        x3[3 * k + 1] = g->x[2 * k + 1];
+    }
+    c.x = x3;
     c.theta = g->theta;
     c.free_rotation = g->free_rotation;
     sbc_engine_move_frame(g->e, &c);
@@ -64,6 +70,7 @@ void test_bonds(void)
     CHECK(g.e != NULL);
     if (!g.e)
         return;
+    g.frame.dim = 2;
     g.frame.n = 3;
     g.particle[0] = 0, g.particle[1] = 1, g.particle[2] = 2;
     g.frame.particle = g.particle;
@@ -174,6 +181,7 @@ void test_rattler_energy(void)
     CHECK(e != NULL);
     if (!e)
         return;
+    frame.dim = 2;
     frame.n = 1;
     frame.particle = particle;
     sbc_engine_set_frame(e, &frame);

@@ -15,7 +15,7 @@ static double signed_area(const sbc_frame *f)
     double a = 0.0;
     int q;
     for (q = 0; q < f->n; ++q) {
-        const double *p = &f->X[2 * q], *r = &f->X[2 * ((q + 1) % f->n)];
+        const double *p = &f->X[3 * q], *r = &f->X[3 * ((q + 1) % f->n)];
         a += 0.5 * (p[0] * r[1] - r[0] * p[1]);
     }
     return a;
@@ -38,7 +38,7 @@ static void lattice_frame(void)
     CHECK(f.particle[f.corner[SBC_CORNER_TR]] == 24);
     CHECK(f.particle[f.corner[SBC_CORNER_TL]] == 20);
     for (q = 0; q < f.n; ++q) {
-        const double *A = &f.A[2 * q], *X = &f.X[2 * q];
+        const double *A = &f.A[3 * q], *X = &f.X[3 * q];
         int qm = (q + f.n - 1) % f.n, qp = (q + 1) % f.n;
         counts[f.side[q]]++;
         sum[0] += A[0];
@@ -46,19 +46,19 @@ static void lattice_frame(void)
         /* outward: A points away from the centre of the square */
         CHECK(A[0] * (X[0] - cx) + A[1] * (X[1] - cy) > 0.0);
         /* equal radii: A_q = (X_{q+1} - X_{q-1}) x e3 / 2 */
-        CHECK_ABS(A[0], 0.5 * (f.X[2 * qp + 1] - f.X[2 * qm + 1]), 1e-18);
-        CHECK_ABS(A[1], -0.5 * (f.X[2 * qp] - f.X[2 * qm]), 1e-18);
+        CHECK_ABS(A[0], 0.5 * (f.X[3 * qp + 1] - f.X[3 * qm + 1]), 1e-18);
+        CHECK_ABS(A[1], -0.5 * (f.X[3 * qp] - f.X[3 * qm]), 1e-18);
         /* periodic partners at exactly +/- L */
         if (f.side[q] == SBC_SIDE_BOTTOM) {
             int t = f.partner[q];
             CHECK(f.side[t] == SBC_SIDE_TOP && f.partner[t] == q);
-            CHECK_ABS(f.X[2 * t] - X[0], 0.0, 1e-18);
-            CHECK_ABS(f.X[2 * t + 1] - X[1], 8e-3, 1e-15);
+            CHECK_ABS(f.X[3 * t] - X[0], 0.0, 1e-18);
+            CHECK_ABS(f.X[3 * t + 1] - X[1], 8e-3, 1e-15);
         }
         if (f.side[q] == SBC_SIDE_RIGHT) {
             int t = f.partner[q];
             CHECK(f.side[t] == SBC_SIDE_LEFT && f.partner[t] == q);
-            CHECK_ABS(f.X[2 * t + 1] - X[1], 0.0, 1e-18);
+            CHECK_ABS(f.X[3 * t + 1] - X[1], 0.0, 1e-18);
         }
         if (f.side[q] == SBC_SIDE_CORNER)
             CHECK(f.partner[q] == -1);
@@ -88,7 +88,7 @@ static void polydisperse_frame(void)
     CHECK(sbc_frame_detect(&f, p.n, p.x, p.r, 0.2, &err) == SBC_OK);
     CHECK(f.n == 4 * (N - 1));
     for (q = 0; q < f.n; ++q) {
-        const double *A = &f.A[2 * q], *X = &f.X[2 * q];
+        const double *A = &f.A[3 * q], *X = &f.X[3 * q];
         sum[0] += A[0];
         sum[1] += A[1];
         CHECK(A[0] * (X[0] - 2.5) + A[1] * (X[1] - 2.5) > 0.0);
@@ -97,7 +97,7 @@ static void polydisperse_frame(void)
     CHECK_ABS(sum[1], 0.0, 1e-14);
     /* on the straight bottom edge, |A_q| = weighted share of both chords */
     q = f.corner[SBC_CORNER_BL] + 1;
-    CHECK_REL(-f.A[2 * q + 1],
+    CHECK_REL(-f.A[3 * q + 1],
               f.R[q] / (f.R[q] + f.R[q - 1]) * 1.0 + f.R[q] / (f.R[q] + f.R[q + 1]) * 1.0, 1e-14);
     sbc_frame_free(&f);
     sbc_packing_free(&p);
@@ -135,7 +135,7 @@ static void confinement(void)
     sbc_packing p;
     sbc_frame f;
     sbc_error err;
-    double fx[2 * 16], still[2] = {0.0, 0.0}, moving[2] = {0.0, -3.0}, nan_x[2];
+    double fx[3 * 16], still[2] = {0.0, 0.0}, moving[2] = {0.0, -3.0}, nan_x[2];
     int q;
     CHECK(sbc_packing_lattice_square(&p, 5, 5, 2e-3, 1.02e-3, &err) == SBC_OK);
     CHECK(sbc_frame_detect(&f, p.n, p.x, p.r, 0.0, &err) == SBC_OK && f.n == 16);
@@ -151,7 +151,7 @@ static void confinement(void)
               strstr(err.message, "interior particle 12 was thrown 0.02 m beyond the frame of width 0.008 m"));
         CHECK(sbc_confine_check(&f, fx, 3, 12, far, still, &err) == SBC_ERR_GEOMETRY); /* at rest: escaped */
         for (q = 0; q < f.n; ++q) /* the frame sheared by 1 mm at the top: (0.4 mm, 7.6 mm) is now left of its left edge */
-            fx[2 * q] += 1e-3 * f.X[2 * q + 1] / 8e-3;
+            fx[3 * q] += 1e-3 * f.X[3 * q + 1] / 8e-3;
         {
             const double corner[2] = {0.4e-3, 7.6e-3};
             CHECK(sbc_confine_check(&f, f.X, 0, 1, corner, still, &err) == SBC_OK);

@@ -49,9 +49,9 @@ static void test_generated_frame(const sbc_packing *a, double L)
         int q = f.partner[k];
         ++sides[f.side[k]];
         if (f.side[k] == SBC_SIDE_BOTTOM)
-            exact &= f.X[2 * q] == f.X[2 * k] && f.X[2 * q + 1] == f.X[2 * k + 1] + L;
+            exact &= f.X[3 * q] == f.X[3 * k] && f.X[3 * q + 1] == f.X[3 * k + 1] + L;
         if (f.side[k] == SBC_SIDE_LEFT)
-            exact &= f.X[2 * q + 1] == f.X[2 * k + 1] && f.X[2 * q] == f.X[2 * k] + L;
+            exact &= f.X[3 * q + 1] == f.X[3 * k + 1] && f.X[3 * q] == f.X[3 * k] + L;
     }
     CHECK(exact);
     CHECK(sides[SBC_SIDE_CORNER] == 4 && sides[SBC_SIDE_BOTTOM] == sides[SBC_SIDE_TOP] &&
@@ -150,7 +150,7 @@ static void test_generated_frame(const sbc_packing *a, double L)
         CHECK(sbc_frame_from_list(&g, f.n, list, a->x, a->r, &err) == SBC_OK);
         CHECK(g.n == f.n && g.V == f.V);
         for (q = 0; q < f.n && g.n == f.n; ++q)
-            same = same && g.particle[q] == f.particle[q] && g.partner[q] == f.partner[q] && g.A[2 * q] == f.A[2 * q];
+            same = same && g.particle[q] == f.particle[q] && g.partner[q] == f.partner[q] && g.A[3 * q] == f.A[3 * q];
         CHECK(same);
         sbc_frame_free(&g);
         free(list);

@@ -30,26 +30,26 @@
 static void residuals(const sbc_frame *f, const double *a, const double *m, const double *mass, double *r_top,
                       double *r_pair, double *r_moment)
 {
-    double P[4], st = 0.0, sp = 0.0, sm = 0.0, num = 0.0, den = 0.0, p22t;
+    double P[9], st = 0.0, sp = 0.0, sm = 0.0, num = 0.0, den = 0.0, p22t;
     int q;
     sbc_homogenize_P(f, a, P);
     for (q = 0; q < f->n; ++q)
         if (f->side[q] == SBC_SIDE_TOP || q == f->corner[SBC_CORNER_TR] || q == f->corner[SBC_CORNER_TL]) {
-            num += (a[2 * q + 1] - P[2] * f->A[2 * q]) * f->A[2 * q + 1];
-            den += f->A[2 * q + 1] * f->A[2 * q + 1];
+            num += (a[3 * q + 1] - P[3] * f->A[3 * q]) * f->A[3 * q + 1];
+            den += f->A[3 * q + 1] * f->A[3 * q + 1];
         }
     p22t = num / den;
     for (q = 0; q < f->n; ++q) {
         double at = mass[q] * f->R[q] / (DT * DT);
         int top = f->side[q] == SBC_SIDE_TOP || q == f->corner[SBC_CORNER_TR] || q == f->corner[SBC_CORNER_TL];
         if (top) {
-            double da = P[2] * f->A[2 * q] + p22t * f->A[2 * q + 1] - a[2 * q + 1];
+            double da = P[3] * f->A[3 * q] + p22t * f->A[3 * q + 1] - a[3 * q + 1];
             st += da * da / (at * at);
         }
         if (f->side[q] == SBC_SIDE_RIGHT) {
             int p = f->partner[q];
             double M = 0.5 * (mass[q] + mass[p]), R = 0.5 * (f->R[q] + f->R[p]);
-            double d0 = a[2 * q] + a[2 * p], d1 = a[2 * q + 1] + a[2 * p + 1], dm = m[q] + m[p];
+            double d0 = a[3 * q] + a[3 * p], d1 = a[3 * q + 1] + a[3 * p + 1], dm = m[q] + m[p];
             sp += (d0 * d0 + d1 * d1) / (M * R / (DT * DT) * M * R / (DT * DT));
             sm += dm * dm / (M * R * R / (DT * DT) * M * R * R / (DT * DT));
         }
@@ -68,13 +68,13 @@ static double support_lag(const sbc_frame *f, const double *x, const double *the
     int q, n = 0;
     for (q = 0; q < f->n; ++q)
         if (f->side[q] == SBC_SIDE_BOTTOM || q == f->corner[SBC_CORNER_BL] || q == f->corner[SBC_CORNER_BR]) {
-            c += f->X[2 * q + 1];
+            c += f->X[3 * q + 1];
             ++n;
         }
     c /= n;
     for (q = 0; q < f->n; ++q)
         if (f->side[q] == SBC_SIDE_BOTTOM || q == f->corner[SBC_CORNER_BL] || q == f->corner[SBC_CORNER_BR]) {
-            worst = fmax(worst, fabs(x[2 * q + 1] - (c + F22 * (f->X[2 * q + 1] - c))) / f->R[q]);
+            worst = fmax(worst, fabs(x[3 * q + 1] - (c + F22 * (f->X[3 * q + 1] - c))) / f->R[q]);
             if (theta[q] != 0.0)
                 worst = HUGE_VAL;
         }
@@ -192,7 +192,7 @@ void test_mixed(void)
     CHECK(sbc_settings_parse(&s, (int)(sizeof words / sizeof words[0]), words, &err) == SBC_OK);
     CHECK(sbc_settings_total_increments(&s) == 4);
     mass = malloc(sizeof(double) * (size_t)f.n);
-    a = malloc(sizeof(double) * 2 * (size_t)f.n);
+    a = malloc(sizeof(double) * 3 * (size_t)f.n);
     m = malloc(sizeof(double) * (size_t)f.n);
     sbc_engine_frame_masses(e, mass);
     c = sbc_controller_create(&f, &s, mass, DT, LAYER_KN, &err);
@@ -212,20 +212,20 @@ void test_mixed(void)
             const sbc_result *r = sbc_controller_result(c);
             double rt, rp, rm;
             rows[nrows++] = *r;
-            for (k = 0; k < 2 * f.n; ++k) a[k] = -snap.force[k];
+            for (k = 0; k < 3 * f.n; ++k) a[k] = -snap.force[k];
             for (k = 0; k < f.n; ++k) m[k] = -snap.torque[k];
             /* the converged state, measured on the reference it was computed
                with (renewed after the stress stage, at increment 2) */
             if (r->increment > 0) {
                 const sbc_frame *used = r->increment <= 2 ? &f : ref;
-                const double lag = support_lag(used, snap.x, snap.theta, r->F[3]);
+                const double lag = support_lag(used, snap.x, snap.theta, r->F[4]);
                 residuals(used, a, m, mass, &rt, &rp, &rm);
                 if (!(rt <= 1e-6 && rp <= 1e-6 && rm <= 1e-6))
                     printf("  increment %d: r_top %g r_pair %g r_moment %g (controller %g %g) HM %g\n", r->increment,
                            rt, rp, rm, r->r_force, r->r_moment, r->hill_mandel);
                 CHECK(rt <= 1e-6 && rp <= 1e-6 && rm <= 1e-6);
                 CHECK(sqrt(rt * rt + rp * rp) <= 1e-6 * (1.0 + 1e-9));
-                CHECK_REL(r->P[3], r->increment == 1 ? 0.5 * P22 : P22, 1e-5); /* eq. 23's P22 is P22* */
+                CHECK_REL(r->P[4], r->increment == 1 ? 0.5 * P22 : P22, 1e-5); /* eq. 23's P22 is P22* */
                 bottom_follows &= lag <= 1e-6;
                 if (lag > 1e-6)
                     printf("  increment %d: the support is %g radii off c + F22 (X - c)\n", r->increment, lag);
@@ -242,10 +242,10 @@ void test_mixed(void)
     if (nrows == 5) {
         CHECK(fabs(rows[2].F[1]) < 1e-12);
         /* the layer compacts under P22*: F22 < 1 is a result (eq. 45) */
-        CHECK(rows[2].F[3] < 1.0 && rows[2].F[3] > 0.95);
+        CHECK(rows[2].F[4] < 1.0 && rows[2].F[4] > 0.95);
         /* stage 2 on the new reference: F12 follows the top and bottom (D) */
         CHECK_REL(rows[4].F[1], 0.004, 5e-3);
-        CHECK(rows[4].sigma[1] > 0.0 && rows[4].P[3] < 0.0);
+        CHECK(rows[4].sigma[1] > 0.0 && rows[4].P[4] < 0.0);
         /* eq. 46 with every boundary term zero: the support and the pairs
            follow the measured F, the top carries a uniform traction */
         for (k = 1; k < 5; ++k) {

@@ -65,7 +65,7 @@ static void corrupted_states(const double *fstate, size_t nf, const double *stat
             ++tried;
             if (st == SBC_OK) {
                 sbc_commands cmd = sbc_controller_commands(c);
-                for (i = 0; i < 2 * f->n; ++i)
+                for (i = 0; i < 3 * f->n; ++i)
                     bad_commands += !isfinite(cmd.x[i]);
             }
             sbc_controller_free(c);
@@ -111,7 +111,7 @@ static void mixed_continues(void)
             eb = sbc_controller_step(b, &snap, &err);
             cb = sbc_controller_commands(b);
             ca = sbc_controller_commands(a);
-            mismatches += ea != eb || memcmp(ca.x, cb.x, sizeof(double) * 2 * (size_t)f.n) != 0;
+            mismatches += ea != eb || memcmp(ca.x, cb.x, sizeof(double) * 3 * (size_t)f.n) != 0;
             if (ea == SBC_EVENT_INCREMENT || ea == SBC_EVENT_FINISHED)
                 mismatches += memcmp(sbc_controller_result(a), sbc_controller_result(b), sizeof(sbc_result)) != 0;
         } else if (ea == SBC_EVENT_CORRECTED && sbc_controller_increment(a) == 3 && ++corrections == 5) {
@@ -188,8 +188,8 @@ void test_restart(void)
     fstate = malloc(sizeof(double) * nf);
     sbc_frame_save(&f, fstate);
     CHECK(sbc_frame_load(&g, fstate, nf, &err) == SBC_OK);
-    CHECK(g.n == f.n && g.V == f.V && memcmp(g.X, f.X, sizeof(double) * 2 * (size_t)f.n) == 0 &&
-          memcmp(g.A, f.A, sizeof(double) * 2 * (size_t)f.n) == 0 && memcmp(g.partner, f.partner, sizeof(int) * (size_t)f.n) == 0);
+    CHECK(g.n == f.n && g.V == f.V && memcmp(g.X, f.X, sizeof(double) * 3 * (size_t)f.n) == 0 &&
+          memcmp(g.A, f.A, sizeof(double) * 3 * (size_t)f.n) == 0 && memcmp(g.partner, f.partner, sizeof(int) * (size_t)f.n) == 0);
     CHECK(sbc_frame_load(&g, fstate, nf - 1, &err) == SBC_ERR_INPUT);
     /* a controller on the loaded frame continues exactly as the original */
     n = sbc_controller_state_size(a);
@@ -207,7 +207,7 @@ void test_restart(void)
         eb = sbc_controller_step(b, &snap, &err);
         ca = sbc_controller_commands(a);
         cb = sbc_controller_commands(b);
-        mismatches += ea != eb || memcmp(ca.x, cb.x, sizeof(double) * 2 * (size_t)f.n) != 0 ||
+        mismatches += ea != eb || memcmp(ca.x, cb.x, sizeof(double) * 3 * (size_t)f.n) != 0 ||
                       memcmp(ca.theta, cb.theta, sizeof(double) * (size_t)f.n) != 0;
         if (ea == SBC_EVENT_INCREMENT || ea == SBC_EVENT_FINISHED)
             mismatches += memcmp(sbc_controller_result(a), sbc_controller_result(b), sizeof(sbc_result)) != 0;

@@ -23,7 +23,7 @@
 typedef struct {
     sbc_frame f;
     int particle[4], side[4], partner[4];
-    double X[8], R[4], A[8];
+    double X[12], R[4], A[12];
 } square;
 
 static void square_make(square *s, double L, int ccw)
@@ -35,11 +35,12 @@ static void square_make(square *s, double L, int ccw)
         int src = ccw ? q : (4 - q) % 4;
         s->particle[q] = q;
         s->partner[q] = -1;
-        s->X[2 * q] = L * unit[2 * src];
-        s->X[2 * q + 1] = L * unit[2 * src + 1];
+        s->X[3 * q] = L * unit[2 * src];
+        s->X[3 * q + 1] = L * unit[2 * src + 1];
         s->R[q] = 0.1 * L;
         s->f.corner[q] = q;
     }
+    s->f.dim = 2;
     s->f.n = 4;
     s->f.particle = s->particle;
     s->f.side = s->side;
@@ -68,14 +69,14 @@ static sbc_seal_particles one_disc(const double *x, double *f, const double *r)
 
 /* wall energy and forces of one disc at p against the frame's centres fx */
 static double wall(const sbc_frame *f, const double *fx, const double p[2], double r, double kn, double force[2],
-                   double reaction[8])
+                   double reaction[12])
 {
     sbc_seal s;
     sbc_seal_particles pt;
     sbc_error err;
     double e = -1.0;
     force[0] = force[1] = 0.0;
-    memset(reaction, 0, sizeof(double) * 8);
+    memset(reaction, 0, sizeof(double) * 12);
     pt = one_disc(p, force, &r);
     if (sbc_seal_init(&s, f, 0.25 * r, &err) == SBC_OK)
         sbc_seal_forces(&s, f, fx, &pt, kn, 1, reaction, &e, &err);
@@ -89,7 +90,7 @@ static void closed_form(void)
     square sq;
     int ccw;
     for (ccw = 0; ccw < 2; ++ccw) {
-        double p[2], f[2], R[8], e, s = 0.3 * wall_at, t = 0.25, t_ab, fn = kn * (wall_at - s), sum[2] = {0, 0}, moment = 0.0;
+        double p[2], f[2], R[12], e, s = 0.3 * wall_at, t = 0.25, t_ab, fn = kn * (wall_at - s), sum[2] = {0, 0}, moment = 0.0;
         int a = ccw ? 0 : 3, b = ccw ? 1 : 0, q; /* the bottom edge runs 0 -> 1 (ccw) or 3 -> 0 (cw) */
         square_make(&sq, L, ccw);
         p[0] = t * L;
@@ -100,12 +101,12 @@ static void closed_form(void)
         CHECK_REL(e, 0.5 * fn * (wall_at - s), 1e-12);
         /* the lever rule: of the edge a -> b, a takes 1 - t_ab; the corner at x = 0 is the nearer */
         t_ab = ccw ? t : 1.0 - t;
-        CHECK_REL(R[2 * a + 1], -(1.0 - t_ab) * fn, 1e-12);
-        CHECK_REL(R[2 * b + 1], -t_ab * fn, 1e-12);
+        CHECK_REL(R[3 * a + 1], -(1.0 - t_ab) * fn, 1e-12);
+        CHECK_REL(R[3 * b + 1], -t_ab * fn, 1e-12);
         for (q = 0; q < 4; ++q) {
-            sum[0] += R[2 * q];
-            sum[1] += R[2 * q + 1];
-            moment += sq.X[2 * q] * R[2 * q + 1] - sq.X[2 * q + 1] * R[2 * q];
+            sum[0] += R[3 * q];
+            sum[1] += R[3 * q + 1];
+            moment += sq.X[3 * q] * R[3 * q + 1] - sq.X[3 * q + 1] * R[3 * q];
         }
         /* action and reaction: no net force and no net moment about the origin */
         CHECK_ABS(sum[0] + f[0], 0.0, 1e-12 * fn);
@@ -113,7 +114,7 @@ static void closed_form(void)
         CHECK_ABS(moment + (p[0] * f[1] - p[1] * f[0]), 0.0, 1e-12 * fn * L);
         /* beyond the wall, and off the segment's span: nothing */
         p[1] = 1.01 * wall_at;
-        CHECK(wall(&sq.f, sq.X, p, r, kn, f, R) == 0.0 && f[1] == 0.0 && R[2 * a + 1] == 0.0);
+        CHECK(wall(&sq.f, sq.X, p, r, kn, f, R) == 0.0 && f[1] == 0.0 && R[3 * a + 1] == 0.0);
         /* the walls end at the frame's centres: off both spans at a corner, nothing either */
         p[0] = -0.6 * r;
         p[1] = -0.2 * r;
@@ -131,26 +132,27 @@ static void closed_form(void)
 static void energy_gradient(void)
 {
     const double L = 1.0, r = 0.05, kn = 1e4, h = 1e-7;
-    const double fx0[8] = {0.01, -0.02, 1.03, 0.04, 0.98, 1.02, -0.01, 0.97};
+    const double fx0[12] = {0.01, -0.02, 0.0, 1.03, 0.04, 0.0, 0.98, 1.02, 0.0, -0.01, 0.97, 0.0};
     const double p0[2] = {0.63, 0.03}; /* near the tilted bottom edge */
     square sq;
-    double f[2], R[8], fp[2], Rp[8], e0;
+    double f[2], R[12], fp[2], Rp[12], e0;
     int c;
     square_make(&sq, L, 1);
     e0 = wall(&sq.f, fx0, p0, r, kn, f, R);
     CHECK(e0 > 0.0 && f[1] > 0.0);
     for (c = 0; c < 10; ++c) {
-        double fx[8], p[2], ep, em, grad;
+        const int slot = c < 2 ? 0 : 3 * ((c - 2) / 2) + (c - 2) % 2; /* of the frame's coordinate c - 2 */
+        double fx[12], p[2], ep, em, grad;
         memcpy(fx, fx0, sizeof fx);
         memcpy(p, p0, sizeof p);
-        if (c < 2) p[c] += h; else fx[c - 2] += h;
+        if (c < 2) p[c] += h; else fx[slot] += h;
         ep = wall(&sq.f, fx, p, r, kn, fp, Rp);
         memcpy(fx, fx0, sizeof fx);
         memcpy(p, p0, sizeof p);
-        if (c < 2) p[c] -= h; else fx[c - 2] -= h;
+        if (c < 2) p[c] -= h; else fx[slot] -= h;
         em = wall(&sq.f, fx, p, r, kn, fp, Rp);
         grad = (ep - em) / (2.0 * h);
-        CHECK_ABS(c < 2 ? f[c] : R[c - 2], -grad, 1e-6 * kn * r);
+        CHECK_ABS(c < 2 ? f[c] : R[slot], -grad, 1e-6 * kn * r);
     }
 }
 
@@ -163,7 +165,7 @@ static void verlet(void)
     sbc_seal s;
     sbc_seal_particles pt;
     sbc_error err;
-    double x[2] = {0.5, 0.5}, f[2], R[8], e, fresh[2], Rf[8];
+    double x[2] = {0.5, 0.5}, f[2], R[12], e, fresh[2], Rf[12];
     int k, met = 0, same = 1;
     square_make(&sq, 1.0, 1);
     pt = one_disc(x, f, &r);
@@ -198,7 +200,10 @@ static void engine_bounce(void)
     sbc_error err;
     int k, q, sealed;
     square_make(&sq, L, 1);
-    memcpy(x, sq.X, sizeof sq.X);
+    for (q = 0; q < 4; ++q) { /* host centres [2n] */
+        x[2 * q] = sq.X[3 * q];
+        x[2 * q + 1] = sq.X[3 * q + 1];
+    }
     for (q = 0; q < 4; ++q)
         rad[q] = 0.1 * r; /* small frame discs: the disc touches only the wall */
     x[8] = 0.4 * L;

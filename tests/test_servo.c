@@ -20,7 +20,7 @@
 typedef struct final_state {
     sbc_frame frame;
     double *x, *a, *m, *mass; /* frame-ordered copies of the last snapshot */
-    double F[4];              /* imposed at the last increment */
+    double F[9];              /* imposed at the last increment */
     sbc_result result;
     sbc_status status;
     char message[SBC_ERROR_LEN];
@@ -64,7 +64,7 @@ static void run_packing(sbc_packing p, const char *words, double ks, double misr
         snprintf(out->message, sizeof out->message, "%s", err.message);
     }
     CHECK(c != NULL || (out->status == SBC_ERR_INPUT && out->message[0]));
-    double *reported = malloc(sizeof(double) * 2 * (size_t)out->frame.n);
+    double *reported = malloc(sizeof(double) * 3 * (size_t)out->frame.n);
     for (; c;) {
         sbc_event ev;
         sbc_commands cmd;
@@ -73,8 +73,9 @@ static void run_packing(sbc_packing p, const char *words, double ks, double misr
         if (misreport > 0.0) {
             for (q = 0; q < out->frame.n; ++q) {
                 const double d = (q % 2 ? misreport : -misreport) * out->frame.R[q];
-                reported[2 * q] = snap.x[2 * q] + d;
-                reported[2 * q + 1] = snap.x[2 * q + 1] - d;
+                reported[3 * q] = snap.x[3 * q] + d;
+                reported[3 * q + 1] = snap.x[3 * q + 1] - d;
+                reported[3 * q + 2] = 0.0;
             }
             snap.x = reported;
         }
@@ -89,14 +90,15 @@ static void run_packing(sbc_packing p, const char *words, double ks, double misr
             out->status = SBC_OK;
             out->result = *sbc_controller_result(c);
             sbc_controller_target_F(c, s.increments, out->F);
-            out->x = malloc(sizeof(double) * 2 * (size_t)nq);
-            out->a = malloc(sizeof(double) * 2 * (size_t)nq);
+            out->x = malloc(sizeof(double) * 3 * (size_t)nq);
+            out->a = malloc(sizeof(double) * 3 * (size_t)nq);
             out->m = malloc(sizeof(double) * (size_t)nq);
             for (q = 0; q < nq; ++q) {
-                out->x[2 * q] = snap.x[2 * q];
-                out->x[2 * q + 1] = snap.x[2 * q + 1];
-                out->a[2 * q] = -snap.force[2 * q]; /* eq. 5 */
-                out->a[2 * q + 1] = -snap.force[2 * q + 1];
+                out->x[3 * q] = snap.x[3 * q];
+                out->x[3 * q + 2] = out->a[3 * q + 2] = 0.0;
+                out->x[3 * q + 1] = snap.x[3 * q + 1];
+                out->a[3 * q] = -snap.force[3 * q]; /* eq. 5 */
+                out->a[3 * q + 1] = -snap.force[3 * q + 1];
                 out->m[q] = -snap.torque[q];
             }
             break;
@@ -144,10 +146,10 @@ static int converged_with_work(final_state *f)
 /* Hill-Mandel residual of eq. 30 from the final state, relative to the work scale */
 static double hill_mandel(const final_state *f)
 {
-    double F[4], P[4];
+    double F[9], P[9];
     sbc_homogenize_F(&f->frame, f->x, F);
     sbc_homogenize_P(&f->frame, f->a, P);
-    return fabs(sbc_homogenize_hill_mandel(&f->frame, f->a, f->x, F, P)) / sbc_homogenize_work_scale(P, F);
+    return fabs(sbc_homogenize_hill_mandel(&f->frame, f->a, f->x, F, P)) / sbc_homogenize_work_scale(2, P, F);
 }
 
 /* (P) on the frictionless lattice with a diagonal F: the affine state is
@@ -161,9 +163,9 @@ static void periodic_closed_form(void)
                 "gain_moment 1e3", 0.0, &f);
     CHECK(f.status == SBC_OK);
     CHECK_REL(f.result.P[0], -N * kn * (2 * R - d * F11) / ((N - 1) * d), 1e-9);
-    CHECK_REL(f.result.P[3], -N * kn * (2 * R - d * F22) / ((N - 1) * d), 1e-9);
+    CHECK_REL(f.result.P[4], -N * kn * (2 * R - d * F22) / ((N - 1) * d), 1e-9);
     CHECK_ABS(f.result.P[1], 0.0, 1e-9 * fabs(f.result.P[0]));
-    CHECK_ABS(f.result.P[2], 0.0, 1e-9 * fabs(f.result.P[0]));
+    CHECK_ABS(f.result.P[3], 0.0, 1e-9 * fabs(f.result.P[0]));
     final_free(&f);
 }
 
@@ -189,15 +191,15 @@ static int periodic_state(const char *update)
             continue;
         at = f.mass[q] * f.frame.R[q] / (dt * dt);
         mt = at * f.frame.R[q];
-        ok_f &= hypot(f.a[2 * q] + f.a[2 * p], f.a[2 * q + 1] + f.a[2 * p + 1]) <= tol * at;
+        ok_f &= hypot(f.a[3 * q] + f.a[3 * p], f.a[3 * q + 1] + f.a[3 * p + 1]) <= tol * at;
         ok_m &= fabs(f.m[q] + f.m[p]) <= tol * mt;
         /* eq. 19: x+ - x- = F (X+ - X-) */
-        dx[0] = f.x[2 * q] - f.x[2 * p];
-        dx[1] = f.x[2 * q + 1] - f.x[2 * p + 1];
-        DX[0] = f.frame.X[2 * q] - f.frame.X[2 * p];
-        DX[1] = f.frame.X[2 * q + 1] - f.frame.X[2 * p + 1];
+        dx[0] = f.x[3 * q] - f.x[3 * p];
+        dx[1] = f.x[3 * q + 1] - f.x[3 * p + 1];
+        DX[0] = f.frame.X[3 * q] - f.frame.X[3 * p];
+        DX[1] = f.frame.X[3 * q + 1] - f.frame.X[3 * p + 1];
         ok_x &= fabs(dx[0] - (f.F[0] * DX[0] + f.F[1] * DX[1])) < 1e-15 &&
-                fabs(dx[1] - (f.F[2] * DX[0] + f.F[3] * DX[1])) < 1e-15;
+                fabs(dx[1] - (f.F[3] * DX[0] + f.F[4] * DX[1])) < 1e-15;
     }
     CHECK(ok_f);
     CHECK(ok_m);
@@ -214,7 +216,7 @@ static int traction_state(const char *update)
 {
     const double tol = 1e-12, epsF = 1e-6, dt = 1e-5;
     final_state f;
-    double P[4], F[4];
+    double P[9], F[9];
     char words[512];
     int q, ok = 1, k, iterations;
     snprintf(words, sizeof words, "T F 0.995 -0.01 -0.01 0.995 increments 2 relax 1e-14 20 tol_force 1e-12 "
@@ -226,21 +228,21 @@ static int traction_state(const char *update)
     sbc_homogenize_P(&f.frame, f.a, P);
     sbc_homogenize_F(&f.frame, f.x, F);
     for (q = 0; q < f.frame.n; ++q) {
-        const double *A = &f.frame.A[2 * q];
+        const double *A = &f.frame.A[3 * q];
         double at = f.mass[q] * f.frame.R[q] / (dt * dt);
-        ok &= hypot(f.a[2 * q] - (P[0] * A[0] + P[1] * A[1]), f.a[2 * q + 1] - (P[2] * A[0] + P[3] * A[1])) <=
+        ok &= hypot(f.a[3 * q] - (P[0] * A[0] + P[1] * A[1]), f.a[3 * q + 1] - (P[3] * A[0] + P[4] * A[1])) <=
               tol * at;
     }
     CHECK(ok);
-    for (k = 0; k < 4; ++k)
+    for (k = 0; k < 9; ++k)
         CHECK_ABS(F[k], f.F[k], epsF);
     CHECK(hill_mandel(&f) <= 1e-8);
     /* and it is not the (D) state: the frame moved off F X */
     {
         double off = 0.0;
         for (q = 0; q < f.frame.n; ++q) {
-            const double *X = &f.frame.X[2 * q];
-            off = fmax(off, fabs(f.x[2 * q] - (f.F[0] * X[0] + f.F[1] * X[1])));
+            const double *X = &f.frame.X[3 * q];
+            off = fmax(off, fabs(f.x[3 * q] - (f.F[0] * X[0] + f.F[1] * X[1])));
         }
         CHECK(off > 1e-8);
     }
@@ -276,9 +278,9 @@ static void relative_tolerance(void)
         return;
     for (q = 0; q < f.frame.n; ++q) {
         int p = f.frame.partner[q];
-        den += f.a[2 * q] * f.a[2 * q] + f.a[2 * q + 1] * f.a[2 * q + 1];
+        den += f.a[3 * q] * f.a[3 * q] + f.a[3 * q + 1] * f.a[3 * q + 1];
         if (f.frame.side[q] == SBC_SIDE_BOTTOM || f.frame.side[q] == SBC_SIDE_RIGHT)
-            num += pow(f.a[2 * q] + f.a[2 * p], 2) + pow(f.a[2 * q + 1] + f.a[2 * p + 1], 2);
+            num += pow(f.a[3 * q] + f.a[3 * p], 2) + pow(f.a[3 * q + 1] + f.a[3 * p + 1], 2);
     }
     CHECK(num > 0.0 && sqrt(num / den) <= 1e-6);
     CHECK_ABS(f.result.r_force, sqrt(num / den), 1e-12); /* the CSV's r_force is the relative norm */

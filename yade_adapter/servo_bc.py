@@ -304,8 +304,8 @@ class ServoBC(object):
         self._law_functor = None
         self._states = [O.bodies[i].state for i in self.frame]
         self._moving = False
-        self._buffers = [(ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)(),
-                         (ctypes.c_double * (2 * self.Q))(), (ctypes.c_double * self.Q)()]
+        self._buffers = [(ctypes.c_double * (3 * self.Q))(), (ctypes.c_double * self.Q)(),
+                         (ctypes.c_double * (3 * self.Q))(), (ctypes.c_double * self.Q)()]
         self._columns = _columns()
         self._row = (ctypes.c_double * len(self._columns))()
         self._m = (ctypes.c_double * MEASURES)()
@@ -511,8 +511,8 @@ class ServoBC(object):
             for q, i in enumerate(self.frame):
                 s = self._states[q]
                 f, t = O.forces.f(i), O.forces.t(i)
-                x[2 * q], x[2 * q + 1] = s.pos[0], s.pos[1]
-                force[2 * q], force[2 * q + 1] = f[0], f[1]
+                x[3 * q], x[3 * q + 1] = s.pos[0], s.pos[1]
+                force[3 * q], force[3 * q + 1] = f[0], f[1]
                 torque[q] = t[2]
                 theta[q] = self._frame_theta(q, s)
             m[ROTATION_SUM] = sum(abs(O.bodies[i].state.rot()[2]) for i in self.interior) + sum(abs(v) for v in theta)
@@ -562,9 +562,9 @@ class ServoBC(object):
         """The interior bodies against the polygon of the frame's centres (sbc_host_confined);
         writes a converged increment's row when they pass."""
         n = len(self.interior)
-        fx = (ctypes.c_double * (2 * self.Q))()
+        fx = (ctypes.c_double * (3 * self.Q))()
         for q, s in enumerate(self._states):
-            fx[2 * q], fx[2 * q + 1] = s.pos[0], s.pos[1]
+            fx[3 * q], fx[3 * q + 1] = s.pos[0], s.pos[1]
         ids = (ctypes.c_long * max(1, n))(*self.interior)
         xy, vxy = (ctypes.c_double * max(2, 2 * n))(), (ctypes.c_double * max(2, 2 * n))()
         for k, i in enumerate(self.interior):
@@ -602,7 +602,7 @@ class ServoBC(object):
         inv = 1.0 / self.dt
         for q, s in enumerate(self._states):
             pos = s.pos
-            s.vel = ((cx[2 * q] - pos[0]) * inv, (cx[2 * q + 1] - pos[1]) * inv, 0.0)
+            s.vel = ((cx[3 * q] - pos[0]) * inv, (cx[3 * q + 1] - pos[1]) * inv, 0.0)
             if not free[q]:
                 s.angVel = (0.0, 0.0, (ct[q] - self.theta[q]) * inv)
                 self.theta[q] = ct[q]

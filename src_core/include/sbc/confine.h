@@ -21,13 +21,13 @@ extern "C" {
 /* Steps between two checks during a relaxation. */
 #define SBC_CONFINE_EVERY 10000
 
-/* 1 when p [2] (m) lies inside the polygon of the frame's centres fx [2Q]
+/* 1 when p [2] (m) lies inside the polygon of the frame's centres fx [3Q]
  * (m, frame order) by the even-odd rule, else 0. O(Q). */
 int sbc_confine_inside(const sbc_frame *f, const double *fx, const double p[2]);
 
 /* One interior particle, numbered id by the host (for the message), at x [2]
  * (m) with velocity v [2] (m/s), against the frame f whose centres are now
- * fx [2Q] (m, frame order). increment: the increment under way, whose
+ * fx [3Q] (m, frame order). increment: the increment under way, whose
  * results are not kept when the check fails. Returns SBC_OK, or fails with
  *   SBC_ERR_NUMERIC   a non-finite position, or a moving particle more than
  *                     the frame's width beyond it (the packing blew up);

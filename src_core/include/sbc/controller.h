@@ -30,9 +30,9 @@ typedef enum sbc_event {
 
 /* What a host measures each step. Per-frame arrays are in frame order. */
 typedef struct sbc_snapshot {
-    const double *x;         /* [2Q] frame centre positions, m */
+    const double *x;         /* [3Q] frame centre positions, m (3 slots whatever the dimension, tensor.h) */
     const double *theta;     /* [Q] frame rotations, rad */
-    const double *force;     /* [2Q] resultant contact force on each frame particle, N */
+    const double *force;     /* [3Q] resultant contact force on each frame particle, N */
     const double *torque;    /* [Q] resultant contact moment on each frame particle, N m */
     double kinetic_energy;   /* Ek of the interior particles that carry a force, eq. 12, J */
     double unbalanced_max;   /* largest |net force| (contact forces only, before damping) on an
@@ -47,7 +47,7 @@ typedef struct sbc_snapshot {
 
 /* What the host applies to the frame before its next step. */
 typedef struct sbc_commands {
-    const double *x;                    /* [2Q] target positions, m */
+    const double *x;                    /* [3Q] target positions, m */
     const double *theta;                /* [Q] target rotations, rad */
     const unsigned char *free_rotation; /* [Q] 1: the host integrates this rotation freely */
 } sbc_commands;
@@ -55,9 +55,9 @@ typedef struct sbc_commands {
 /* One converged increment: the CSV row (results.h), with the accuracy measures. */
 typedef struct sbc_result {
     int increment;
-    double F[4];          /* eq. 15, - */
-    double P[4];          /* eq. 23, N/m */
-    double sigma[4];      /* eq. 31, N/m */
+    double F[9];          /* eq. 15, -; tensors in 3 x 3 slots (tensor.h) */
+    double P[9];          /* eq. 23, N/m */
+    double sigma[9];      /* eq. 31, N/m */
     double overlap_mean;  /* eq. 39, - */
     double rotation_mean; /* eq. 41, rad */
     int iterations;       /* servo iterations (0 for D) */
@@ -121,7 +121,7 @@ void sbc_controller_save(const sbc_controller *c, double *out);
 sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err);
 
 /* Macroscopic F imposed at increment i: I + (i / i_tot) (F_final - I). */
-void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4]);
+void sbc_controller_target_F(const sbc_controller *c, int increment, double F[9]);
 
 /* The reference frame the controller works with: a copy of the host's frame,
  * whose X, A and V a mixed BC renews after its stress stage (Sect. 5.1). */

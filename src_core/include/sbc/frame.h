@@ -11,6 +11,7 @@
 
 #include "sbc/packing.h"
 #include "sbc/status.h"
+#include "sbc/tensor.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -26,15 +27,19 @@ typedef enum sbc_side {
 
 enum { SBC_CORNER_BL = 0, SBC_CORNER_BR, SBC_CORNER_TR, SBC_CORNER_TL };
 
+/* Vectors are stored in SBC_DIM_MAX slots (tensor.h): X_q is X[3q .. 3q+2],
+ * its third slot 0 in 2D. The detection functions below are those of the 2D
+ * frame (frame_2d.c): their host centres x are [2n]. */
 typedef struct sbc_frame {
+    int dim;        /* 2 or 3 (the detection below builds 2D frames) */
     int n;          /* Q, number of frame particles */
     int *particle;  /* [Q] index of the particle in the host's packing */
     int *side;      /* [Q] sbc_side of each frame position */
     int *partner;   /* [Q] frame position of the periodic partner (+/-), -1 for corners */
     int corner[4];  /* frame positions of the corners BL, BR, TR, TL */
-    double *X;      /* [2Q] reference centre positions X_q, m */
+    double *X;      /* [3Q] reference centre positions X_q, m */
     double *R;      /* [Q] radii R_q, m */
-    double *A;      /* [2Q] area vectors A_q of eq. 2, m (a length in 2D) */
+    double *A;      /* [3Q] area vectors A_q of eq. 2, m (a length in 2D) */
     double V;       /* reference volume from the corner centres, m^2 */
 } sbc_frame;
 
@@ -68,8 +73,8 @@ sbc_status sbc_frame_from_list(sbc_frame *frame, int count, const int *list,
 /* Recomputes A_q (eq. 2) and V from frame->X and frame->R. */
 void sbc_frame_update_geometry(sbc_frame *frame);
 
-/* The frame's centres in frame order, fx [2Q] (m), gathered from the
- * centres x [2n] of the host's packing. */
+/* The frame's centres in frame order, fx [3Q] (m), gathered from the
+ * centres x [dim n] of the host's packing. */
 void sbc_frame_centres(const sbc_frame *frame, const double *x, double *fx);
 
 /* Restart support: the frame as a flat array of doubles (its reference
@@ -79,6 +84,9 @@ void sbc_frame_centres(const sbc_frame *frame, const double *x, double *fx);
 size_t sbc_frame_state_size(const sbc_frame *frame);
 void sbc_frame_save(const sbc_frame *frame, double *out);
 sbc_status sbc_frame_load(sbc_frame *frame, const double *in, size_t n, sbc_error *err);
+
+/* A deep copy of src into dst (which is overwritten, not freed). */
+sbc_status sbc_frame_copy(sbc_frame *dst, const sbc_frame *src, sbc_error *err);
 
 /* Frees the arrays of frame and zeroes it. */
 void sbc_frame_free(sbc_frame *frame);

@@ -80,8 +80,10 @@ enum {
 /* sbc_controller_needs. */
 unsigned sbc_host_needs(const sbc_host *h, const double *measures);
 
-/* One host step (sbc_controller_step) with the measures above; frame
- * arrays may be NULL where sbc_host_needs allowed it.
+/* One host step (sbc_controller_step) with the measures above and the
+ * frame arrays of sbc_snapshot in frame order: x, force [3Q] (3 slots
+ * whatever the dimension), theta, torque [Q]; they may be NULL where
+ * sbc_host_needs allowed it.
  * Returns the sbc_event. The row of SBC_EVENT_INCREMENT and
  * SBC_EVENT_FINISHED goes to the CSV once sbc_host_confined passes it (or at
  * the next sbc_host_step, or sbc_host_free, for a host that does not check).
@@ -97,7 +99,7 @@ void sbc_host_progress(const sbc_host *h, double *out);
 
 /* confine.h for n interior particles (ids [n] for the message, centres xy
  * [2n] in m, velocities vxy [2n] in m/s) against the frame's present centres
- * frame_x [2Q] (frame order). Call it after SBC_EVENT_INCREMENT and
+ * frame_x [3Q] (frame order). Call it after SBC_EVENT_INCREMENT and
  * SBC_EVENT_FINISHED (it then writes the pending row), after
  * SBC_EVENT_FAILED (an escape explains a stalled servo) and every
  * SBC_CONFINE_EVERY steps. Returns 0, or 1 with the message in
@@ -105,7 +107,7 @@ void sbc_host_progress(const sbc_host *h, double *out);
 int sbc_host_confined(sbc_host *h, const double *frame_x, int n, const long *ids, const double *xy,
                       const double *vxy);
 
-/* The commands in force: target positions [2Q] (m), rotations [Q] (rad),
+/* The commands in force: target positions [3Q] (m), rotations [Q] (rad),
  * free-rotation flags [Q]; valid until the next sbc_host_step. */
 const double *sbc_host_command_x(const sbc_host *h);
 const double *sbc_host_command_theta(const sbc_host *h);

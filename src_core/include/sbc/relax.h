@@ -10,13 +10,10 @@
  * max is over the interior particles, the mean over the contacts (YADE's
  * unbalancedForce with useMaxForce). (a) is what the stress sees: the
  * homogenized stress of eq. 23 is the exact volume average when every
- * interior particle is in balance, and off by the order of U otherwise
- * (measured on the lattices of docs/servo_bc.md). The max, not the mean:
- * a servo correction unbalances the particles next to the frame, and a mean
- * over the interior dilutes that by the interior's size; with the mean the
- * servo on the 232-disc irregular packing stalled at a frame residual of
- * 1.5e-2 (relaxations ended 20 steps after each correction), with the max it
- * converges. (b) keeps a relaxation from ending while the packing swings
+ * interior particle is in balance, and off by the order of U otherwise.
+ * The max, not the mean: a servo correction unbalances the particles next
+ * to the frame, and a mean over the interior dilutes that by the interior's
+ * size (docs/servo_bc.md, "Accuracy", for both measured). (b) keeps a relaxation from ending while the packing swings
  * through its balanced position: for one vibration mode of force amplitude
  * u f_c per particle, Ek at the balanced position is about u^2/2 of Ep, so
  * (a) and (b) hold together only when the amplitude is below tol. Neither
@@ -37,15 +34,15 @@
  * not: steps count only after the kinetic energy of this relaxation has passed
  * a maximum (risen, then stopped rising). Right after the frame moves, the
  * interior is nearly at rest and Ek/Ep is tiny for hundreds of steps although
- * the forces are unbalanced; with the literal criterion the paper's
- * 25-particle (D) case is "relaxed" 21 steps after every frame move. A step
+ * the forces are unbalanced (docs/servo_bc.md, "The paper's relaxation
+ * criterion", for the measurement). A step
  * with Ek exactly 0 always counts; with Ep = 0 only Ek = 0 counts. In a
  * relaxation that starts with the frame where it was, a step below the
  * round-off floor Ek/Ep <= SBC_RELAX_ROUNDOFF counts without a maximum (a
  * balanced lattice moves only by round-off forces, and its Ek may never pass
  * a maximum). Ek/Ep <= tol_E bounds the stress error only as ~sqrt(tol_E),
- * and the relaxation may end while forces are still swinging (measured in
- * docs/servo_bc.md); it is what `accuracy paper` uses.
+ * and the relaxation may end while forces are still swinging
+ * (docs/servo_bc.md); it is what `accuracy paper` uses.
  *
  * Hosts sum Ek and the net forces over the interior particles that carry a
  * force or moment: a contact-free rattler keeps its spin for good (local

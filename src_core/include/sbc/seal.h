@@ -80,8 +80,8 @@ sbc_status sbc_seal_init(sbc_seal *s, const sbc_frame *f, double reach, sbc_erro
 void sbc_seal_free(sbc_seal *s);
 
 /* One step: the wall forces of the candidates, added to p->f, and their
- * reactions on the frame, added to reaction [2Q] (N, frame order; may be
- * NULL). fx [2Q]: the frame's centres now (m). kn: the normal stiffness of
+ * reactions on the frame, added to reaction [3Q] (N, frame order; may be
+ * NULL). fx [3Q]: the frame's centres now (m). kn: the normal stiffness of
  * the interior's contacts (N/m). collect: the host's particle indices have
  * changed since the last step (LAMMPS after a neighbour build). Returns the
  * walls' energy (J) in *energy. Fails only without memory. */

@@ -12,6 +12,7 @@
 #include "sbc/relax.h"
 #include "sbc/numbers.h"
 #include "sbc/status.h"
+#include "sbc/tensor.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -45,7 +46,8 @@ typedef struct sbc_stress_spec {
 
 typedef struct sbc_settings {
     sbc_bc bc;
-    double F[4];             /* final macroscopic F, row-major; F ramps from I; default I */
+    int dim;                 /* 2 (the grammar's F has dim x dim values); 2 */
+    double F[9];             /* final macroscopic F, 3 x 3 slots (tensor.h); F ramps from I; default I */
     int increments;          /* loading increments i_tot; default 1 */
     sbc_criterion criterion; /* when a relaxation is over (relax.h): force balance (keyword balance) or
                                 Ek/Ep (keyword relax); force */
@@ -74,7 +76,7 @@ typedef struct sbc_settings {
     char accuracy[16];       /* preset in force (keyword accuracy; balanced by default) */
     /* mixed only: edge_mode[edge][component] (SBC_EDGE_*, 0 = x, 1 = y); the
        default is the paper's layer: bottom D D, right P P, top D T, left P P */
-    unsigned char edge_mode[4][2];
+    unsigned char edge_mode[4][SBC_DIM_MAX];
     int nstress;                   /* prescribed stress components (keyword stress) */
     sbc_stress_spec stress[4];
     int stress_increments;         /* i_vs: increments of the stress stage (all stress keywords alike) */
@@ -116,7 +118,7 @@ int sbc_settings_total_increments(const sbc_settings *s);
 /* The F imposed at increment i of the path, I + t (F - I): t = i / increments
  * (mixed: 0 during the stress stage, then (i - stress_increments) /
  * increments). */
-void sbc_settings_target_F(const sbc_settings *s, int increment, double F[4]);
+void sbc_settings_target_F(const sbc_settings *s, int increment, double F[9]);
 
 /* Name of a BC ("D", "P", "T", "mixed"). */
 const char *sbc_bc_name(sbc_bc bc);

@@ -34,7 +34,7 @@ struct sbc_engine {
     const sbc_frame *frame;
     int sealed;              /* seal.h walls on the frame's polygon */
     sbc_seal seal;
-    double *seal_reaction;   /* [2Q] N */
+    double *seal_reaction;   /* [3Q] N */
     int *frame_slot;         /* [n] frame position of each particle, -1 interior */
     /* per-step measures */
     double ek, ep, overlap_sum, rotation_sum;
@@ -191,9 +191,9 @@ void sbc_engine_set_frame(sbc_engine *e, const sbc_frame *frame)
         return;
     for (q = 0; q < frame->n; ++q)
         e->kinematic[frame->particle[q]] = 1;
-    e->snap_x = malloc(sizeof(double) * 2 * nq);
+    e->snap_x = calloc(3 * nq, sizeof(double));
     e->snap_theta = malloc(sizeof(double) * nq);
-    e->snap_f = malloc(sizeof(double) * 2 * nq);
+    e->snap_f = calloc(3 * nq, sizeof(double));
     e->snap_tq = malloc(sizeof(double) * nq);
 }
 
@@ -203,7 +203,7 @@ sbc_status sbc_engine_seal(sbc_engine *e, sbc_error *err)
     if (!e->frame)
         return sbc_fail(err, SBC_ERR_INPUT, "engine: seal without a frame");
     int k;
-    e->seal_reaction = malloc(sizeof(double) * 2 * (size_t)e->frame->n);
+    e->seal_reaction = malloc(sizeof(double) * 3 * (size_t)e->frame->n);
     e->frame_slot = malloc(sizeof(int) * (size_t)e->n);
     if (!e->seal_reaction || !e->frame_slot)
         return sbc_fail(err, SBC_ERR_NOMEM, "engine: out of memory");
@@ -228,7 +228,7 @@ static sbc_status seal_step(sbc_engine *e, sbc_error *err)
     sbc_status st;
     int q;
     sbc_frame_centres(fr, e->x, e->snap_x);
-    memset(e->seal_reaction, 0, sizeof(double) * 2 * (size_t)fr->n);
+    memset(e->seal_reaction, 0, sizeof(double) * 3 * (size_t)fr->n);
     p.n = e->n;
     p.x = e->x;
     p.f = e->f;
@@ -238,8 +238,8 @@ static sbc_status seal_step(sbc_engine *e, sbc_error *err)
     p.ctx = e->frame_slot;
     st = sbc_seal_forces(&e->seal, fr, e->snap_x, &p, e->law.kn, 0, e->seal_reaction, &energy, err);
     for (q = 0; q < fr->n; ++q) {
-        e->f[2 * fr->particle[q]] += e->seal_reaction[2 * q];
-        e->f[2 * fr->particle[q] + 1] += e->seal_reaction[2 * q + 1];
+        e->f[2 * fr->particle[q]] += e->seal_reaction[3 * q];
+        e->f[2 * fr->particle[q] + 1] += e->seal_reaction[3 * q + 1];
     }
     e->ep += energy;
     return st;
@@ -472,10 +472,10 @@ void sbc_engine_snapshot(sbc_engine *e, sbc_snapshot *s)
     if (fr) {
         for (q = 0; q < fr->n; ++q) {
             int p = fr->particle[q];
-            e->snap_x[2 * q] = e->x[2 * p];
-            e->snap_x[2 * q + 1] = e->x[2 * p + 1];
-            e->snap_f[2 * q] = e->f[2 * p];
-            e->snap_f[2 * q + 1] = e->f[2 * p + 1];
+            e->snap_x[3 * q] = e->x[2 * p];
+            e->snap_x[3 * q + 1] = e->x[2 * p + 1];
+            e->snap_f[3 * q] = e->f[2 * p];
+            e->snap_f[3 * q + 1] = e->f[2 * p + 1];
             e->snap_theta[q] = e->theta[p];
             e->snap_tq[q] = e->tq[p];
         }
@@ -507,10 +507,10 @@ void sbc_engine_move_frame(sbc_engine *e, const sbc_commands *cmd)
         int p = e->frame->particle[q];
         double ddx, ddy;
         if (cmd) {
-            v[2 * p] = (cmd->x[2 * q] - x[2 * p]) / dt;
-            v[2 * p + 1] = (cmd->x[2 * q + 1] - x[2 * p + 1]) / dt;
-            x[2 * p] = cmd->x[2 * q];
-            x[2 * p + 1] = cmd->x[2 * q + 1];
+            v[2 * p] = (cmd->x[3 * q] - x[2 * p]) / dt;
+            v[2 * p + 1] = (cmd->x[3 * q + 1] - x[2 * p + 1]) / dt;
+            x[2 * p] = cmd->x[3 * q];
+            x[2 * p + 1] = cmd->x[3 * q + 1];
             if (cmd->free_rotation[q]) {
                 /* free rotation (T): integrated with the rotational damping of eq. 10 */
                 double m = e->tq[p];

@@ -28,7 +28,7 @@ struct sbc_host {
     sbc_seal seal;
     double *r, kn;    /* [n] radii (m), N/m */
     int *slot;        /* [n] frame position, -1 interior */
-    double *reaction; /* [2Q] N */
+    double *reaction; /* [3Q] N */
     char step_note[SBC_ERROR_LEN]; /* time_step.h: sbc_time_step_note, or "" */
 };
 
@@ -42,7 +42,7 @@ static int seal_start(sbc_host *h, int n, const double *r, double kn, sbc_error 
     h->kn = kn;
     h->r = malloc(sizeof(double) * (size_t)n);
     h->slot = malloc(sizeof(int) * (size_t)n);
-    h->reaction = malloc(sizeof(double) * 2 * (size_t)h->frame.n);
+    h->reaction = malloc(sizeof(double) * 3 * (size_t)h->frame.n);
     if (!h->r || !h->slot || !h->reaction) {
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
         return 1;
@@ -236,7 +236,7 @@ int sbc_host_seal(sbc_host *h, const double *xy, double *force, double *energy)
     *energy = 0.0;
     if (!h->sealed)
         return 0;
-    memset(h->reaction, 0, sizeof(double) * 2 * (size_t)h->frame.n);
+    memset(h->reaction, 0, sizeof(double) * 3 * (size_t)h->frame.n);
     p.n = h->n;
     p.x = xy;
     p.f = force;
@@ -248,8 +248,8 @@ int sbc_host_seal(sbc_host *h, const double *xy, double *force, double *energy)
                         &h->err) != SBC_OK)
         return -1;
     for (q = 0; q < h->frame.n; ++q) {
-        force[2 * h->frame.particle[q]] += h->reaction[2 * q];
-        force[2 * h->frame.particle[q] + 1] += h->reaction[2 * q + 1];
+        force[2 * h->frame.particle[q]] += h->reaction[3 * q];
+        force[2 * h->frame.particle[q] + 1] += h->reaction[3 * q + 1];
     }
     return h->seal.contacts;
 }

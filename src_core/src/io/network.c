@@ -53,7 +53,7 @@ sbc_status sbc_network_svg(const char *path, const char *title, const sbc_engine
             contacts += !b;
         }
     }
-    fx = malloc(sizeof *fx * 2 * (size_t)(frame ? frame->n : 1));
+    fx = malloc(sizeof *fx * 3 * (size_t)(frame ? frame->n : 1));
     out = malloc((size_t)w->n);
     if (!fx || !out) {
         free(fx);
@@ -85,7 +85,7 @@ sbc_status sbc_network_svg(const char *path, const char *title, const sbc_engine
     if (frame) {
         int q;
         fprintf(fp, "<polygon fill=\"none\" stroke=\"#222\" stroke-width=\"1\" points=\"");
-        for (q = 0; q < frame->n; ++q) fprintf(fp, "%s%.2f,%.2f", q ? " " : "", PX(fx[2 * q]), PY(fx[2 * q + 1]));
+        for (q = 0; q < frame->n; ++q) fprintf(fp, "%s%.2f,%.2f", q ? " " : "", PX(fx[3 * q]), PY(fx[3 * q + 1]));
         fprintf(fp, "\"/>\n");
         fprintf(fp, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">black: the polygon of the frame's centres; "
                     "<tspan fill=\"#ff9900\">discs outside it: %d</tspan></text>\n",

@@ -159,7 +159,7 @@ typedef struct run_state {
     sbc_engine *engine;
     sbc_controller *ctl;
     double *mass;
-    double *fx; /* [2Q] the frame's centres for confine.h, m */
+    double *fx; /* [3Q] the frame's centres for confine.h, m */
     sbc_csv csv;
     sbc_result *rows;
     int nrows, cap;
@@ -328,7 +328,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         return err->status;
     }
     r.mass = malloc(sizeof(double) * (size_t)r.frame.n);
-    r.fx = malloc(sizeof(double) * 2 * (size_t)r.frame.n);
+    r.fx = malloc(sizeof(double) * 3 * (size_t)r.frame.n);
     if (!r.mass || !r.fx) {
         run_free(&r);
         return sbc_fail(err, SBC_ERR_NOMEM, "run: out of memory");

@@ -7,7 +7,7 @@ int sbc_confine_inside(const sbc_frame *f, const double *fx, const double p[2])
 {
     int q, in = 0;
     for (q = 0; q < f->n; ++q) {
-        const double *a = &fx[2 * q], *b = &fx[2 * ((q + 1) % f->n)];
+        const double *a = &fx[3 * q], *b = &fx[3 * ((q + 1) % f->n)];
         if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
             in = !in;
     }
@@ -28,8 +28,8 @@ sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment
         return SBC_OK;
     for (q = 0; q < f->n; ++q)
         for (c = 0; c < 2; ++c) {
-            lo[c] = fmin(lo[c], fx[2 * q + c]);
-            hi[c] = fmax(hi[c], fx[2 * q + c]);
+            lo[c] = fmin(lo[c], fx[3 * q + c]);
+            hi[c] = fmax(hi[c], fx[3 * q + c]);
         }
     size = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     for (c = 0; c < 2; ++c)

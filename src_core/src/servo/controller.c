@@ -28,16 +28,16 @@ static void start_classic(sbc_controller *c)
     const sbc_frame *f = c->frame;
     const double *F = c->F_now, *G = c->F_prev;
     const int predict = c->increment > 0 && c->s.predict > 0.0 && c->s.bc != SBC_BC_D;
-    int q;
+    int q, k;
     for (q = 0; q < f->n; ++q) {
-        const double *X = &f->X[2 * q];
-        double x0 = F[0] * X[0] + F[1] * X[1], x1 = F[2] * X[0] + F[3] * X[1];
+        const double *X = &f->X[3 * q];
+        double *x = &c->x_cmd[3 * q], GX[3];
+        sbc_tensor_apply(f->dim, F, X, x);
         if (predict && (c->s.bc == SBC_BC_T || f->side[q] != SBC_SIDE_CORNER)) {
-            x0 += c->s.predict * (c->x_prev[2 * q] - (G[0] * X[0] + G[1] * X[1]));
-            x1 += c->s.predict * (c->x_prev[2 * q + 1] - (G[2] * X[0] + G[3] * X[1]));
+            sbc_tensor_apply(f->dim, G, X, GX);
+            for (k = 0; k < f->dim; ++k)
+                x[k] += c->s.predict * (c->x_prev[3 * q + k] - GX[k]);
         }
-        c->x_cmd[2 * q] = x0;
-        c->x_cmd[2 * q + 1] = x1;
         if (c->s.bc == SBC_BC_T) {
             c->free_rot[q] = 1;
         } else {
@@ -80,7 +80,7 @@ static double first_tol(const sbc_controller *c)
 
 static void save_commands(sbc_controller *c)
 {
-    memcpy(c->motion.x_from, c->x_cmd, sizeof(double) * 2 * (size_t)c->frame->n);
+    memcpy(c->motion.x_from, c->x_cmd, sizeof(double) * 3 * (size_t)c->frame->n);
     memcpy(c->motion.th_from, c->theta_cmd, sizeof(double) * (size_t)c->frame->n);
 }
 
@@ -116,7 +116,9 @@ static void set_floors(sbc_controller *c)
     double size = 0.0, R = 0.0, force, n = 1.0 + (double)f->n * (double)f->n / 16.0;
     int q;
     for (q = 0; q < f->n; ++q) {
-        size = fmax(size, fmax(fabs(f->X[2 * q]), fabs(f->X[2 * q + 1])));
+        int k;
+        for (k = 0; k < f->dim; ++k)
+            size = fmax(size, fabs(f->X[3 * q + k]));
         R += f->R[q] / f->n;
     }
     force = 1e-10 * c->kn * (size + R);
@@ -145,36 +147,23 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     c->dt = dt;
     c->kn = kn;
     c->total = sbc_settings_total_increments(settings);
-    {
-        /* a deep copy through the restart layout */
-        size_t n = sbc_frame_state_size(frame);
-        double *tmp = malloc(sizeof(double) * n);
-        sbc_status st = tmp ? SBC_OK : SBC_ERR_NOMEM;
-        if (tmp) {
-            sbc_frame_save(frame, tmp);
-            st = sbc_frame_load(&c->ref, tmp, n, err);
-            free(tmp);
-        }
-        if (st != SBC_OK) {
-            free(c);
-            if (st == SBC_ERR_NOMEM)
-                sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
-            return NULL;
-        }
-        c->frame = &c->ref;
+    if (sbc_frame_copy(&c->ref, frame, err) != SBC_OK) {
+        free(c);
+        return NULL;
     }
-    c->mode = calloc(2 * q, 1);
+    c->frame = &c->ref;
+    c->mode = calloc(3 * q, 1);
     c->mass = malloc(sizeof(double) * q);
-    c->x_cmd = malloc(sizeof(double) * 2 * q);
+    c->x_cmd = calloc(3 * q, sizeof(double));
     c->theta_cmd = calloc(q, sizeof(double));
     c->free_rot = calloc(q, 1);
-    c->a = malloc(sizeof(double) * 2 * q);
+    c->a = calloc(3 * q, sizeof(double));
     c->m = malloc(sizeof(double) * q);
-    c->x_prev = malloc(sizeof(double) * 2 * q);
-    c->du = calloc(2 * q, sizeof(double));
-    c->a_hat = calloc(2 * q, sizeof(double));
+    c->x_prev = calloc(3 * q, sizeof(double));
+    c->du = calloc(3 * q, sizeof(double));
+    c->a_hat = calloc(3 * q, sizeof(double));
     c->dtheta = calloc(q, sizeof(double));
-    c->d_prev = calloc(3 * q, sizeof(double));
+    c->d_prev = calloc((size_t)SBC_CTL_STEP_PARTS(frame->dim) * q, sizeof(double));
     c->lambda = 1.0;
     if (!sbc_motion_alloc(&c->motion, frame->n) || !c->d_prev || !c->mass || !c->x_cmd || !c->theta_cmd ||
         !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du || !c->a_hat || !c->dtheta || !c->mode) {
@@ -183,7 +172,7 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         return NULL;
     }
     memcpy(c->mass, mass, sizeof(double) * q);
-    memcpy(c->x_cmd, c->frame->X, sizeof(double) * 2 * q); /* where the frame stands before increment 0 */
+    memcpy(c->x_cmd, c->frame->X, sizeof(double) * 3 * q); /* where the frame stands before increment 0 */
     set_floors(c);
     if (c->s.bc == SBC_BC_MIXED)
         sbc_ctl_assign_modes(c);
@@ -191,7 +180,7 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         size_t k;
         for (k = 0; k < q; ++k) {
             if (frame->side[k] != SBC_SIDE_CORNER && frame->partner[k] < 0 &&
-                (c->s.bc == SBC_BC_P || c->mode[2 * k] == SBC_MODE_P)) {
+                (c->s.bc == SBC_BC_P || c->mode[3 * k] == SBC_MODE_P)) {
                 sbc_fail(err, SBC_ERR_FRAME,
                          "servo_bc %s: frame particle %d (packing index %d) has no periodic partner on the opposite "
                          "edge (opposite edges must hold equally many particles)",
@@ -256,7 +245,7 @@ void sbc_controller_progress(const sbc_controller *c, int *iteration, double *r_
     *r_deformation = c->norms.r_deformation;
 }
 
-void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4])
+void sbc_controller_target_F(const sbc_controller *c, int increment, double F[9])
 {
     sbc_settings_target_F(&c->s, increment, F);
 }
@@ -265,7 +254,9 @@ void sbc_controller_target_F(const sbc_controller *c, int increment, double F[4]
 static int frame_finite(const sbc_frame *f, const sbc_snapshot *s, const char **what)
 {
     int k;
-    for (k = 0; k < 2 * f->n; ++k) {
+    for (k = 0; k < 3 * f->n; ++k) {
+        if (k % 3 >= f->dim)
+            continue;
         if (!isfinite(s->x[k])) { *what = "frame position"; return 0; }
         if (!isfinite(s->force[k])) { *what = "frame reaction force"; return 0; }
     }
@@ -314,20 +305,19 @@ static sbc_status measure(sbc_controller *c, const sbc_snapshot *snap, sbc_error
 {
     const sbc_frame *f = c->frame;
     sbc_result *r = &c->result;
+    sbc_error why;
     double scale;
     r->increment = c->increment;
     sbc_homogenize_F(f, snap->x, r->F);
     sbc_homogenize_P(f, c->a, r->P);
-    if (sbc_homogenize_cauchy(r->P, r->F, r->sigma, NULL) != SBC_OK)
-        return sbc_fail(err, SBC_ERR_GEOMETRY,
-                        "servo_bc %s: increment %d: det F = %g <= 0 (F = [%g %g; %g %g]): the frame is inverted or "
-                        "collapsed",
-                        sbc_bc_name(c->s.bc), c->increment, sbc_det2(r->F), r->F[0], r->F[1], r->F[2], r->F[3]);
+    if (sbc_homogenize_cauchy(f->dim, r->P, r->F, r->sigma, &why) != SBC_OK)
+        return sbc_fail(err, SBC_ERR_GEOMETRY, "servo_bc %s: increment %d: %s", sbc_bc_name(c->s.bc), c->increment,
+                        why.message);
     /* a stress collapsed below the path floor is judged on the path's scale
        (relax.h), and none below the round-off floor's stress, kn 1e-10 (the
        force floor of set_floors over the sample's size): a stress-free state
        has a Hill-Mandel residual of round-off size, not of its own scale */
-    scale = sbc_homogenize_work_scale(r->P, r->F);
+    scale = sbc_homogenize_work_scale(f->dim, r->P, r->F);
     if (scale < SBC_RELAX_PATH_FLOOR * c->work_path)
         scale = c->work_path;
     scale = fmax(scale, 1e-10 * c->kn);
@@ -366,18 +356,17 @@ static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *
     if (measure(c, snap, err) != SBC_OK || !sbc_ctl_certified(c, snap, err))
         return SBC_EVENT_FAILED;
     sbc_relax_path(&c->relax, c->relax.fc_known);
-    c->work_path = fmax(c->work_path, sbc_homogenize_work_scale(c->result.P, c->result.F));
-    c->sigma_path = fmax(c->sigma_path, sbc_ctl_largest_component(c->result.sigma));
-    memcpy(c->x_prev, snap->x, sizeof(double) * 2 * (size_t)c->frame->n);
+    c->work_path = fmax(c->work_path, sbc_homogenize_work_scale(c->frame->dim, c->result.P, c->result.F));
+    c->sigma_path = fmax(c->sigma_path, sbc_ctl_largest_component(c->frame->dim, c->result.sigma));
+    memcpy(c->x_prev, snap->x, sizeof(double) * 3 * (size_t)c->frame->n);
     memcpy(c->F_prev, c->F_now, sizeof c->F_prev);
     if (c->s.bc == SBC_BC_MIXED && c->s.stress_increments > 0 && c->increment == c->s.stress_increments) {
-        int k;
+        int i, j;
         sbc_ctl_new_reference(c, snap->x);
-        for (k = 0; k < 2; ++k) /* F of the state after stage 1 on itself: I */
-            if (sbc_ctl_row_measured(c, k)) {
-                c->F_prev[2 * k] = k == 0 ? 1.0 : 0.0;
-                c->F_prev[2 * k + 1] = k == 1 ? 1.0 : 0.0;
-            }
+        for (i = 0; i < c->frame->dim; ++i) /* F of the state after stage 1 on itself: I */
+            if (sbc_ctl_row_measured(c, i))
+                for (j = 0; j < c->frame->dim; ++j)
+                    c->F_prev[SBC_IJ(i, j)] = i == j ? 1.0 : 0.0;
     }
     if (c->increment == c->total) {
         c->increment++;
@@ -395,11 +384,15 @@ static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *
  * the 100-particle lattice, which leave the frame where it was (relax.h). */
 static int correction_moves_frame(const sbc_controller *c)
 {
-    int q;
+    int q, k;
     for (q = 0; q < c->frame->n; ++q) {
         const double R = c->frame->R[q];
-        const double move = fabs(c->du[2 * q]) + fabs(c->du[2 * q + 1]) + R * fabs(c->dtheta[q]);
-        if (move > 16.0 * DBL_EPSILON * (fabs(c->x_cmd[2 * q]) + fabs(c->x_cmd[2 * q + 1]) + R))
+        double move = 0.0, size = 0.0;
+        for (k = 0; k < c->frame->dim; ++k) {
+            move += fabs(c->du[3 * q + k]);
+            size += fabs(c->x_cmd[3 * q + k]);
+        }
+        if (move + R * fabs(c->dtheta[q]) > 16.0 * DBL_EPSILON * (size + R))
             return 1;
     }
     return 0;
@@ -489,8 +482,8 @@ static sbc_event stage_read_frame(sbc_controller *c, const sbc_snapshot *snap, s
                  sbc_bc_name(c->s.bc), c->increment, c->relax.steps, what);
         return SBC_EVENT_FAILED;
     }
-    for (k = 0; k < 2 * c->frame->n; ++k)
-        c->a[k] = -snap->force[k]; /* eq. 5: sum of contact forces = -a_q */
+    for (k = 0; k < 3 * c->frame->n; ++k) /* eq. 5: sum of contact forces = -a_q */
+        c->a[k] = k % 3 < c->frame->dim ? -snap->force[k] : 0.0;
     for (k = 0; k < c->frame->n; ++k)
         c->m[k] = -snap->torque[k];
     c->steps += c->relax.steps;
@@ -500,15 +493,15 @@ static sbc_event stage_read_frame(sbc_controller *c, const sbc_snapshot *snap, s
 /* Steps 1.5 of Tables 2-3 and 5: the residuals and the corrections (servo.c)
  * into c->norms, c->du, c->dtheta; mixed: F and P measured (F_measured,
  * P_hat). */
-static sbc_event stage_residuals(sbc_controller *c, const sbc_snapshot *snap, double F_measured[4], double P_hat[4],
+static sbc_event stage_residuals(sbc_controller *c, const sbc_snapshot *snap, double F_measured[9], double P_hat[9],
                                  sbc_error *err)
 {
     const sbc_servo_floors floors = {sbc_relax_scale_floor(&c->relax), SBC_RELAX_NET_FLOOR * c->relax.floor_force};
     sbc_servo_norms nrm;
     if (c->s.bc == SBC_BC_MIXED) {
-        double target[4], P_measured[4];
+        double target[9], P_measured[9];
         int k;
-        for (k = 0; k < 4; ++k)
+        for (k = 0; k < 9; ++k)
             target[k] = c->P_star[k] + c->P_shift[k];
         sbc_servo_mixed(c->frame, c->mode, &c->s, c->mass, c->dt, c->kn, &floors, target, c->P_fixed, c->a, c->m,
                         c->du, c->dtheta, &nrm);
@@ -571,7 +564,7 @@ static sbc_event stage_decide(sbc_controller *c, const sbc_snapshot *snap, sbc_e
 
 /* Steps 1.3 / 1.6.B: the correction scaled by the update rule, added to the
  * commands; the frame travels there and the next relaxation begins. */
-static sbc_event stage_correct(sbc_controller *c, const double F_measured[4], const double P_hat[4], sbc_error *err)
+static sbc_event stage_correct(sbc_controller *c, const double F_measured[9], const double P_hat[9], sbc_error *err)
 {
     sbc_servo_norms nrm = c->norms; /* the scaled step is this correction's; c->norms keeps the residuals' */
     int moved, k;
@@ -583,7 +576,7 @@ static sbc_event stage_correct(sbc_controller *c, const double F_measured[4], co
     }
     moved = correction_moves_frame(c);
     save_commands(c);
-    for (k = 0; k < 2 * c->frame->n; ++k)
+    for (k = 0; k < 3 * c->frame->n; ++k)
         c->x_cmd[k] += c->du[k];
     for (k = 0; k < c->frame->n; ++k)
         c->theta_cmd[k] += c->dtheta[k];
@@ -592,12 +585,12 @@ static sbc_event stage_correct(sbc_controller *c, const double F_measured[4], co
     if (c->s.bc == SBC_BC_T && c->s.update != SBC_UPDATE_FIXED)
         sbc_ctl_restore_eq15(c);
     if (c->s.bc == SBC_BC_MIXED) { /* the frame follows the measured rows of F */
-        for (k = 0; k < 2; ++k)
+        for (k = 0; k < c->frame->dim; ++k)
             if (sbc_ctl_row_measured(c, k))
-                c->F_now[3 * k] = F_measured[3 * k];
-        for (k = 0; k < 2; ++k) /* the measured P_kk towards P_star (the normal stress of the traction row) */
-            if (c->P_fixed[3 * k] && sbc_ctl_row_measured(c, k))
-                c->P_shift[3 * k] += c->P_star[3 * k] - P_hat[3 * k];
+                c->F_now[SBC_IJ(k, k)] = F_measured[SBC_IJ(k, k)];
+        for (k = 0; k < c->frame->dim; ++k) /* the measured P_kk towards P_star (the normal stress of the traction row) */
+            if (c->P_fixed[SBC_IJ(k, k)] && sbc_ctl_row_measured(c, k))
+                c->P_shift[SBC_IJ(k, k)] += c->P_star[SBC_IJ(k, k)] - P_hat[SBC_IJ(k, k)];
         sbc_ctl_mixed_follow_F(c);
     }
     begin_move(c, !moved, inexact_tol(c, nrm.relative_force));
@@ -606,7 +599,7 @@ static sbc_event stage_correct(sbc_controller *c, const double F_measured[4], co
 
 sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
 {
-    double F_measured[4], P_hat[4];
+    double F_measured[9], P_hat[9];
     sbc_event ev;
     if ((ev = stage_open(c, snap, err)) != STAGE_ON)
         return ev;

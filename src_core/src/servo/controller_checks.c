@@ -37,13 +37,16 @@ int sbc_ctl_increments_too_coarse(const sbc_controller *c, sbc_error *err)
 {
     const sbc_frame *f = c->frame;
     const int first = (c->s.bc == SBC_BC_MIXED ? c->s.stress_increments : 0) + 1;
-    double F[4], G[4], jump = 0.0;
-    int q, worst = 0;
+    double F[9], G[9], dF[9], jump = 0.0;
+    int q, k, worst = 0;
     sbc_settings_target_F(&c->s, first, F);
     sbc_settings_target_F(&c->s, first - 1, G);
+    for (k = 0; k < 9; ++k)
+        dF[k] = F[k] - G[k];
     for (q = 0; q < f->n; ++q) {
-        const double *X = &f->X[2 * q];
-        const double d = hypot((F[0] - G[0]) * X[0] + (F[1] - G[1]) * X[1], (F[2] - G[2]) * X[0] + (F[3] - G[3]) * X[1]);
+        double u[3], d;
+        sbc_tensor_apply(f->dim, dF, &f->X[3 * q], u);
+        d = hypot(hypot(u[0], u[1]), u[2]); /* hypot(h, 0) = |h| exactly (C11 F.10.4.3) */
         if (d / f->R[q] > jump) {
             jump = d / f->R[q];
             worst = q;
@@ -102,9 +105,14 @@ static double stated_accuracy(const sbc_controller *c)
     return a;
 }
 
-double sbc_ctl_largest_component(const double t[4])
+double sbc_ctl_largest_component(int dim, const double t[9])
 {
-    return fmax(fmax(fabs(t[0]), fabs(t[1])), fmax(fabs(t[2]), fabs(t[3])));
+    double m = 0.0;
+    int i, j;
+    for (i = 0; i < dim; ++i)
+        for (j = 0; j < dim; ++j)
+            m = fmax(m, fabs(t[SBC_IJ(i, j)]));
+    return m;
 }
 
 /* A row is written only when it meets what it reports against: the force
@@ -117,7 +125,7 @@ int sbc_ctl_certified(const sbc_controller *c, const sbc_snapshot *snap, sbc_err
 {
     const sbc_result *r = &c->result;
     const sbc_frame *f = c->frame;
-    const double stated = stated_accuracy(c), sigma = sbc_ctl_largest_component(r->sigma);
+    const double stated = stated_accuracy(c), sigma = sbc_ctl_largest_component(f->dim, r->sigma);
     char why[320] = "", moved[160] = "", collapse[160] = "";
     size_t used = 0;
     double worst = -1.0;
@@ -139,10 +147,12 @@ int sbc_ctl_certified(const sbc_controller *c, const sbc_snapshot *snap, sbc_err
         snprintf(collapse, sizeof collapse, "; the stress collapsed from %.4g N/m (the path's largest |sigma|) to "
                  "%.3g N/m", c->sigma_path, sigma);
     for (q = 0; q < f->n; ++q) { /* the frame particle farthest from F X, in its radii */
-        const double X = f->X[2 * q], Y = f->X[2 * q + 1];
-        const double dx = snap->x[2 * q] - (c->F_now[0] * X + c->F_now[1] * Y);
-        const double dy = snap->x[2 * q + 1] - (c->F_now[2] * X + c->F_now[3] * Y);
-        const double d = sqrt(dx * dx + dy * dy) / f->R[q];
+        double FX[3], d = 0.0;
+        int k;
+        sbc_tensor_apply(f->dim, c->F_now, &f->X[3 * q], FX);
+        for (k = 0; k < f->dim; ++k)
+            d += (snap->x[3 * q + k] - FX[k]) * (snap->x[3 * q + k] - FX[k]);
+        d = sqrt(d) / f->R[q];
         if (d > worst)
             worst = d, at = q;
     }

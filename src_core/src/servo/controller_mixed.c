@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Mixed: row i of F (F_i1, F_i2) is a result of the (T) condition, eq. 45,
+/* Mixed: row i of F (F_i1, F_i2, ...) is a result of the (T) condition, eq. 45,
  * when some edge controls component i by traction (the layer: row 2). */
 int sbc_ctl_row_measured(const sbc_controller *c, int i)
 {
@@ -26,19 +26,29 @@ int sbc_ctl_row_measured(const sbc_controller *c, int i)
  * centroid of the bottom edge's reference centres (corners included), so
  * that the support keeps its place on average while it follows F, and a
  * translated packing gives the same results. */
-static void support_centre(const sbc_controller *c, double centre[2])
+static void support_centre(const sbc_controller *c, double centre[3])
 {
     const sbc_frame *f = c->frame;
-    int q, n = 0;
-    centre[0] = centre[1] = 0.0;
+    int q, k, n = 0;
+    centre[0] = centre[1] = centre[2] = 0.0;
     for (q = 0; q < f->n; ++q)
         if (f->side[q] == SBC_SIDE_BOTTOM || q == f->corner[SBC_CORNER_BL] || q == f->corner[SBC_CORNER_BR]) {
-            centre[0] += f->X[2 * q];
-            centre[1] += f->X[2 * q + 1];
+            for (k = 0; k < f->dim; ++k)
+                centre[k] += f->X[3 * q + k];
             ++n;
         }
-    centre[0] /= n;
-    centre[1] /= n;
+    for (k = 0; k < f->dim; ++k)
+        centre[k] /= n;
+}
+
+/* F_k. v: row k of F applied to v (over j < dim) */
+static double row_dot(int dim, const double F[9], int k, const double v[3])
+{
+    double s = 0.0;
+    int j;
+    for (j = 0; j < dim; ++j)
+        s += F[SBC_IJ(k, j)] * v[j];
+    return s;
 }
 
 /* Mixed, Sect. 5.1: the D components follow F, x_q = c + F (X_q - c) (eqs. 17,
@@ -51,22 +61,31 @@ void sbc_ctl_mixed_follow_F(sbc_controller *c)
 {
     const sbc_frame *f = c->frame;
     const double *F = c->F_now;
-    double centre[2];
-    int q, k;
+    const int dim = f->dim;
+    double centre[3];
+    int q, k, j;
     support_centre(c, centre);
     for (q = 0; q < f->n; ++q) {
-        const double d0 = f->X[2 * q] - centre[0], d1 = f->X[2 * q + 1] - centre[1];
-        for (k = 0; k < 2; ++k)
-            if (c->mode[2 * q + k] == SBC_MODE_D)
-                c->x_cmd[2 * q + k] = centre[k] + F[2 * k] * d0 + F[2 * k + 1] * d1;
-        if (c->mode[2 * q] == SBC_MODE_P && (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)) {
+        double d[3] = {0.0, 0.0, 0.0};
+        for (k = 0; k < dim; ++k)
+            d[k] = f->X[3 * q + k] - centre[k];
+        for (k = 0; k < dim; ++k)
+            if (c->mode[3 * q + k] == SBC_MODE_D) {
+                double x = centre[k];
+                for (j = 0; j < dim; ++j)
+                    x += F[SBC_IJ(k, j)] * d[j];
+                c->x_cmd[3 * q + k] = x;
+            }
+        if (c->mode[3 * q] == SBC_MODE_P && (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)) {
             const int p = f->partner[q];
-            const double D0 = f->X[2 * q] - f->X[2 * p], D1 = f->X[2 * q + 1] - f->X[2 * p + 1];
-            for (k = 0; k < 2; ++k) {
-                const double mid = 0.5 * (c->x_cmd[2 * q + k] + c->x_cmd[2 * p + k]);
-                const double half = 0.5 * (F[2 * k] * D0 + F[2 * k + 1] * D1);
-                c->x_cmd[2 * q + k] = mid + half;
-                c->x_cmd[2 * p + k] = mid - half;
+            double D[3] = {0.0, 0.0, 0.0};
+            for (k = 0; k < dim; ++k)
+                D[k] = f->X[3 * q + k] - f->X[3 * p + k];
+            for (k = 0; k < dim; ++k) {
+                const double mid = 0.5 * (c->x_cmd[3 * q + k] + c->x_cmd[3 * p + k]);
+                const double half = 0.5 * row_dot(dim, F, k, D);
+                c->x_cmd[3 * q + k] = mid + half;
+                c->x_cmd[3 * p + k] = mid - half;
             }
         }
     }
@@ -82,25 +101,30 @@ void sbc_ctl_start_mixed(sbc_controller *c)
     const sbc_frame *f = c->frame;
     double *F = c->F_now;
     const double *G = c->F_prev;
-    double centre[2];
-    int q, k;
-    for (k = 0; k < 2; ++k)
-        if (sbc_ctl_row_measured(c, k)) {
-            F[2 * k] = G[2 * k];
-            F[2 * k + 1] = G[2 * k + 1];
-        }
+    const int dim = f->dim;
+    double centre[3], dF[9];
+    int q, k, j;
+    for (k = 0; k < dim; ++k)
+        if (sbc_ctl_row_measured(c, k))
+            for (j = 0; j < dim; ++j)
+                F[SBC_IJ(k, j)] = G[SBC_IJ(k, j)];
+    for (k = 0; k < 9; ++k)
+        dF[k] = F[k] - G[k];
     support_centre(c, centre);
     for (q = 0; q < f->n; ++q) {
-        const double d0 = f->X[2 * q] - centre[0], d1 = f->X[2 * q + 1] - centre[1];
-        int any_t = 0;
-        for (k = 0; k < 2; ++k) {
-            double shift = (F[2 * k] - G[2 * k]) * d0 + (F[2 * k + 1] - G[2 * k + 1]) * d1;
-            if (c->mode[2 * q + k] != SBC_MODE_D && c->increment > 0)
-                c->x_cmd[2 * q + k] = c->x_prev[2 * q + k] + shift;
-            any_t |= c->mode[2 * q + k] == SBC_MODE_T;
+        double d[3] = {0.0, 0.0, 0.0};
+        int any_t = 0, all_d = 1;
+        for (k = 0; k < dim; ++k)
+            d[k] = f->X[3 * q + k] - centre[k];
+        for (k = 0; k < dim; ++k) {
+            const double shift = row_dot(dim, dF, k, d);
+            if (c->mode[3 * q + k] != SBC_MODE_D && c->increment > 0)
+                c->x_cmd[3 * q + k] = c->x_prev[3 * q + k] + shift;
+            any_t |= c->mode[3 * q + k] == SBC_MODE_T;
+            all_d &= c->mode[3 * q + k] == SBC_MODE_D;
         }
         c->free_rot[q] = (unsigned char)any_t;
-        if (c->mode[2 * q] == SBC_MODE_D && c->mode[2 * q + 1] == SBC_MODE_D)
+        if (all_d)
             c->theta_cmd[q] = 0.0;
     }
     sbc_ctl_mixed_follow_F(c);
@@ -119,12 +143,12 @@ void sbc_ctl_mixed_stress_targets(sbc_controller *c)
 {
     double t = c->s.stress_increments > 0 ? fmin(1.0, (double)c->increment / c->s.stress_increments) : 1.0;
     int k;
-    for (k = 0; k < 4; ++k) {
+    for (k = 0; k < 9; ++k) {
         c->P_star[k] = 0.0;
         c->P_fixed[k] = 0;
     }
     for (k = 0; k < c->s.nstress; ++k) {
-        int ij = 2 * c->s.stress[k].i + c->s.stress[k].j;
+        int ij = SBC_IJ(c->s.stress[k].i, c->s.stress[k].j);
         c->P_star[ij] = t * c->s.stress[k].value;
         c->P_fixed[ij] = 1;
     }
@@ -145,9 +169,9 @@ void sbc_ctl_assign_modes(sbc_controller *c)
         int e = edge_of_side[f->side[q]];
         if (e < 0)
             e = q == f->corner[SBC_CORNER_BL] || q == f->corner[SBC_CORNER_BR] ? SBC_EDGE_BOTTOM : SBC_EDGE_TOP;
-        for (k = 0; k < 2; ++k) {
+        for (k = 0; k < f->dim; ++k) {
             unsigned char m = c->s.edge_mode[e][k];
-            c->mode[2 * q + k] = f->side[q] == SBC_SIDE_CORNER && m == SBC_MODE_P ? SBC_MODE_D : m;
+            c->mode[3 * q + k] = f->side[q] == SBC_SIDE_CORNER && m == SBC_MODE_P ? SBC_MODE_D : m;
         }
     }
 }
@@ -163,17 +187,17 @@ double sbc_ctl_mixed_lag_tol(const sbc_controller *c)
 /* Mixed: measures F (eq. 15 on the positions x) and returns the largest
  * displacement, in radii, by which the D components and the pair offsets
  * lag behind it in the measured rows; Fm receives the measured F. */
-double sbc_ctl_mixed_lag(const sbc_controller *c, const double *x, double Fm[4])
+double sbc_ctl_mixed_lag(const sbc_controller *c, const double *x, double Fm[9])
 {
     const sbc_frame *f = c->frame;
-    double centre[2], lag = 0.0;
+    double centre[3], lag = 0.0;
     int q, k;
     sbc_homogenize_F(f, x, Fm);
     support_centre(c, centre);
     for (q = 0; q < f->n; ++q)
-        for (k = 0; k < 2; ++k)
-            if (sbc_ctl_row_measured(c, k) && c->mode[2 * q + k] != SBC_MODE_T) {
-                const double d = (Fm[3 * k] - c->F_now[3 * k]) * (f->X[2 * q + k] - centre[k]);
+        for (k = 0; k < f->dim; ++k)
+            if (sbc_ctl_row_measured(c, k) && c->mode[3 * q + k] != SBC_MODE_T) {
+                const double d = (Fm[SBC_IJ(k, k)] - c->F_now[SBC_IJ(k, k)]) * (f->X[3 * q + k] - centre[k]);
                 if (fabs(d) / f->R[q] > lag)
                     lag = fabs(d) / f->R[q];
             }
@@ -185,25 +209,25 @@ double sbc_ctl_mixed_lag(const sbc_controller *c, const double *x, double Fm[4])
  * there. P_hat: eq. 23 with the traction components of the top at their
  * targets (P_star + P_shift, measured where not prescribed), which measures
  * what the support and the pairs add to P apart from the top's lag. */
-double sbc_ctl_mixed_stress_miss(sbc_controller *c, double P[4], double P_hat[4])
+double sbc_ctl_mixed_stress_miss(sbc_controller *c, double P[9], double P_hat[9])
 {
     const sbc_frame *f = c->frame;
-    double miss = 0.0, scale = 0.0, Pt[4], centre[2];
+    double miss = 0.0, scale = 0.0, Pt[9], centre[3];
     int q, k;
     support_centre(c, centre);
     sbc_homogenize_P_about(f, c->a, centre, P);
-    for (k = 0; k < 4; ++k)
+    for (k = 0; k < 9; ++k)
         Pt[k] = c->P_fixed[k] ? c->P_star[k] + c->P_shift[k] : P[k];
-    memcpy(c->a_hat, c->a, sizeof(double) * 2 * (size_t)f->n);
+    memcpy(c->a_hat, c->a, sizeof(double) * 3 * (size_t)f->n);
     for (q = 0; q < f->n; ++q)
-        for (k = 0; k < 2; ++k)
-            if (c->mode[2 * q + k] == SBC_MODE_T)
-                c->a_hat[2 * q + k] = Pt[2 * k] * f->A[2 * q] + Pt[2 * k + 1] * f->A[2 * q + 1];
+        for (k = 0; k < f->dim; ++k)
+            if (c->mode[3 * q + k] == SBC_MODE_T)
+                c->a_hat[3 * q + k] = row_dot(f->dim, Pt, k, &f->A[3 * q]);
     sbc_homogenize_P_about(f, c->a_hat, centre, P_hat);
-    for (k = 0; k < 2; ++k)
-        if (c->P_fixed[3 * k] && sbc_ctl_row_measured(c, k)) {
-            miss = fmax(miss, fabs(P[3 * k] - c->P_star[3 * k]));
-            scale = fmax(scale, fabs(c->P_star[3 * k]));
+    for (k = 0; k < f->dim; ++k)
+        if (c->P_fixed[SBC_IJ(k, k)] && sbc_ctl_row_measured(c, k)) {
+            miss = fmax(miss, fabs(P[SBC_IJ(k, k)] - c->P_star[SBC_IJ(k, k)]));
+            scale = fmax(scale, fabs(c->P_star[SBC_IJ(k, k)]));
         }
     return scale > 0.0 ? miss / scale : 0.0;
 }
@@ -212,6 +236,9 @@ double sbc_ctl_mixed_stress_miss(sbc_controller *c, double P[4], double P_hat[4]
  * reference X of stage 2 (Sect. 5.1, after eq. 44), with its A_q and V. */
 void sbc_ctl_new_reference(sbc_controller *c, const double *x)
 {
-    memcpy(c->ref.X, x, sizeof(double) * 2 * (size_t)c->ref.n);
+    int q, k;
+    for (q = 0; q < c->ref.n; ++q) /* the third slot of a 2D frame stays 0 */
+        for (k = 0; k < c->ref.dim; ++k)
+            c->ref.X[3 * q + k] = x[3 * q + k];
     sbc_frame_update_geometry(&c->ref);
 }

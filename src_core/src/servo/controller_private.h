@@ -13,17 +13,21 @@
 #include "servo.h"
 #include "tuning.h"
 
+/* parts of one frame particle's correction for the secant update: du (dim
+   components) and R dtheta (one in-plane rotation) */
+#define SBC_CTL_STEP_PARTS(dim) ((dim) + 1)
+
 struct sbc_controller {
     sbc_frame ref;       /* the controller's copy of the frame: the reference of
                             mixed stage 2 is the state after stage 1 (Sect. 5.1) */
     const sbc_frame *frame; /* = &ref */
-    unsigned char *mode; /* [2Q] mixed: sbc_mode of each component of each frame position */
-    double P_star[4];    /* mixed: prescribed stress of this increment, N/m */
-    unsigned char P_fixed[4]; /* mixed: 1 where P_star holds (prescribed, or 0 in the stress stage) */
-    double P_shift[4];   /* mixed: the top's traction targets P_star + P_shift, so that the measured
+    unsigned char *mode; /* [3Q] mixed: sbc_mode of each component of each frame position */
+    double P_star[9];    /* mixed: prescribed stress of this increment, N/m */
+    unsigned char P_fixed[9]; /* mixed: 1 where P_star holds (prescribed, or 0 in the stress stage) */
+    double P_shift[9];   /* mixed: the top's traction targets P_star + P_shift, so that the measured
                             P of eq. 23 (which the support's reactions enter) meets P_star, N/m */
     double P_miss;       /* mixed: |P measured - P_star| over |P_star| in the traction rows */
-    double *a_hat;       /* [2Q] mixed: the boundary forces with the top's traction components at their targets */
+    double *a_hat;       /* [3Q] mixed: the boundary forces with the top's traction components at their targets */
     sbc_settings s;
     double dt;           /* s */
     double kn;           /* the host's normal contact stiffness, N/m (0: unknown) */
@@ -31,18 +35,18 @@ struct sbc_controller {
     double *mass;        /* [Q] kg */
     int increment;       /* 0 .. i_tot */
     sbc_relax relax;
-    double *x_cmd;       /* [2Q] m */
+    double *x_cmd;       /* [3Q] m */
     double *theta_cmd;   /* [Q] rad */
     unsigned char *free_rot;
-    double *a;           /* [2Q] boundary forces a_q = -sum of contact forces (eq. 5), N */
+    double *a;           /* [3Q] boundary forces a_q = -sum of contact forces (eq. 5), N */
     double *m;           /* [Q] boundary moments m_q = -sum of contact moments (eq. 5), N m */
-    double *x_prev;      /* [2Q] converged positions of the previous increment (prediction), m */
-    double *du, *dtheta; /* [2Q], [Q] servo corrections, m, rad */
+    double *x_prev;      /* [3Q] converged positions of the previous increment (prediction), m */
+    double *du, *dtheta; /* [3Q], [Q] servo corrections, m, rad */
     double lambda;       /* update secant: factor on the fixed-gain corrections */
     int have_prev;       /* update secant: d_prev holds this increment's last correction */
-    double *d_prev;      /* [3Q] update secant: last fixed-gain correction (du, R dtheta), m */
-    double F_prev[4];    /* F imposed at the previous increment */
-    double F_now[4];     /* F imposed at this increment */
+    double *d_prev;      /* [SBC_CTL_STEP_PARTS(dim) Q] update secant: last fixed-gain correction (du, R dtheta), m */
+    double F_prev[9];    /* F imposed at the previous increment */
+    double F_now[9];     /* F imposed at this increment */
     int total;           /* increments of the whole path, sbc_settings_total_increments */
     int servo;           /* 0: initial relaxation of the increment, 1: servo iterations */
     int iteration;       /* servo iterations in this increment */
@@ -63,8 +67,8 @@ void sbc_ctl_start_mixed(sbc_controller *c);
 void sbc_ctl_mixed_stress_targets(sbc_controller *c);
 void sbc_ctl_assign_modes(sbc_controller *c);
 double sbc_ctl_mixed_lag_tol(const sbc_controller *c);
-double sbc_ctl_mixed_lag(const sbc_controller *c, const double *x, double Fm[4]);
-double sbc_ctl_mixed_stress_miss(sbc_controller *c, double P[4], double P_hat[4]);
+double sbc_ctl_mixed_lag(const sbc_controller *c, const double *x, double Fm[9]);
+double sbc_ctl_mixed_stress_miss(sbc_controller *c, double P[9], double P_hat[9]);
 void sbc_ctl_new_reference(sbc_controller *c, const double *x);
 
 /* controller_checks.c: refusals, failure messages and the certification of a row */
@@ -73,7 +77,7 @@ double sbc_ctl_tol_moment(const sbc_controller *c);
 int sbc_ctl_increments_too_coarse(const sbc_controller *c, sbc_error *err);
 void sbc_ctl_diverged(const sbc_controller *c, const sbc_servo_norms *n, const char *why, int too_slow, sbc_error *err);
 void sbc_ctl_stagnated(const sbc_controller *c, const sbc_servo_norms *n, sbc_error *err);
-double sbc_ctl_largest_component(const double t[4]);
+double sbc_ctl_largest_component(int dim, const double t[9]);
 int sbc_ctl_certified(const sbc_controller *c, const sbc_snapshot *snap, sbc_error *err);
 
 /* controller_update.c: the update rules (fixed, secant) and eq. 15 under (T) */

@@ -10,11 +10,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Restart layout (doubles): a head (version, Q, bc, increments, F (4),
- * dt), checked against the controller's own words, then the fields of
- * state_fields in their order; save and load both walk that one list. */
+/* Restart layout (doubles): a head (version, Q, bc, increments, F (dim x
+ * dim), dt), checked against the controller's own words, then the fields of
+ * state_fields in their order; save and load both walk that one list. A
+ * tensor is saved as its dim x dim block and a vector of each frame particle
+ * as its dim components, so a 2D state has the layout it had when the core
+ * stored 2 x 2 tensors. */
 #define STATE_VERSION 8.0
-#define STATE_HEAD 9
+#define STATE_HEAD(dim) (5 + (dim) * (dim))
 
 /* counters saved as doubles: at most 2^50, far below where a long or a
  * double stops counting steps one by one */
@@ -22,28 +25,45 @@
 
 /* One saved field: count values of one kind at `at`. Kinds: 'r' a finite
  * real, 'p' a real > 0, 'i' an int and 'l' a long in [lo, hi], 'u' an
- * unsigned char in [lo, hi], 'k' reals checked on load but kept by the
- * caller (the reference X, set after every check). */
+ * unsigned char in [lo, hi]. Shape: ' ' count values in a row, 't' a tensor
+ * (count = dim x dim of its 9 slots), 'v' one vector per frame particle
+ * (count = dim Q of its 3Q slots). */
 typedef struct state_field {
     const char *name;
     char kind;
     void *at;
     size_t count;
     long lo, hi;
+    char shape;
+    int dim;
 } state_field;
+
+/* the slot of saved value j of field f */
+static size_t slot(const state_field *f, size_t j)
+{
+    const size_t d = (size_t)f->dim;
+    if (f->shape == 't')
+        return (size_t)SBC_IJ(j / d, j % d);
+    if (f->shape == 'v')
+        return 3 * (j / d) + j % d;
+    return j;
+}
 
 #define STATE_FIELDS 80
 
 /* The controller's saved state, in the file's order; returns the number of
- * fields. */
-static int state_fields(sbc_controller *c, state_field f[STATE_FIELDS])
+ * fields. The reference X is read from and loaded into ref. */
+static int state_fields(sbc_controller *c, double *ref, state_field f[STATE_FIELDS])
 {
-    const size_t q = (size_t)c->frame->n;
+    const int dim = c->frame->dim;
+    const size_t q = (size_t)c->frame->n, d = (size_t)dim;
     sbc_result *r = &c->result;
     int n = 0;
-#define REAL(name, at, count) f[n++] = (state_field){name, 'r', at, count, 0, 0}
-#define INT(name, at, lo, hi) f[n++] = (state_field){name, 'i', at, 1, lo, hi}
-#define LONG(name, at, lo, hi) f[n++] = (state_field){name, 'l', at, 1, lo, hi}
+#define REAL(name, at, count) f[n++] = (state_field){name, 'r', at, count, 0, 0, ' ', dim}
+#define TENSOR(name, at) f[n++] = (state_field){name, 'r', at, d * d, 0, 0, 't', dim}
+#define VECTORS(name, at) f[n++] = (state_field){name, 'r', at, d * q, 0, 0, 'v', dim}
+#define INT(name, at, lo, hi) f[n++] = (state_field){name, 'i', at, 1, lo, hi, ' ', dim}
+#define LONG(name, at, lo, hi) f[n++] = (state_field){name, 'l', at, 1, lo, hi, ' ', dim}
     INT("increment", &c->increment, 0, c->total + 1L);
     INT("servo", &c->servo, 0, 1);
     INT("iteration", &c->iteration, 0, INT_MAX);
@@ -63,9 +83,9 @@ static int state_fields(sbc_controller *c, state_field f[STATE_FIELDS])
     INT("have_prev", &c->have_prev, 0, 1);
     REAL("win_min", &c->win_min, 1);
     REAL("prev_min", &c->prev_min, 1);
-    REAL("F_prev", c->F_prev, 4);
-    REAL("F_now", c->F_now, 4);
-    f[n++] = (state_field){"relaxation tol", 'p', &c->relax.tol, 1, 0, 0};
+    TENSOR("F_prev", c->F_prev);
+    TENSOR("F_now", c->F_now);
+    f[n++] = (state_field){"relaxation tol", 'p', &c->relax.tol, 1, 0, 0, ' ', dim};
     LONG("relaxation known_step", &c->relax.known_step, 0, SAVED_COUNT);
     REAL("relaxation ep_known", &c->relax.ep_known, 1);
     REAL("relaxation ek_known", &c->relax.ek_known, 1);
@@ -73,14 +93,14 @@ static int state_fields(sbc_controller *c, state_field f[STATE_FIELDS])
     REAL("relaxation unbalanced", &c->relax.unbalanced, 1);
     LONG("motion steps", &c->motion.steps, 0, SAVED_COUNT);
     LONG("motion done", &c->motion.done, 0, SAVED_COUNT);
-    REAL("P_shift", c->P_shift, 4);
+    TENSOR("P_shift", c->P_shift);
     REAL("path force", &c->relax.path_force, 1);
     REAL("path work scale", &c->work_path, 1);
     REAL("path stress", &c->sigma_path, 1);
     INT("result increment", &r->increment, 0, c->total);
-    REAL("result F", r->F, 4);
-    REAL("result P", r->P, 4);
-    REAL("result sigma", r->sigma, 4);
+    TENSOR("result F", r->F);
+    TENSOR("result P", r->P);
+    TENSOR("result sigma", r->sigma);
     REAL("result overlap_mean", &r->overlap_mean, 1);
     REAL("result rotation_mean", &r->rotation_mean, 1);
     INT("result iterations", &r->iterations, 0, INT_MAX);
@@ -91,17 +111,19 @@ static int state_fields(sbc_controller *c, state_field f[STATE_FIELDS])
     REAL("result hill_mandel", &r->hill_mandel, 1);
     REAL("result unbalanced", &r->unbalanced, 1);
     REAL("result frame_residual", &r->frame_residual, 1);
-    REAL("x_cmd", c->x_cmd, 2 * q);
+    VECTORS("x_cmd", c->x_cmd);
     REAL("theta_cmd", c->theta_cmd, q);
-    f[n++] = (state_field){"free_rot", 'u', c->free_rot, q, 0, 1};
-    REAL("x_prev", c->x_prev, 2 * q);
-    f[n++] = (state_field){"reference X", 'k', c->ref.X, 2 * q, 0, 0};
-    REAL("d_prev", c->d_prev, 3 * q);
-    REAL("motion x_from", c->motion.x_from, 2 * q);
-    REAL("motion x_goal", c->motion.x_goal, 2 * q);
+    f[n++] = (state_field){"free_rot", 'u', c->free_rot, q, 0, 1, ' ', dim};
+    VECTORS("x_prev", c->x_prev);
+    VECTORS("reference X", ref);
+    REAL("d_prev", c->d_prev, (size_t)SBC_CTL_STEP_PARTS(dim) * q);
+    VECTORS("motion x_from", c->motion.x_from);
+    VECTORS("motion x_goal", c->motion.x_goal);
     REAL("motion th_from", c->motion.th_from, q);
     REAL("motion th_goal", c->motion.th_goal, q);
 #undef REAL
+#undef TENSOR
+#undef VECTORS
 #undef INT
 #undef LONG
     return n;
@@ -110,8 +132,8 @@ static int state_fields(sbc_controller *c, state_field f[STATE_FIELDS])
 size_t sbc_controller_state_size(const sbc_controller *c)
 {
     state_field f[STATE_FIELDS];
-    const int n = state_fields((sbc_controller *)c, f); /* read only */
-    size_t size = STATE_HEAD;
+    const int n = state_fields((sbc_controller *)c, c->ref.X, f); /* read only */
+    size_t size = STATE_HEAD(c->frame->dim);
     int k;
     for (k = 0; k < n; ++k)
         size += f[k].count;
@@ -121,54 +143,88 @@ size_t sbc_controller_state_size(const sbc_controller *c)
 void sbc_controller_save(const sbc_controller *c, double *o)
 {
     state_field f[STATE_FIELDS];
-    const int n = state_fields((sbc_controller *)c, f); /* read only */
+    const int n = state_fields((sbc_controller *)c, c->ref.X, f); /* read only */
+    const int dim = c->frame->dim;
     int k;
     size_t j;
     *o++ = STATE_VERSION;
     *o++ = c->frame->n;
     *o++ = c->s.bc;
     *o++ = c->s.increments;
-    for (k = 0; k < 4; ++k) *o++ = c->s.F[k];
+    for (k = 0; k < dim * dim; ++k) *o++ = c->s.F[SBC_IJ(k / dim, k % dim)];
     *o++ = c->dt;
     for (k = 0; k < n; ++k)
         for (j = 0; j < f[k].count; ++j) {
-            if (f[k].kind == 'i') *o++ = ((const int *)f[k].at)[j];
-            else if (f[k].kind == 'l') *o++ = (double)((const long *)f[k].at)[j];
-            else if (f[k].kind == 'u') *o++ = ((const unsigned char *)f[k].at)[j];
-            else *o++ = ((const double *)f[k].at)[j];
+            const size_t at = slot(&f[k], j);
+            if (f[k].kind == 'i') *o++ = ((const int *)f[k].at)[at];
+            else if (f[k].kind == 'l') *o++ = (double)((const long *)f[k].at)[at];
+            else if (f[k].kind == 'u') *o++ = ((const unsigned char *)f[k].at)[at];
+            else *o++ = ((const double *)f[k].at)[at];
         }
 }
 
-/* Reads the fields f [n] from rd; the kept ones ('k') are left where they
- * are (in rd's input). */
+/* Reads the fields f [n] from rd. */
 static void load_fields(const state_field *f, int n, sbc_saved *rd)
 {
     int k;
     size_t j;
     for (k = 0; k < n; ++k)
         for (j = 0; j < f[k].count; ++j) {
-            if (f[k].kind == 'i') ((int *)f[k].at)[j] = (int)sbc_saved_int(rd, f[k].name, f[k].lo, f[k].hi);
-            else if (f[k].kind == 'l') ((long *)f[k].at)[j] = sbc_saved_int(rd, f[k].name, f[k].lo, f[k].hi);
+            const size_t at = slot(&f[k], j);
+            if (f[k].kind == 'i') ((int *)f[k].at)[at] = (int)sbc_saved_int(rd, f[k].name, f[k].lo, f[k].hi);
+            else if (f[k].kind == 'l') ((long *)f[k].at)[at] = sbc_saved_int(rd, f[k].name, f[k].lo, f[k].hi);
             else if (f[k].kind == 'u')
-                ((unsigned char *)f[k].at)[j] = (unsigned char)sbc_saved_int(rd, f[k].name, f[k].lo, f[k].hi);
-            else if (f[k].kind == 'p') ((double *)f[k].at)[j] = sbc_saved_positive(rd, f[k].name);
-            else if (f[k].kind == 'k') (void)sbc_saved_real(rd, f[k].name);
-            else ((double *)f[k].at)[j] = sbc_saved_real(rd, f[k].name);
+                ((unsigned char *)f[k].at)[at] = (unsigned char)sbc_saved_int(rd, f[k].name, f[k].lo, f[k].hi);
+            else if (f[k].kind == 'p') ((double *)f[k].at)[at] = sbc_saved_positive(rd, f[k].name);
+            else ((double *)f[k].at)[at] = sbc_saved_real(rd, f[k].name);
         }
+}
+
+/* What the fields cannot check one by one: the travel's progress, the
+ * secant factor and det F, and every saved position within ten frame sizes
+ * of the frame's place at creation. */
+static sbc_status check_loaded(const sbc_controller *c, const double *ref, sbc_error *err)
+{
+    const char *what = "servo_bc restart state";
+    const sbc_frame *f = c->frame;
+    const double *sets[5] = {c->x_cmd, c->x_prev, ref, c->motion.x_from, c->motion.x_goal};
+    double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX}, hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX}, reach = 0.0;
+    const double det = sbc_tensor_det(f->dim, c->F_now);
+    int k, d, m;
+    if (c->motion.done > c->motion.steps)
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: the frame's travel has done %ld of %ld steps", what, c->motion.done,
+                        c->motion.steps);
+    if (!(c->lambda > 0.0) || !(det > 0.0))
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: secant factor %g or det F %g is not > 0", what, c->lambda, det);
+    for (k = 0; k < f->n; ++k)
+        for (d = 0; d < f->dim; ++d) {
+            lo[d] = fmin(lo[d], f->X[3 * k + d]);
+            hi[d] = fmax(hi[d], f->X[3 * k + d]);
+        }
+    for (d = 0; d < f->dim; ++d)
+        reach = fmax(reach, 10.0 * (hi[d] - lo[d]));
+    for (m = 0; m < 5; ++m)
+        for (k = 0; k < f->n; ++k)
+            for (d = 0; d < f->dim; ++d)
+                if (fabs(sets[m][3 * k + d] - 0.5 * (lo[d] + hi[d])) > reach)
+                    return sbc_fail(err, SBC_ERR_INPUT, "%s: a saved frame position, %.17g m, lies more than ten "
+                                    "frame sizes (%g m) from the frame", what, sets[m][3 * k + d], reach);
+    return SBC_OK;
 }
 
 sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err)
 {
-    static const char *names[4] = {"F11", "F12", "F21", "F22"};
     const char *what = "servo_bc restart state";
+    const int dim = c->frame->dim, head = STATE_HEAD(dim);
     int k, q = c->frame->n;
     long saved_q, saved_bc, saved_increments;
-    const double *ref;
+    double *ref;
     sbc_saved rd;
-    if (n < STATE_HEAD || in[0] != STATE_VERSION)
+    sbc_status st;
+    if (n < (size_t)head || in[0] != STATE_VERSION)
         return sbc_fail(err, SBC_ERR_INPUT, "restart: the saved servo_bc state (version %g, %zu values) is not this "
                         "version's (%g)", n > 0 ? in[0] : 0.0, n, STATE_VERSION);
-    sbc_saved_start(&rd, in + 1, STATE_HEAD - 1, what, err);
+    sbc_saved_start(&rd, in + 1, (size_t)head - 1, what, err);
     saved_q = sbc_saved_int(&rd, "frame particles", 0, INT_MAX);
     saved_bc = sbc_saved_int(&rd, "boundary condition", SBC_BC_D, SBC_BC_MIXED);
     saved_increments = sbc_saved_int(&rd, "increments", 1, INT_MAX);
@@ -185,55 +241,34 @@ sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sb
     if (saved_increments != c->s.increments)
         return sbc_fail(err, SBC_ERR_INPUT, "restart: keyword 'increments': %d contradicts the saved %ld",
                         c->s.increments, saved_increments);
-    for (k = 0; k < 4; ++k)
-        if (in[4 + k] != c->s.F[k])
-            return sbc_fail(err, SBC_ERR_INPUT, "restart: keyword 'F': %s = %.17g contradicts the saved %.17g", names[k],
-                            c->s.F[k], in[4 + k]);
+    for (k = 0; k < dim * dim; ++k) {
+        const int i = k / dim, j = k % dim;
+        char name[8];
+        if (in[4 + k] != c->s.F[SBC_IJ(i, j)])
+            return sbc_fail(err, SBC_ERR_INPUT, "restart: keyword 'F': %s = %.17g contradicts the saved %.17g",
+                            sbc_tensor_component_name("F", i, j, name), c->s.F[SBC_IJ(i, j)], in[4 + k]);
+    }
     /* the gains scale with dt^2 (eq. 37): a host that forgets the time step
        across a restart (LIGGGHTS 3.8 does) would servo with other gains */
-    if (in[8] != c->dt)
+    if (in[head - 1] != c->dt)
         return sbc_fail(err, SBC_ERR_INPUT, "restart: time step %.17g s contradicts the saved %.17g s (set the time "
-                        "step before the fix)", c->dt, in[8]);
-    sbc_saved_start(&rd, in + STATE_HEAD, n - STATE_HEAD, what, err);
+                        "step before the fix)", c->dt, in[head - 1]);
+    /* the reference X: checked with the rest, set after every check */
+    if (!(ref = calloc(3 * (size_t)q, sizeof(double))))
+        return sbc_fail(err, SBC_ERR_NOMEM, "%s: out of memory", what);
+    sbc_saved_start(&rd, in + head, n - (size_t)head, what, err);
     c->relax.criterion = c->s.criterion;
     c->relax.window = c->s.window;
     {
-        /* the reference X: checked with the rest, set after every check */
         state_field f[STATE_FIELDS];
-        const int nf = state_fields(c, f);
-        size_t before = 0;
-        for (k = 0; k < nf && f[k].kind != 'k'; ++k)
-            before += f[k].count;
-        ref = in + STATE_HEAD + before;
-        load_fields(f, nf, &rd);
+        load_fields(f, state_fields(c, ref, f), &rd);
     }
-    if (rd.st != SBC_OK)
-        return rd.st;
-    if (c->motion.done > c->motion.steps)
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: the frame's travel has done %ld of %ld steps", what, c->motion.done,
-                        c->motion.steps);
-    if (!(c->lambda > 0.0) || !(c->F_now[0] * c->F_now[3] - c->F_now[1] * c->F_now[2] > 0.0))
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: secant factor %g or det F %g is not > 0", what, c->lambda,
-                        c->F_now[0] * c->F_now[3] - c->F_now[1] * c->F_now[2]);
-    {
-        /* every saved position within ten frame sizes of the frame's place at creation */
-        const double *sets[5] = {c->x_cmd, c->x_prev, ref, c->motion.x_from, c->motion.x_goal};
-        double lo[2] = {DBL_MAX, DBL_MAX}, hi[2] = {-DBL_MAX, -DBL_MAX}, reach;
-        int d, m;
-        for (k = 0; k < q; ++k)
-            for (d = 0; d < 2; ++d) {
-                lo[d] = fmin(lo[d], c->frame->X[2 * k + d]);
-                hi[d] = fmax(hi[d], c->frame->X[2 * k + d]);
-            }
-        reach = 10.0 * fmax(hi[0] - lo[0], hi[1] - lo[1]);
-        for (m = 0; m < 5; ++m)
-            for (k = 0; k < 2 * q; ++k)
-                if (fabs(sets[m][k] - 0.5 * (lo[k % 2] + hi[k % 2])) > reach)
-                    return sbc_fail(err, SBC_ERR_INPUT, "%s: a saved frame position, %.17g m, lies more than ten "
-                                    "frame sizes (%g m) from the frame", what, sets[m][k], reach);
+    st = rd.st != SBC_OK ? rd.st : check_loaded(c, ref, err);
+    if (st == SBC_OK) {
+        sbc_ctl_new_reference(c, ref);
+        if (c->s.bc == SBC_BC_MIXED)
+            sbc_ctl_mixed_stress_targets(c);
     }
-    sbc_ctl_new_reference(c, ref);
-    if (c->s.bc == SBC_BC_MIXED)
-        sbc_ctl_mixed_stress_targets(c);
-    return SBC_OK;
+    free(ref);
+    return st;
 }

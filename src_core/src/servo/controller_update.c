@@ -22,33 +22,34 @@
 void sbc_ctl_restore_eq15(sbc_controller *c)
 {
     const sbc_frame *f = c->frame;
+    const int dim = f->dim;
     const double *F = c->F_now;
-    double S[4] = {0.0, 0.0, 0.0, 0.0}, G[4] = {0.0, 0.0, 0.0, 0.0}, X[4] = {0.0, 0.0, 0.0, 0.0}, M[4], Si[4], det;
-    int q, i, j;
+    double S[9] = {0.0}, G[9] = {0.0}, X[9] = {0.0}, M[9] = {0.0}, Si[9];
+    int q, i, j, k;
     for (q = 0; q < f->n; ++q) {
-        const double *A = &f->A[2 * q];
-        for (i = 0; i < 2; ++i)
-            for (j = 0; j < 2; ++j) {
-                S[2 * i + j] += A[i] * A[j];
-                G[2 * i + j] += f->X[2 * q + i] * A[j];
-                X[2 * i + j] += c->x_cmd[2 * q + i] * A[j];
+        const double *A = &f->A[3 * q];
+        for (i = 0; i < dim; ++i)
+            for (j = 0; j < dim; ++j) {
+                S[SBC_IJ(i, j)] += A[i] * A[j];
+                G[SBC_IJ(i, j)] += f->X[3 * q + i] * A[j];
+                X[SBC_IJ(i, j)] += c->x_cmd[3 * q + i] * A[j];
             }
     }
-    det = sbc_det2(S);
-    if (!(fabs(det) > 0.0))
+    if (!sbc_tensor_inverse(dim, S, Si))
         return;
-    Si[0] = S[3] / det;
-    Si[1] = -S[1] / det;
-    Si[2] = -S[2] / det;
-    Si[3] = S[0] / det;
-    for (i = 0; i < 2; ++i)
-        for (j = 0; j < 2; ++j)
-            M[2 * i + j] = F[2 * i] * G[j] + F[2 * i + 1] * G[2 + j] - X[2 * i + j];
+    for (i = 0; i < dim; ++i)
+        for (j = 0; j < dim; ++j) {
+            double FG = 0.0;
+            for (k = 0; k < dim; ++k)
+                FG += F[SBC_IJ(i, k)] * G[SBC_IJ(k, j)];
+            M[SBC_IJ(i, j)] = FG - X[SBC_IJ(i, j)];
+        }
     for (q = 0; q < f->n; ++q) {
-        const double *A = &f->A[2 * q];
-        const double b0 = Si[0] * A[0] + Si[1] * A[1], b1 = Si[2] * A[0] + Si[3] * A[1];
-        c->x_cmd[2 * q] += M[0] * b0 + M[1] * b1;
-        c->x_cmd[2 * q + 1] += M[2] * b0 + M[3] * b1;
+        double b[3], shift[3];
+        sbc_tensor_apply(dim, Si, &f->A[3 * q], b);
+        sbc_tensor_apply(dim, M, b, shift);
+        for (k = 0; k < dim; ++k)
+            c->x_cmd[3 * q + k] += shift[k];
     }
 }
 
@@ -66,16 +67,22 @@ void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n)
 {
     const sbc_frame *f = c->frame;
     double dd = 0.0, dy = 0.0, yy = 0.0, lam = c->lambda, cap = DBL_MAX;
+    const int nd = SBC_CTL_STEP_PARTS(f->dim);
     int q, k;
     for (q = 0; q < f->n; ++q) {
-        double d[3] = {c->du[2 * q], c->du[2 * q + 1], f->R[q] * c->dtheta[q]};
-        double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        for (k = 0; k < 3; ++k) {
-            double y = c->d_prev[3 * q + k] - d[k];
+        double d[SBC_DIM_MAX + 1], len = 0.0, *prev = &c->d_prev[nd * q];
+        for (k = 0; k < f->dim; ++k)
+            d[k] = c->du[3 * q + k];
+        d[f->dim] = f->R[q] * c->dtheta[q];
+        for (k = 0; k < nd; ++k)
+            len += d[k] * d[k];
+        len = sqrt(len);
+        for (k = 0; k < nd; ++k) {
+            double y = prev[k] - d[k];
             dd += d[k] * d[k];
-            dy += c->d_prev[3 * q + k] * y;
+            dy += prev[k] * y;
             yy += y * y;
-            c->d_prev[3 * q + k] = d[k];
+            prev[k] = d[k];
         }
         if (len > 0.0 && SECANT_MAX_STEP * f->R[q] / len < cap)
             cap = SECANT_MAX_STEP * f->R[q] / len;
@@ -90,7 +97,7 @@ void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n)
         lam = c->lambda; /* no correction to scale; the factor stays */
     }
     c->have_prev = 1;
-    for (k = 0; k < 2 * f->n; ++k)
+    for (k = 0; k < 3 * f->n; ++k)
         c->du[k] *= lam;
     for (k = 0; k < f->n; ++k)
         c->dtheta[k] *= lam;

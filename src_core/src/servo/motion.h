@@ -14,8 +14,8 @@
 #include "sbc/frame.h"
 
 typedef struct sbc_motion {
-    double *x_from, *th_from; /* [2Q], [Q] commands before the move, m, rad */
-    double *x_goal, *th_goal; /* [2Q], [Q] commands after it */
+    double *x_from, *th_from; /* [3Q], [Q] commands before the move, m, rad */
+    double *x_goal, *th_goal; /* [3Q], [Q] commands after it */
     long steps;               /* time steps the move takes (>= 1) */
     long done;                /* ... of which taken */
 } sbc_motion;

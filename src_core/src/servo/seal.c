@@ -11,7 +11,7 @@ sbc_status sbc_seal_init(sbc_seal *s, const sbc_frame *f, double reach, sbc_erro
     int q;
     memset(s, 0, sizeof *s);
     for (q = 0; q < f->n; ++q) {
-        const double *a = &f->X[2 * q], *b = &f->X[2 * ((q + 1) % f->n)];
+        const double *a = &f->X[3 * q], *b = &f->X[3 * ((q + 1) % f->n)];
         area2 += a[0] * b[1] - a[1] * b[0];
     }
     if (f->n < 3 || !(fabs(area2) > 0.0) || !(reach > 0.0) || !isfinite(reach))
@@ -19,7 +19,7 @@ sbc_status sbc_seal_init(sbc_seal *s, const sbc_frame *f, double reach, sbc_erro
     s->inward = area2 > 0.0 ? 1.0 : -1.0;
     s->reach = reach;
     s->tracked = -1;
-    s->fx_built = malloc(sizeof(double) * 2 * (size_t)f->n);
+    s->fx_built = malloc(sizeof(double) * 3 * (size_t)f->n);
     if (!s->fx_built)
         return sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: seal: out of memory");
     return SBC_OK;
@@ -86,12 +86,12 @@ static sbc_status collect(sbc_seal *s, const sbc_frame *f, const double *fx, con
             double t, sd;
             if (own >= 0 && (q == own || (q + 1) % f->n == own))
                 continue;
-            if (segment(s, &fx[2 * q], &fx[2 * ((q + 1) % f->n)], x, &t, &sd) < p->r[k] + s->reach &&
+            if (segment(s, &fx[3 * q], &fx[3 * ((q + 1) % f->n)], x, &t, &sd) < p->r[k] + s->reach &&
                 !add(s, k, q))
                 return sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: seal: out of memory");
         }
     }
-    memcpy(s->fx_built, fx, sizeof(double) * 2 * (size_t)f->n);
+    memcpy(s->fx_built, fx, sizeof(double) * 3 * (size_t)f->n);
     s->tracked = p->n;
     return SBC_OK;
 }
@@ -104,7 +104,7 @@ static int moved(const sbc_seal *s, const sbc_frame *f, const double *fx, const 
     if (s->tracked != p->n)
         return 1;
     for (k = 0; k < f->n; ++k) {
-        const double dx = fx[2 * k] - s->fx_built[2 * k], dy = fx[2 * k + 1] - s->fx_built[2 * k + 1];
+        const double dx = fx[3 * k] - s->fx_built[3 * k], dy = fx[3 * k + 1] - s->fx_built[3 * k + 1];
         if (dx * dx + dy * dy > lim)
             return 1;
     }
@@ -131,7 +131,7 @@ sbc_status sbc_seal_forces(sbc_seal *s, const sbc_frame *f, const double *fx, co
     }
     for (c = 0; c < s->count; ++c) {
         const int k = s->particle[c], q = s->edge[c], q1 = (q + 1) % f->n;
-        const double *a = &fx[2 * q], *b = &fx[2 * q1], *x = &p->x[(size_t)p->stride * (size_t)k];
+        const double *a = &fx[3 * q], *b = &fx[3 * q1], *x = &p->x[(size_t)p->stride * (size_t)k];
         double t, sd, len, nx, ny, fn, *fk;
         segment(s, a, b, x, &t, &sd);
         if (!(t > 0.0 && t < 1.0) || sd >= SBC_SEAL_WALL * p->r[k])
@@ -145,10 +145,10 @@ sbc_status sbc_seal_forces(sbc_seal *s, const sbc_frame *f, const double *fx, co
         fk[0] += fn * nx;
         fk[1] += fn * ny;
         if (reaction) {
-            reaction[2 * q] -= (1.0 - t) * fn * nx;
-            reaction[2 * q + 1] -= (1.0 - t) * fn * ny;
-            reaction[2 * q1] -= t * fn * nx;
-            reaction[2 * q1 + 1] -= t * fn * ny;
+            reaction[3 * q] -= (1.0 - t) * fn * nx;
+            reaction[3 * q + 1] -= (1.0 - t) * fn * ny;
+            reaction[3 * q1] -= t * fn * nx;
+            reaction[3 * q1 + 1] -= t * fn * ny;
         }
         e += 0.5 * fn * (SBC_SEAL_WALL * p->r[k] - sd); /* J */
         s->contacts++;

@@ -73,9 +73,29 @@ static double gain_moment(const sbc_settings *s, const raw_sums *w, double dt, d
     return physical(s, w) ? 0.25 / (w->kn * R * R) : s->gain_moment * dt * dt / (M * R * R);
 }
 
-static void add_scale(raw_sums *w, const double *a, double R)
+/* |v|^2 over the first dim components */
+static double norm2(int dim, const double *v)
 {
-    double a2 = a[0] * a[0] + a[1] * a[1];
+    double s = 0.0;
+    int k;
+    for (k = 0; k < dim; ++k)
+        s += v[k] * v[k];
+    return s;
+}
+
+/* row i of T dotted with v: sum_j T_ij v_j, j < dim */
+static double row_dot(int dim, const double T[9], int i, const double *v)
+{
+    double s = 0.0;
+    int j;
+    for (j = 0; j < dim; ++j)
+        s += T[SBC_IJ(i, j)] * v[j];
+    return s;
+}
+
+static void add_scale(raw_sums *w, int dim, const double *a, double R)
+{
+    double a2 = norm2(dim, a);
     w->fs += a2;
     w->ms += a2 * R * R;
     w->fs_lo += w->floor * w->floor;
@@ -115,18 +135,23 @@ static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const doubl
     double M = 0.5 * (mass[q] + mass[p]), R = 0.5 * (f->R[q] + f->R[p]);
     double at = M * R / (dt * dt);     /* a~ of eq. 37, N */
     double mt = M * R * R / (dt * dt); /* m~ of eq. 37, N m */
-    double da0 = a[2 * q] + a[2 * p], da1 = a[2 * q + 1] + a[2 * p + 1], dm = m[q] + m[p];
-    double ga = gain_force(s, w, dt, M, 0.25), gm = gain_moment(s, w, dt, M, R);
-    double u0 = -ga * da0, u1 = -ga * da1, step;
-    *sf += (da0 * da0 + da1 * da1) / (at * at);
+    const int dim = f->dim;
+    double da[3] = {0.0, 0.0, 0.0}, u[3] = {0.0, 0.0, 0.0}, dm = m[q] + m[p];
+    double ga = gain_force(s, w, dt, M, 0.25), gm = gain_moment(s, w, dt, M, R), step;
+    int k;
+    for (k = 0; k < dim; ++k) {
+        da[k] = a[3 * q + k] + a[3 * p + k];
+        u[k] = -ga * da[k];
+    }
+    *sf += norm2(dim, da) / (at * at);
     *sm += dm * dm / (mt * mt);
-    add_residual(w, da0 * da0 + da1 * da1, R, 1, dm);
-    add_scale(w, &a[2 * q], f->R[q]);
-    add_scale(w, &a[2 * p], f->R[p]);
-    du[2 * q] = du[2 * p] = u0;
-    du[2 * q + 1] = du[2 * p + 1] = u1;
+    add_residual(w, norm2(dim, da), R, 1, dm);
+    add_scale(w, dim, &a[3 * q], f->R[q]);
+    add_scale(w, dim, &a[3 * p], f->R[p]);
+    for (k = 0; k < SBC_DIM_MAX; ++k)
+        du[3 * q + k] = du[3 * p + k] = u[k];
     dtheta[q] = dtheta[p] = -gm * dm;
-    step = sqrt(u0 * u0 + u1 * u1) / R;
+    step = sqrt(norm2(dim, u)) / R;
     if (step > o->max_step) o->max_step = step;
     step = fabs(gm * dm); /* rotation step in rad = arc length / R */
     if (step > o->max_step) o->max_step = step;
@@ -146,7 +171,7 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
         dmc += m[qc];
         mc += 0.25 * mass[qc];
         rc += 0.25 * f->R[qc];
-        add_scale(&w, &a[2 * qc], f->R[qc]);
+        add_scale(&w, f->dim, &a[3 * qc], f->R[qc]);
     }
     w.mr += dmc * dmc;
     w.mr_lo += w.roundoff * w.roundoff * rc * rc;
@@ -156,7 +181,7 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
         sm += dmc * dmc / (mt * mt);
         for (c = 0; c < 4; ++c) {
             int qc = f->corner[c];
-            du[2 * qc] = du[2 * qc + 1] = 0.0; /* corners follow F (eq. 17) */
+            du[3 * qc] = du[3 * qc + 1] = du[3 * qc + 2] = 0.0; /* corners follow F (eq. 17) */
             dtheta[qc] = -gm * dmc;
         }
         if (fabs(gm * dmc) > o->max_step) o->max_step = fabs(gm * dmc);
@@ -178,50 +203,52 @@ static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const doub
  * eq. 37: a~ = M R / dt^2, F~ = R^3. O(Q^2) for the sum over r; the frame
  * is O(sqrt N) particles, so this stays far below the cost of a DEM step. */
 static void servo_traction(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double kn, const sbc_servo_floors *floors,
-                           const double F[4], const double *a, const double *x, double *du, double *dtheta,
+                           const double F[9], const double *a, const double *x, double *du, double *dtheta,
                            sbc_servo_norms *o)
 {
-    double P[4], sf = 0.0, sd = 0.0;
+    const int dim = f->dim;
+    double P[9], sf = 0.0, sd = 0.0;
     raw_sums w = no_sums(kn, floors);
-    int q, r;
+    int q, r, i, j;
     /* eq. 23 */
-    for (q = 0; q < 4; ++q)
+    for (q = 0; q < 9; ++q)
         P[q] = 0.0;
-    for (q = 0; q < f->n; ++q) {
-        P[0] += a[2 * q] * f->X[2 * q];
-        P[1] += a[2 * q] * f->X[2 * q + 1];
-        P[2] += a[2 * q + 1] * f->X[2 * q];
-        P[3] += a[2 * q + 1] * f->X[2 * q + 1];
-    }
-    for (q = 0; q < 4; ++q)
+    for (q = 0; q < f->n; ++q)
+        for (i = 0; i < dim; ++i)
+            for (j = 0; j < dim; ++j)
+                P[SBC_IJ(i, j)] += a[3 * q + i] * f->X[3 * q + j];
+    for (q = 0; q < 9; ++q)
         P[q] /= f->V;
     for (q = 0; q < f->n; ++q) {
-        const double *A = &f->A[2 * q];
+        const double *A = &f->A[3 * q];
         double M = mass[q], R = f->R[q];
         double at = M * R / (dt * dt), Ft = R * R * R;
-        double da0 = P[0] * A[0] + P[1] * A[1] - a[2 * q];
-        double da1 = P[2] * A[0] + P[3] * A[1] - a[2 * q + 1];
-        double dF0 = f->V * (F[0] * A[0] + F[1] * A[1]), dF1 = f->V * (F[2] * A[0] + F[3] * A[1]);
+        double da[3] = {0.0, 0.0, 0.0}, dF[3] = {0.0, 0.0, 0.0}, t[3] = {0.0, 0.0, 0.0}, u[3] = {0.0, 0.0, 0.0};
+        for (i = 0; i < dim; ++i) {
+            t[i] = row_dot(dim, P, i, A);
+            da[i] = t[i] - a[3 * q + i];
+            dF[i] = f->V * row_dot(dim, F, i, A);
+        }
         for (r = 0; r < f->n; ++r) {
-            double w = A[0] * f->A[2 * r] + A[1] * f->A[2 * r + 1];
-            dF0 -= w * x[2 * r];
-            dF1 -= w * x[2 * r + 1];
+            double w = 0.0;
+            for (j = 0; j < dim; ++j)
+                w += A[j] * f->A[3 * r + j];
+            for (i = 0; i < dim; ++i)
+                dF[i] -= w * x[3 * r + i];
         }
-        sf += (da0 * da0 + da1 * da1) / (at * at);
-        sd += (dF0 * dF0 + dF1 * dF1) / (Ft * Ft);
-        add_residual(&w, da0 * da0 + da1 * da1, R, 0, 0.0);
-        add_scale(&w, &a[2 * q], R);
+        sf += norm2(dim, da) / (at * at);
+        sd += norm2(dim, dF) / (Ft * Ft);
+        add_residual(&w, norm2(dim, da), R, 0, 0.0);
+        add_scale(&w, dim, &a[3 * q], R);
+        add_scale(&w, dim, t, R);
         {
-            const double t[2] = {P[0] * A[0] + P[1] * A[1], P[2] * A[0] + P[3] * A[1]};
-            add_scale(&w, t, R);
-        }
-        {
-            double ga = gain_force(s, &w, dt, M, 0.5), gF = s->gain_deformation / (R * R);
-            double u0 = ga * da0 + gF * dF0, u1 = ga * da1 + gF * dF1, step;
-            du[2 * q] = u0;
-            du[2 * q + 1] = u1;
+            double ga = gain_force(s, &w, dt, M, 0.5), gF = s->gain_deformation / (R * R), step;
+            for (i = 0; i < dim; ++i)
+                u[i] = ga * da[i] + gF * dF[i];
+            for (i = 0; i < SBC_DIM_MAX; ++i)
+                du[3 * q + i] = u[i];
             dtheta[q] = 0.0; /* free rotation */
-            step = sqrt(u0 * u0 + u1 * u1) / R;
+            step = sqrt(norm2(dim, u)) / R;
             if (step > o->max_step) o->max_step = step;
         }
     }
@@ -232,7 +259,7 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
 }
 
 void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                         double kn, const sbc_servo_floors *floors, const double F[4], const double *a, const double *m, const double *x,
+                         double kn, const sbc_servo_floors *floors, const double F[9], const double *a, const double *m, const double *x,
                          double *du, double *dtheta, sbc_servo_norms *out)
 {
     out->max_step = 0.0;
@@ -242,7 +269,7 @@ void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, c
         servo_traction(f, s, mass, dt, kn, floors, F, a, x, du, dtheta, out);
 }
 
-/* Mixed, Table 5 with the modes as data (mode[2q + c] = sbc_mode):
+/* Mixed, Table 5 with the modes as data (mode[3q + c] = sbc_mode):
  *  - P pairs: eqs. 32-34 as in (P), each pair once;
  *  - T components: da_q,c = P_cj A_q,j - a_q,c and du_q,c = g_a da_q,c (eq. 48),
  *    P_cj prescribed where P_fixed, otherwise measured by eq. 23;
@@ -251,39 +278,39 @@ void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, c
  * r_force gathers the force residuals of P pairs and T components (r_a^p and
  * r_a^t of Table 5, one tolerance); r_moment those of the P pairs. */
 void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_settings *s, const double *mass,
-                     double dt, double kn, const sbc_servo_floors *floors, const double P_star[4], const unsigned char P_fixed[4],
+                     double dt, double kn, const sbc_servo_floors *floors, const double P_star[9], const unsigned char P_fixed[9],
                      const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
-    double P[4] = {0.0, 0.0, 0.0, 0.0}, sf = 0.0, sm = 0.0;
+    double P[9] = {0.0}, sf = 0.0, sm = 0.0;
     raw_sums w = no_sums(kn, floors);
     int q, k;
     o->max_step = 0.0;
     sbc_homogenize_P(f, a, P); /* eq. 23 */
-    for (k = 0; k < 4; ++k)
+    for (k = 0; k < 9; ++k)
         if (P_fixed[k])
             P[k] = P_star[k];
     for (q = 0; q < f->n; ++q) {
-        du[2 * q] = du[2 * q + 1] = dtheta[q] = 0.0;
+        du[3 * q] = du[3 * q + 1] = du[3 * q + 2] = dtheta[q] = 0.0;
     }
     for (q = 0; q < f->n; ++q) {
-        const double *A = &f->A[2 * q];
+        const double *A = &f->A[3 * q];
         double R = f->R[q], at = mass[q] * R / (dt * dt), ga = gain_force(s, &w, dt, mass[q], 0.5);
         int c;
-        if (mode[2 * q] == SBC_MODE_P) {
+        if (mode[3 * q] == SBC_MODE_P) {
             if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)
                 periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, &w, o);
             continue;
         }
-        for (c = 0; c < 2; ++c) {
+        for (c = 0; c < f->dim; ++c) {
             double da, step;
-            if (mode[2 * q + c] != SBC_MODE_T)
+            if (mode[3 * q + c] != SBC_MODE_T)
                 continue;
-            da = P[2 * c] * A[0] + P[2 * c + 1] * A[1] - a[2 * q + c];
+            da = row_dot(f->dim, P, c, A) - a[3 * q + c];
             sf += da * da / (at * at);
             add_residual(&w, da * da, R, 0, 0.0);
-            w.fs += a[2 * q + c] * a[2 * q + c] + (da + a[2 * q + c]) * (da + a[2 * q + c]); /* measured and target */
+            w.fs += a[3 * q + c] * a[3 * q + c] + (da + a[3 * q + c]) * (da + a[3 * q + c]); /* measured and target */
             w.fs_lo += 2.0 * w.floor * w.floor;
-            du[2 * q + c] = ga * da;
+            du[3 * q + c] = ga * da;
             step = fabs(ga * da) / R;
             if (step > o->max_step) o->max_step = step;
         }

@@ -25,20 +25,20 @@ typedef struct sbc_servo_floors {
     double roundoff;
 } sbc_servo_floors;
 
-/* Residual norms of the state (a [2Q] boundary forces, m [Q] boundary
- * moments, x [2Q] positions) and the corrections (eqs. 33-34 for P, 36 for
- * T) written to du [2Q] (m) and dtheta [Q] (rad). F is the imposed
+/* Residual norms of the state (a [3Q] boundary forces, m [Q] boundary
+ * moments, x [3Q] positions) and the corrections (eqs. 33-34 for P, 36 for
+ * T) written to du [3Q] (m) and dtheta [Q] (rad). F is the imposed
  * macroscopic deformation gradient, mass [Q] in kg, dt in s; kn (N/m) the
  * host's contact stiffness (0: unknown), for the secant update's gains; floors:
  * those of the relative norms. */
 void sbc_servo_residuals(sbc_bc bc, const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
-                         double kn, const sbc_servo_floors *floors, const double F[4], const double *a, const double *m, const double *x,
+                         double kn, const sbc_servo_floors *floors, const double F[9], const double *a, const double *m, const double *x,
                          double *du, double *dtheta, sbc_servo_norms *out);
 
 /* Mixed (D)-(P)-(T), Table 5 and eq. 48, with the modes per frame component
- * (mode [2Q], sbc_mode) and the stress targets P_star where P_fixed. */
+ * (mode [3Q], sbc_mode) and the stress targets P_star where P_fixed. */
 void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_settings *s, const double *mass,
-                     double dt, double kn, const sbc_servo_floors *floors, const double P_star[4], const unsigned char P_fixed[4],
+                     double dt, double kn, const sbc_servo_floors *floors, const double P_star[9], const unsigned char P_fixed[9],
                      const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o);
 
 #endif

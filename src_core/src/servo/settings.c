@@ -15,7 +15,8 @@ sbc_settings sbc_settings_default(void)
     sbc_settings s;
     memset(&s, 0, sizeof s);
     s.bc = SBC_BC_D;
-    s.F[0] = s.F[3] = 1.0;
+    s.dim = 2;
+    sbc_tensor_identity(s.dim, s.F);
     s.increments = 1;
     s.max_relax_steps = 10000000L;
     s.damping = SBC_DAMPING_LOCAL;
@@ -109,21 +110,39 @@ const char *sbc_bc_name(sbc_bc bc)
     return (bc >= SBC_BC_D && bc <= SBC_BC_MIXED) ? names[bc] : "?";
 }
 
-/* Smallest det(I + t (F - I)) for t in [0, 1]: a quadratic 1 + t tr A + t^2 det A. */
-static double path_det_min(const double F[4], double *t_min)
+/* Smallest det(I + t A), A = F - I, for t in [0, 1]: the polynomial
+ * 1 + t c1 + t^2 c2 + t^3 c3 with c1 = tr A, c2 the sum of A's principal
+ * 2 x 2 minors and c3 = det A (0 in 2D, where c2 = det A), at t = 1 and
+ * where its derivative c1 + 2 c2 t + 3 c3 t^2 vanishes. */
+static double path_det_min(int dim, const double F[9], double *t_min)
 {
-    const double a0 = F[0] - 1.0, a3 = F[3] - 1.0;
-    const double tr = a0 + a3, det = a0 * a3 - F[1] * F[2];
-    double best = 1.0, tb = 0.0, cand[2] = {1.0, 0.0};
-    int k;
-    if (det > 0.0) {
-        cand[1] = -tr / (2.0 * det);
+    double A[9], c1 = 0.0, c2 = 0.0, c3 = 0.0, best = 1.0, tb = 0.0, cand[3] = {1.0, -1.0, -1.0};
+    int k, i, j;
+    for (k = 0; k < 9; ++k)
+        A[k] = F[k] - (k % 4 == 0 ? 1.0 : 0.0);
+    for (i = 0; i < dim; ++i)
+        c1 += A[SBC_IJ(i, i)];
+    for (i = 0; i < dim; ++i)
+        for (j = i + 1; j < dim; ++j)
+            c2 += A[SBC_IJ(i, i)] * A[SBC_IJ(j, j)] - A[SBC_IJ(i, j)] * A[SBC_IJ(j, i)];
+    if (dim == 3) {
+        double disc;
+        c3 = sbc_tensor_det(3, A);
+        disc = 4.0 * c2 * c2 - 12.0 * c3 * c1;
+        if (c3 != 0.0 && disc >= 0.0) {
+            cand[1] = (-2.0 * c2 + sqrt(disc)) / (6.0 * c3);
+            cand[2] = (-2.0 * c2 - sqrt(disc)) / (6.0 * c3);
+        } else if (c3 == 0.0 && c2 > 0.0) {
+            cand[1] = -c1 / (2.0 * c2);
+        }
+    } else if (c2 > 0.0) {
+        cand[1] = -c1 / (2.0 * c2);
     }
-    for (k = 0; k < 2; ++k) {
+    for (k = 0; k < 3; ++k) {
         double t = cand[k], J;
         if (t < 0.0 || t > 1.0)
             continue;
-        J = 1.0 + t * tr + t * t * det;
+        J = 1.0 + t * c1 + t * t * c2 + t * t * t * c3;
         if (J < best) {
             best = J;
             tb = t;
@@ -242,19 +261,22 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             else if (name && first)
                 snprintf(m->accuracy, sizeof m->accuracy, "%s", name);
         } else if (strcmp(key, "F") == 0) {
-            static const char *names[4] = {"F11", "F12", "F21", "F22"};
-            for (k = 0; k < 4 && st == SBC_OK; ++k) {
-                st = read_real(&c, names[k], -HUGE_VAL, 0, HUGE_VAL, "a real number", &s->F[k]);
+            const int d = s->dim;
+            for (k = 0; k < d * d && st == SBC_OK; ++k) {
+                char name[8];
+                double *Fij = &s->F[SBC_IJ(k / d, k % d)];
+                sbc_tensor_component_name("F", k / d, k % d, name);
+                st = read_real(&c, name, -HUGE_VAL, 0, HUGE_VAL, "a real number", Fij);
                 /* a frame stretched a hundredfold is no DEM sample; beyond, det F overflows */
-                if (st == SBC_OK && !(fabs(s->F[k]) <= 100.0))
+                if (st == SBC_OK && !(fabs(*Fij) <= 100.0))
                     st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': %s %g is out of range (expected |Fij| <= 100)",
-                                  names[k], s->F[k]);
+                                  name, *Fij);
             }
-            if (st == SBC_OK && !(s->F[0] * s->F[3] - s->F[1] * s->F[2] > 0.0))
+            if (st == SBC_OK && !(sbc_tensor_det(d, s->F) > 0.0))
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': det F = %g is not positive (expected det F > 0)",
-                              s->F[0] * s->F[3] - s->F[1] * s->F[2]);
+                              sbc_tensor_det(d, s->F));
             if (st == SBC_OK) {
-                double t = 0.0, J = path_det_min(s->F, &t);
+                double t = 0.0, J = path_det_min(d, s->F, &t);
                 if (!(J > 0.0))
                     st = sbc_fail(err, SBC_ERR_INPUT,
                                   "keyword 'F': det F reaches %g at %.3g of the linear path from I (expected det F > 0 "
@@ -414,14 +436,14 @@ int sbc_settings_ignored_message(const sbc_settings *s, char *out, size_t cap)
     return 1;
 }
 
-void sbc_settings_target_F(const sbc_settings *s, int increment, double F[4])
+void sbc_settings_target_F(const sbc_settings *s, int increment, double F[9])
 {
-    static const double I[4] = {1.0, 0.0, 0.0, 1.0};
     /* mixed: F stays I during the stress stage, then ramps over `increments` */
     int stage = s->bc == SBC_BC_MIXED ? s->stress_increments : 0;
-    double t = increment <= stage ? 0.0 : (double)(increment - stage) / (double)s->increments;
+    double t = increment <= stage ? 0.0 : (double)(increment - stage) / (double)s->increments, I[9];
     int k;
-    for (k = 0; k < 4; ++k)
+    sbc_tensor_identity(s->dim, I);
+    for (k = 0; k < 9; ++k)
         F[k] = I[k] + t * (s->F[k] - I[k]);
 }
 

@@ -12,7 +12,7 @@ static const char mode_letters[] = "DPT";
 
 void sbc_mixed_default(sbc_settings *s)
 {
-    static const unsigned char layer[4][2] = {{SBC_MODE_D, SBC_MODE_D}, {SBC_MODE_P, SBC_MODE_P},
+    static const unsigned char layer[4][SBC_DIM_MAX] = {{SBC_MODE_D, SBC_MODE_D}, {SBC_MODE_P, SBC_MODE_P},
                                               {SBC_MODE_D, SBC_MODE_T}, {SBC_MODE_P, SBC_MODE_P}};
     memcpy(s->edge_mode, layer, sizeof layer);
     s->nstress = 0;
@@ -84,7 +84,7 @@ static int normal_of(int e) { return e == SBC_EDGE_BOTTOM || e == SBC_EDGE_TOP ?
 
 sbc_status sbc_mixed_validate(const sbc_settings *s, sbc_error *err)
 {
-    static const char *F_names[4] = {"F11", "F12", "F21", "F22"};
+    char name[8];
     int e, c, k;
     for (e = 0; e < 4; ++e) {
         const unsigned char *m = s->edge_mode[e];
@@ -111,11 +111,11 @@ sbc_status sbc_mixed_validate(const sbc_settings *s, sbc_error *err)
                                 c + 1, normal_of(e) + 1);
             for (k = 0; k < 2; ++k) {
                 double want = k == c ? 1.0 : 0.0;
-                if (s->F[2 * c + k] != want)
+                if (s->F[SBC_IJ(c, k)] != want)
                     return sbc_fail(err, SBC_ERR_INPUT, "mixed: keyword 'F' prescribes %s = %g, but component %s of the "
                                     "%s edge is under T, so %s is a result (eq. 45): leave row %d of F at the identity",
-                                    F_names[2 * c + k], s->F[2 * c + k], comp_names[c], edge_names[e],
-                                    F_names[2 * c + k], c + 1);
+                                    sbc_tensor_component_name("F", c, k, name), s->F[SBC_IJ(c, k)], comp_names[c],
+                                    edge_names[e], name, c + 1);
             }
         }
     }
