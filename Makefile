@@ -25,6 +25,9 @@ CORE_SRC = $(wildcard src_core/src/*/*.c)
 CORE_HDR = $(wildcard src_core/include/sbc/*.h src_core/src/*/*.h)
 CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
+# the servo-bc program's own sources beyond main.c: host syntax (the decks of
+# --decks), which the core library does not write
+RUNNER_SRC = src_core/runner/decks.c
 TEST_HDR = $(wildcard tests/*.h)
 # fuzz harnesses (fuzz/, docs/reliability.md)
 FUZZ_NAMES  = settings packing script host restart
@@ -48,25 +51,25 @@ figures: all
 	bash scripts/figures.sh
 
 $(B)/libservo_bc.a: $(CORE_OBJ)
-	ar rcs $@ $^
+	rm -f $@ && ar rcs $@ $^
 
 $(B)/libservo_bc.so: $(CORE_OBJ)
 	$(CC) -shared -o $@ $^ $(LDLIBS)
 
-$(B)/servo-bc: src_core/runner/main.c $(B)/libservo_bc.a
-	$(CC) $(CFLAGS) -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
+$(B)/servo-bc: src_core/runner/main.c $(RUNNER_SRC) src_core/runner/decks.h $(B)/libservo_bc.a
+	$(CC) $(CFLAGS) -o $@ $< $(RUNNER_SRC) $(B)/libservo_bc.a $(LDLIBS)
 
 $(B)/servo-bc-plot: src_core/runner/plot_main.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
 
-$(B)/run_tests: $(TEST_SRC) $(TEST_HDR) $(B)/libservo_bc.a
-	$(CC) $(CFLAGS) -Itests -Isrc_core/src -o $@ $(TEST_SRC) $(B)/libservo_bc.a $(LDLIBS)
+$(B)/run_tests: $(TEST_SRC) $(TEST_HDR) $(RUNNER_SRC) $(B)/libservo_bc.a
+	$(CC) $(CFLAGS) -Itests -Isrc_core/src -Isrc_core/runner -o $@ $(TEST_SRC) $(RUNNER_SRC) $(B)/libservo_bc.a $(LDLIBS)
 
 # The same tests, core compiled in, under AddressSanitizer + UBSan.
-$(B)/run_tests_san: $(TEST_SRC) $(TEST_HDR) $(CORE_SRC) $(CORE_HDR)
+$(B)/run_tests_san: $(TEST_SRC) $(TEST_HDR) $(RUNNER_SRC) $(CORE_SRC) $(CORE_HDR)
 	@mkdir -p $(B)
 	$(CC) $(CSTD) -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
-	  -Isrc_core/include -Isrc_core/src -Itests -o $@ $(TEST_SRC) $(CORE_SRC) $(LDLIBS)
+	  -Isrc_core/include -Isrc_core/src -Isrc_core/runner -Itests -o $@ $(TEST_SRC) $(RUNNER_SRC) $(CORE_SRC) $(LDLIBS)
 
 demo: all
 	@mkdir -p out/demo

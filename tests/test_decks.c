@@ -3,6 +3,7 @@
  * contact law, time step and servo words, the frame of a periodic packing,
  * and each its own results file; what no host can run is refused. */
 #define _POSIX_C_SOURCE 200809L
+#include "decks.h"
 #include "check.h"
 #include "csv_read.h"
 #include "tests.h"
@@ -64,7 +65,7 @@ void test_decks(void)
     snprintf(path, sizeof path, "%s/case.sbc", test_tmpdir);
     CHECK(write_text(path, script) == 0);
     CHECK(sbc_script_run_file(path, NULL, &err) == SBC_OK);
-    CHECK(sbc_script_decks_file(path, dir, NULL, &err) == SBC_OK);
+    CHECK(sbc_script_decks_file(path, dir, sbc_runner_write_decks, NULL, &err) == SBC_OK);
     /* the embedded script, run in the folder, writes the very same CSV */
     CHECK(getcwd(cwd, sizeof cwd) != NULL);
     CHECK(chdir(dir) == 0);
@@ -104,7 +105,7 @@ void test_decks(void)
              "contact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\ntimestep 1e-6\nservo_bc P F 1 0.01 0 1\nrun\n");
     snprintf(path, sizeof path, "%s/case_periodic.sbc", test_tmpdir);
     CHECK(write_text(path, script) == 0);
-    CHECK(sbc_script_decks_file(path, dir, NULL, &err) == SBC_OK);
+    CHECK(sbc_script_decks_file(path, dir, sbc_runner_write_decks, NULL, &err) == SBC_OK);
     {
         const char *lammps[] = {"servo_bc P F 1 0.01 0 1 frame frame_atoms file lammps.csv", NULL};
         const char *liggghts[] = {"servo_bc P F 1 0.01 0 1 frame frame_atoms file liggghts.csv", NULL};
@@ -121,7 +122,7 @@ void test_decks(void)
              "servo_bc D F 1 0.01 0 1\nrun\n");
     snprintf(path, sizeof path, "%s/case_cohesive.sbc", test_tmpdir);
     CHECK(write_text(path, script) == 0);
-    CHECK(sbc_script_decks_file(path, dir, NULL, &err) == SBC_OK);
+    CHECK(sbc_script_decks_file(path, dir, sbc_runner_write_decks, NULL, &err) == SBC_OK);
     {
         const char *embedded[] = {"contact cohesive kn 10000 ks 2000 kr 0.001 fn 1 fs 1 mr 0.001 mu 0.4", NULL};
         const char *lammps[] = {"pair_style      zero", "fix             bonds all servo_bc/bonds cohesive kn 10000 "
@@ -136,6 +137,6 @@ void test_decks(void)
     }
     /* a folder that is not there */
     snprintf(path, sizeof path, "%s/case_periodic.sbc", test_tmpdir);
-    CHECK(sbc_script_decks_file(path, "/dev/null/folder", NULL, &err) == SBC_ERR_IO &&
+    CHECK(sbc_script_decks_file(path, "/dev/null/folder", sbc_runner_write_decks, NULL, &err) == SBC_ERR_IO &&
           strstr(err.message, "cannot write '/dev/null/folder/packing.txt'"));
 }

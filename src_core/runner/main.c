@@ -6,6 +6,7 @@
  *   servo-bc --columns           prints the results file's columns (columns.h) as a Markdown table
  *   servo-bc --keywords          prints the servo_bc keywords (keywords.h) as a Markdown table */
 #define _POSIX_C_SOURCE 200809L
+#include "decks.h"
 #include "sbc/columns.h"
 #include "sbc/keywords.h"
 #include "sbc/script.h"
@@ -80,7 +81,7 @@ int main(int argc, char **argv)
     else if (argc == 3 && strcmp(argv[1], "--check") == 0)
         st = sbc_script_check_file(argv[2], stdout, &err);
     else if (argc == 4 && strcmp(argv[1], "--decks") == 0)
-        st = sbc_script_decks_file(argv[3], argv[2], stdout, &err);
+        st = sbc_script_decks_file(argv[3], argv[2], sbc_runner_write_decks, stdout, &err);
     else {
         fprintf(stderr, "ERROR: servo-bc: %s%s%s\n%s", argc < 2 ? "no script" : "unknown arguments starting at '",
                 argc < 2 ? "" : argv[1], argc < 2 ? "" : "'", usage);

@@ -38,12 +38,21 @@ sbc_status sbc_script_run_file(const char *path, FILE *log, sbc_error *err);
 sbc_status sbc_script_check_string(const char *text, const char *name, FILE *log, sbc_error *err);
 sbc_status sbc_script_check_file(const char *path, FILE *log, sbc_error *err);
 
-/* Reads the script file at path and, at its 'run', writes into the existing
- * folder dir the same case for every host instead of running it: the packing
- * (packing.txt, packing.lammps.data, packing.liggghts.data, packing.yade) and
- * embedded.sbc, lammps.in, liggghts.in, yade.py, each of which, run in dir,
- * writes dir/HOST.csv (frictional contact law only). */
-sbc_status sbc_script_decks_file(const char *path, const char *dir, FILE *log, sbc_error *err);
+/* A script's case as parsed up to its 'run' (opaque here). */
+typedef struct sbc_script_case sbc_script_case;
+
+/* What --decks does at 'run' instead of running: write the case into the
+ * folder dir. */
+typedef sbc_status (*sbc_script_decks_fn)(sbc_script_case *c, const char *dir, sbc_error *err);
+
+/* Reads the script file at path and, at its 'run', hands the case to write
+ * instead of running it. servo-bc's writer (src_core/runner/decks.c, outside
+ * the core library) writes into the existing folder dir the same case for
+ * every host: the packing (packing.txt, packing.lammps.data,
+ * packing.liggghts.data, packing.yade) and embedded.sbc, lammps.in,
+ * liggghts.in, yade.py, each of which, run in dir, writes dir/HOST.csv. */
+sbc_status sbc_script_decks_file(const char *path, const char *dir, sbc_script_decks_fn write, FILE *log,
+                                 sbc_error *err);
 
 #ifdef __cplusplus
 }

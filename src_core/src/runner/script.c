@@ -547,7 +547,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
         if ((st = sbc_script_expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
         s->servo_pending = 0;
         if (s->decks_dir)
-            return sbc_script_write_decks(s, s->decks_dir, err);
+            return s->write_decks(s, s->decks_dir, err);
         return s->replicas > 0 ? sbc_script_replicas(s, sbc_script_run_once, err) : sbc_script_run_once(s, err);
     }
     return sbc_fail(err, SBC_ERR_INPUT,
@@ -556,8 +556,8 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
                     c);
 }
 
-static sbc_status run_text(const char *text, const char *name, FILE *log, const char *decks_dir, int check,
-                           sbc_error *err)
+static sbc_status run_text(const char *text, const char *name, FILE *log, const char *decks_dir,
+                           sbc_script_decks_fn write_decks, int check, sbc_error *err)
 {
     script s;
     const char *p = text;
@@ -567,6 +567,7 @@ static sbc_status run_text(const char *text, const char *name, FILE *log, const 
     s.name = name;
     s.log = log;
     s.decks_dir = decks_dir;
+    s.write_decks = write_decks;
     s.check = check;
     s.settings = sbc_settings_default();
     while (*p && st == SBC_OK) {
@@ -602,15 +603,16 @@ static sbc_status run_text(const char *text, const char *name, FILE *log, const 
 
 sbc_status sbc_script_run_string(const char *text, const char *name, FILE *log, sbc_error *err)
 {
-    return run_text(text, name, log, NULL, 0, err);
+    return run_text(text, name, log, NULL, NULL, 0, err);
 }
 
 sbc_status sbc_script_check_string(const char *text, const char *name, FILE *log, sbc_error *err)
 {
-    return run_text(text, name, log, NULL, 1, err);
+    return run_text(text, name, log, NULL, NULL, 1, err);
 }
 
-static sbc_status run_file(const char *path, FILE *log, const char *decks_dir, int check, sbc_error *err)
+static sbc_status run_file(const char *path, FILE *log, const char *decks_dir, sbc_script_decks_fn write_decks,
+                           int check, sbc_error *err)
 {
     FILE *fp = fopen(path, "rb");
     char *text;
@@ -645,22 +647,25 @@ static sbc_status run_file(const char *path, FILE *log, const char *decks_dir, i
             return sbc_fail(err, SBC_ERR_INPUT, "%s:%d: a NUL byte (expected a text script)", path, line);
         }
     }
-    st = run_text(text, path, log, decks_dir, check, err);
+    st = run_text(text, path, log, decks_dir, write_decks, check, err);
     free(text);
     return st;
 }
 
 sbc_status sbc_script_run_file(const char *path, FILE *log, sbc_error *err)
 {
-    return run_file(path, log, NULL, 0, err);
+    return run_file(path, log, NULL, NULL, 0, err);
 }
 
 sbc_status sbc_script_check_file(const char *path, FILE *log, sbc_error *err)
 {
-    return run_file(path, log, NULL, 1, err);
+    return run_file(path, log, NULL, NULL, 1, err);
 }
 
-sbc_status sbc_script_decks_file(const char *path, const char *dir, FILE *log, sbc_error *err)
+sbc_status sbc_script_decks_file(const char *path, const char *dir, sbc_script_decks_fn write, FILE *log,
+                                 sbc_error *err)
 {
-    return run_file(path, log, dir, 0, err);
+    if (!write)
+        return sbc_fail(err, SBC_ERR_INPUT, "--decks: no deck writer");
+    return run_file(path, log, dir, write, 0, err);
 }

@@ -3,6 +3,7 @@
 #ifndef SBC_SCRIPT_STATE_H
 #define SBC_SCRIPT_STATE_H
 
+#include "sbc/script.h"
 #include "sbc/contact.h"
 #include "sbc/packing.h"
 #include "sbc/settings.h"
@@ -21,7 +22,7 @@ typedef struct sbc_file_id {
 
 #define SBC_SCRIPT_FILES 64
 
-typedef struct script {
+typedef struct sbc_script_case {
     const char *name;
     int line;
     FILE *log;
@@ -40,6 +41,7 @@ typedef struct script {
     char plot[SBC_NAME_LEN];
     char servo_words[2048]; /* the servo_bc words without 'file NAME' */
     const char *decks_dir;  /* --decks: 'run' writes the hosts' inputs here instead */
+    sbc_script_decks_fn write_decks; /* ... with this writer (script.h) */
     int decks_line;         /* the line of the run whose decks were written (one run per --decks) */
     int check;              /* --check: every command is checked, nothing is run or written */
     struct bpm_script *bpm; /* after 'dimension 3': the 3D bonded particle model (script_bpm.c) */
@@ -95,10 +97,5 @@ typedef sbc_status (*sbc_script_run_fn)(script *s, sbc_error *err);
  * each by run_once. */
 sbc_status sbc_script_replicas_command(script *s, int nw, char **w, sbc_error *err);
 sbc_status sbc_script_replicas(script *s, sbc_script_run_fn run_once, sbc_error *err);
-
-/* The case for every host (script_decks.c): in dir, the packing (packing.txt,
- * packing.lammps.data, packing.liggghts.data, packing.yade) and embedded.sbc,
- * lammps.in, liggghts.in, yade.py, each writing dir/HOST.csv. */
-sbc_status sbc_script_write_decks(script *s, const char *dir, sbc_error *err);
 
 #endif

@@ -1,5 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
-/* The runner's case as input for every host (`servo-bc --decks DIR CASE`):
+/* The runner's case as input for every host (`servo-bc --decks DIR CASE`),
+ * part of the servo-bc program and not of the core library, which writes no
+ * host's input syntax:
  * one packing written in each host's format, and the embedded script, the
  * LAMMPS deck, the LIGGGHTS script and the YADE script that run the same
  * contact law, time step and servo_bc words on it, each writing DIR/HOST.csv.
@@ -7,7 +9,8 @@
  * A frictional case uses each host's own contact law (eq. 6); a cohesive
  * one (eqs. 7-8) hands every contact to the core: fix servo_bc/bonds
  * cohesive in LAMMPS and LIGGGHTS, servo_bc.Cohesive in YADE. */
-#include "script_state.h"
+#include "decks.h"
+#include "runner/script_state.h"
 #include "sbc/output_file.h"
 
 #include <math.h>
@@ -212,7 +215,7 @@ static sbc_status write_yade(const script *s, const char *dir, sbc_error *err)
     return close_file(fp, path, err);
 }
 
-sbc_status sbc_script_write_decks(script *s, const char *dir, sbc_error *err)
+sbc_status sbc_runner_write_decks(sbc_script_case *s, const char *dir, sbc_error *err)
 {
     static const char *format[4] = {"text", "lammps", "liggghts", "yade"};
     static const char *file[4] = {"packing.txt", "packing.lammps.data", "packing.liggghts.data", "packing.yade"};
