@@ -144,6 +144,12 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         return NULL;
     }
     c->s = *settings;
+    if (!(c->rule = sbc_update_rule_of(settings->update))) {
+        free(c);
+        sbc_fail(err, SBC_ERR_INPUT, "servo_bc: update rule %d is not one of the table (update_rules.c)",
+                 (int)settings->update);
+        return NULL;
+    }
     c->dt = dt;
     c->kn = kn;
     c->total = sbc_settings_total_increments(settings);
@@ -539,7 +545,7 @@ static sbc_event stage_decide(sbc_controller *c, const sbc_snapshot *snap, sbc_e
         return SBC_EVENT_RELAXING;
     } else if (ratio <= 1.0) {
         return accept(c, snap, err);
-    } else if (c->s.update == SBC_UPDATE_FIXED && nrm->r_force > 1e3 * fmax(c->r_first, 1e3 * sbc_ctl_tol_force(c))) {
+    } else if (!c->rule->bounded && nrm->r_force > 1e3 * fmax(c->r_first, 1e3 * sbc_ctl_tol_force(c))) {
         /* growth over the first residual of the increment (that one can be
          * round-off small: an already periodic state, hence the floor) under
          * fixed gains, which can run away; the secant update caps its
@@ -568,9 +574,9 @@ static sbc_event stage_correct(sbc_controller *c, const double F_measured[9], co
 {
     sbc_servo_norms nrm = c->norms; /* the scaled step is this correction's; c->norms keeps the residuals' */
     int moved, k;
-    if (c->s.update == SBC_UPDATE_SECANT)
-        sbc_ctl_secant_scale(c, &nrm);
-    if (nrm.max_step > 0.5) { /* fixed gains only: the secant update caps its steps */
+    if (c->rule->scale)
+        c->rule->scale(c, &nrm);
+    if (nrm.max_step > 0.5) { /* a rule that does not cap its steps (fixed) */
         sbc_ctl_diverged(c, &nrm, "a correction moved a frame particle by more than half its radius", 0, err);
         return SBC_EVENT_FAILED;
     }
@@ -582,7 +588,7 @@ static sbc_event stage_correct(sbc_controller *c, const double F_measured[9], co
         c->theta_cmd[k] += c->dtheta[k];
     c->servo = 1;
     c->iteration++;
-    if (c->s.bc == SBC_BC_T && c->s.update != SBC_UPDATE_FIXED)
+    if (c->s.bc == SBC_BC_T && c->rule->keeps_eq15)
         sbc_ctl_restore_eq15(c);
     if (c->s.bc == SBC_BC_MIXED) { /* the frame follows the measured rows of F */
         for (k = 0; k < c->frame->dim; ++k)

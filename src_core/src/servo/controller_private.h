@@ -2,7 +2,8 @@
  * controller.c          the state machine (Tables 1-3, 5): create, step, accept
  * controller_mixed.c    the mixed condition's bookkeeping (Table 5, Sect. 5.1)
  * controller_checks.c   refusals, failure messages, the certification of a row
- * controller_update.c   the update rules (fixed, secant) and eq. 15 under (T)
+ * controller_update.c   the secant update's scaling and eq. 15 under (T)
+ * update_rules.c        the update rules as a table (update_rules.h)
  * controller_state.c    the restart state (save, load) */
 #ifndef SBC_CONTROLLER_PRIVATE_H
 #define SBC_CONTROLLER_PRIVATE_H
@@ -12,6 +13,7 @@
 #include "motion.h"
 #include "servo.h"
 #include "tuning.h"
+#include "update_rules.h"
 
 /* parts of one frame particle's correction for the secant update: du (dim
    components) and R dtheta (one in-plane rotation) */
@@ -29,6 +31,7 @@ struct sbc_controller {
     double P_miss;       /* mixed: |P measured - P_star| over |P_star| in the traction rows */
     double *a_hat;       /* [3Q] mixed: the boundary forces with the top's traction components at their targets */
     sbc_settings s;
+    const sbc_update_rule *rule; /* the update rule of s.update (update_rules.h) */
     double dt;           /* s */
     double kn;           /* the host's normal contact stiffness, N/m (0: unknown) */
     sbc_motion motion;   /* the frame's travel to the commands (motion.h) */

@@ -1,6 +1,7 @@
 /* Servo control of (P) and (T): residuals (eqs. 32, 35), normalizations
  * (eq. 37) and corrections (eqs. 33, 34, 36). */
 #include "servo.h"
+#include "update_rules.h"
 #include "sbc/homogenize.h"
 
 #include <math.h>
@@ -60,7 +61,7 @@ static void add_residual(raw_sums *w, double da2, double R, int moment, double d
  * one particle) and g_m = 1 / (4 kn R^2) (rad/(N m)). */
 static int physical(const sbc_settings *s, const raw_sums *w)
 {
-    return s->update == SBC_UPDATE_SECANT && w->kn > 0.0;
+    return sbc_update_rule_of(s->update)->scale_free_gains && w->kn > 0.0;
 }
 
 static double gain_force(const sbc_settings *s, const raw_sums *w, double dt, double M, double share)

@@ -1,5 +1,6 @@
 /* The servo_bc keyword parser shared by every host. */
 #include "sbc/settings.h"
+#include "update_rules.h"
 
 #include "settings_mixed.h"
 #include "sbc/keywords.h"
@@ -324,13 +325,14 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             st = read_real(&c, "eps", 0.0, 0, HUGE_VAL, "a real >= 0 (0: the tolerances of eq. 37)", &s->tol_relative);
         } else if (strcmp(key, "update") == 0) {
             const char *w = next_word(&c, "mode", &st);
-            if (w && strcmp(w, "fixed") == 0)
-                s->update = SBC_UPDATE_FIXED;
-            else if (w && strcmp(w, "secant") == 0)
-                s->update = SBC_UPDATE_SECANT;
-            else if (w)
-                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'update': mode '%s' is not valid (expected fixed or secant)",
-                              w);
+            const sbc_update_rule *rule = w ? sbc_update_rule_named(w) : NULL;
+            if (rule) {
+                s->update = rule->id;
+            } else if (w) {
+                char names[64];
+                sbc_update_rule_names(names, sizeof names);
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'update': mode '%s' is not valid (expected %s)", w, names);
+            }
         } else if (strcmp(key, "seal") == 0) {
             const char *w = next_word(&c, "yes|no", &st);
             if (w && (strcmp(w, "yes") == 0 || strcmp(w, "no") == 0))

@@ -1,5 +1,6 @@
 /* servo_bc: the time step's bounds (time_step.h). */
 #include "sbc/time_step.h"
+#include "update_rules.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -44,7 +45,8 @@ sbc_status sbc_time_step_check(double dt, double kn, double mass_min, long index
 
 int sbc_time_step_note(const sbc_settings *s, double dt, double dtc, char *out, size_t cap)
 {
-    if (s->update == SBC_UPDATE_FIXED || !(dt > 0.0) || !(dt < SBC_TIME_STEP_SLOW * dtc) || cap == 0)
+    const sbc_update_rule *rule = sbc_update_rule_of(s->update);
+    if (!rule || !rule->scale_free_gains || !(dt > 0.0) || !(dt < SBC_TIME_STEP_SLOW * dtc) || cap == 0)
         return 0;
     snprintf(out, cap,
              "servo_bc: time step %g s is 1/%.0f of the critical step %g s: a relaxation's DEM steps grow about as "
