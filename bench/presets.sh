@@ -14,6 +14,8 @@
 #                                      DT_regular_P=1e-4 ... to set time steps)
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
+# results files are read by column name (scripts/columns.awk)
+COLUMNS_AWK=$(cat "$top/scripts/columns.awk")
 B=${B:-$top/build}
 out=${1:-$top/out/presets}
 mkdir -p "$out"
@@ -74,9 +76,10 @@ for c in $cases; do
     csv=$out/$c.$p.csv
     step=$dt
     [ $p = paper ] && step=$(awk '$1 == "timestep" { print $2 }' "$out/$c.paper.sbc")
-    read -r steps its u r < <(awk -F, 'NR > 1 { st += $17; it += $16; n++; if ($21 > u) u = $21; if ($22 > r) r = $22 }
+    read -r steps its u r < <(awk -F, "$COLUMNS_AWK"'NR > 1 { st += $col("relax_steps"); it += $col("iterations"); n++
+        if ($col("unbalanced") > u) u = $col("unbalanced"); if ($col("frame_residual") > r) r = $col("frame_residual") }
       END { if (n) printf "%d %.0f %.2g %.2g\n", st, it / n, u, r; else print "- - - -" }' "$csv" 2>/dev/null)
-    read -r e m < <(awk -F, -f "$top/scripts/first_peak.awk" -f "$top/scripts/path_error.awk" "$out/$c.tight.csv" "$csv" \
+    read -r e m < <(awk -F, -f "$top/scripts/columns.awk" -f "$top/scripts/first_peak.awk" -f "$top/scripts/path_error.awk" "$out/$c.tight.csv" "$csv" \
       2>/dev/null | awk '{ printf "%.2g %.3g\n", $1, $2 }')
     msg=$(grep -m1 '^ERROR' "$out/$c.$p.log" | sed 's/^ERROR: [^:]*:[0-9]*: //')
     echo "| $c | $p | $step | ${steps:--} | ${its:--} | $(cat "$out/$c.$p.wall" 2>/dev/null) | ${u:--} | ${r:--} | ${e:--} | ${m:--}${msg:+ (stopped: $msg)} |"

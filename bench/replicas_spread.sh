@@ -16,6 +16,8 @@
 #   bash bench/replicas_spread.sh [OUT]     K=4 J=2 SIZES="25 100 200 400 600" CASES="P mixed"
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
+# results files are read by column name (scripts/columns.awk)
+COLUMNS_AWK=$(cat "$top/scripts/columns.awk")
 B=${B:-$top/build}
 out=${1:-$top/out/replicas_spread}
 K=${K:-4} J=${J:-2}
@@ -37,7 +39,7 @@ for c in ${CASES:-P mixed}; do
     rc=$?
     t1=$(date +%s.%N)
     discs=$(sed -n 's/.*-> \([0-9]*\) particles.*/\1/p' "$name.log" | head -1)
-    steps=$(awk -F, 'NR > 1 { s += $17 } END { print s + 0 }' "$name.csv" 2>/dev/null)
+    steps=$(awk -F, "$COLUMNS_AWK"'NR > 1 { s += $col("relax_steps") } END { print s + 0 }' "$name.csv" 2>/dev/null)
     awk -F, -v c="$c" -v d="$discs" -v k="$K" -v st="$steps" -v rc="$rc" -v wall="$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.0f", b - a }')" '
       NR > 1 { n++; for (j = 7; j <= 22; j += 4) { w = $(j + 3) - $(j + 2); if (w > W) W = w; a = $j < 0 ? -$j : $j; if (a > S) S = a }
                last12 = $14 - $13 }

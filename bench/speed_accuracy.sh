@@ -19,6 +19,8 @@
 # markdown, errors in %, the front marked.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
+# results files are read by column name (scripts/columns.awk)
+COLUMNS_AWK=$(cat "$top/scripts/columns.awk")
 B=${B:-$top/build}
 sweep=${1:?usage: speed_accuracy.sh SWEEP [OUT]}
 name=$(basename "$sweep" .sweep)
@@ -73,19 +75,19 @@ ref=$(awk '$1 == "reference" { print $2; exit }' "$out/runs.txt")
   echo "knob,label,words,increments,steps,iterations,wall_s,path_error,max_before_peak_pct,status"
   while read -r knob label words; do
     log=$out/runs/$label.log csv=$out/runs/$label.csv
-    steps=$(awk -F, 'NR > 1 { s += $17; it += $16 } END { print s + 0, it + 0 }' "$csv" 2>/dev/null || echo "0 0")
+    steps=$(awk -F, "$COLUMNS_AWK"'NR > 1 { s += $col("relax_steps"); it += $col("iterations") } END { print s + 0, it + 0 }' "$csv" 2>/dev/null || echo "0 0")
     wall=$(sed -n 's/.*wall \([0-9.]*\) s$/\1/p' "$log")
     status=ok
     if grep -q '^ERROR' "$log"; then
       status=$(grep -m1 '^ERROR' "$log" | sed 's/^ERROR: //; s/"/'"'"'/g')
     fi
     if [ -s "$csv" ] && [ "$(wc -l < "$csv")" -gt 2 ]; then
-      err=$(awk -F, -f "$top/scripts/first_peak.awk" -f "$top/scripts/path_error.awk" "$out/runs/$ref.csv" "$csv" |
+      err=$(awk -F, -f "$top/scripts/columns.awk" -f "$top/scripts/first_peak.awk" -f "$top/scripts/path_error.awk" "$out/runs/$ref.csv" "$csv" |
         awk '{ print $1 "," $2 }')
     else
       err=","
     fi
-    incs=$(awk -F, 'NR > 1 { n = $1 } END { print n + 0 }' "$csv" 2>/dev/null)
+    incs=$(awk -F, "$COLUMNS_AWK"'NR > 1 { n = $col("increment") } END { print n + 0 }' "$csv" 2>/dev/null)
     echo "$knob,$label,\"$words\",$incs,${steps% *},${steps#* },${wall:-},$err,\"$status\""
   done < "$out/runs.txt"
 } > "$out/results.csv"

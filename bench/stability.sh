@@ -11,6 +11,8 @@
 # error whose message holds the expected words.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
+# results files are read by column name (scripts/columns.awk)
+COLUMNS_AWK=$(cat "$top/scripts/columns.awk")
 B=${B:-$top/build}
 mode=${1:-full}
 out=${2:-$top/out/stability}
@@ -38,7 +40,7 @@ cell() {
   t1=$(date +%s.%N)
   wall=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')
   msg=$(grep -m1 '^ERROR' "$out/$name.log" | sed "s|^ERROR: $out/$name.sbc:[0-9]*: ||")
-  res=$(awk -F, 'NR > 1 { n = $1; it += $16; st += $17 } END { printf "%d|%d|%d", n, it, st }' "$out/$name.csv" 2>/dev/null)
+  res=$(awk -F, "$COLUMNS_AWK"'NR > 1 { n = $col("increment"); it += $col("iterations"); st += $col("relax_steps") } END { printf "%d|%d|%d", n, it, st }' "$out/$name.csv" 2>/dev/null)
   [ -n "$res" ] || res="-|-|-"
   local outcome ok=0
   if [ $rc -eq 124 ]; then outcome="hang (over $limit s)"

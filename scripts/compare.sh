@@ -22,6 +22,8 @@
 # Usage: scripts/compare.sh CASE.sbc [OUT]
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
+# results files are read by column name (scripts/columns.awk)
+COLUMNS_AWK=$(cat "$top/scripts/columns.awk")
 B=${B:-$top/build}
 case_file=${1:?usage: compare.sh CASE.sbc [OUT]}
 name=$(basename "$case_file" .sbc)
@@ -111,14 +113,16 @@ for plot in "sigma11.svg|sigma11 (N/m)|sigma11" "sigma12.svg|sigma12 (N/m)|sigma
 done
 
 # the differences themselves, in % of the stress scale, against the increment
-scale=$(awk -F, 'NR > 1 { for (c = 10; c <= 13; c++) { v = $c < 0 ? -$c : $c; if (v > s) s = v } } END { print s + 0 }' \
-  "$out/embedded.csv")
+scale=$(awk -F, "$COLUMNS_AWK"'NR == 1 { split("sigma11 sigma12 sigma21 sigma22", nm, " "); for (k = 1; k <= 4; k++) cs[k] = col(nm[k]) }
+  NR > 1 { for (k = 1; k <= 4; k++) { v = $cs[k] < 0 ? -$cs[k] : $cs[k]; if (v > s) s = v } } END { print s + 0 }' "$out/embedded.csv")
 series=()
 for e in "${engines[@]}"; do
   [ "$e" = embedded ] && continue
-  paste -d, "$out/embedded.csv" "$out/$e.csv" | awk -F, -v s="$scale" '
-    NR == 1 { w = NF / 2; print "increment,dsigma11,dsigma12,dsigma21,dsigma22"; next }
-    $1 != "" && $(w + 1) != "" { printf "%s", $1; for (c = 10; c <= 13; c++) printf ",%.6g", 100 * ($(c + w) - $c) / (s > 0 ? s : 1); print "" }' \
+  paste -d, "$out/embedded.csv" "$out/$e.csv" | awk -F, -v s="$scale" "$COLUMNS_AWK"'
+    NR == 1 { w = NF / 2; i = col("increment"); split("sigma11 sigma12 sigma21 sigma22", nm, " ")
+              for (k = 1; k <= 4; k++) cs[k] = col(nm[k])
+              print "increment,dsigma11,dsigma12,dsigma21,dsigma22"; next }
+    $i != "" && $(i + w) != "" { printf "%s", $i; for (k = 1; k <= 4; k++) printf ",%.6g", 100 * ($(cs[k] + w) - $cs[k]) / (s > 0 ? s : 1); print "" }' \
     > "$out/difference_$e.csv"
   series+=("$out/difference_$e.csv" "$e")
 done
@@ -133,15 +137,16 @@ done
   printf 'increment'
   for e in "${engines[@]}"; do printf ',%s_iterations,%s_relax_steps' "$e" "$e"; done
   echo
-  paste -d, $(for e in "${engines[@]}"; do echo "$out/$e.csv"; done) | awk -F, -v n=${#engines[@]} 'NR == 1 { w = NF / n }
-    NR > 1 { printf "%s", $1; for (k = 0; k < n; k++) printf ",%s,%s", $(16 + w * k), $(17 + w * k); print "" }'
+  paste -d, $(for e in "${engines[@]}"; do echo "$out/$e.csv"; done) | awk -F, -v n=${#engines[@]} "$COLUMNS_AWK"'
+    NR == 1 { w = NF / n; i = col("increment"); it = col("iterations"); rs = col("relax_steps") }
+    NR > 1 { printf "%s", $i; for (k = 0; k < n; k++) printf ",%s,%s", $(it + w * k), $(rs + w * k); print "" }'
 } > "$out/steps.csv"
 
 # report.md
 for e in "${engines[@]}"; do
   [ "$e" = embedded ] && continue
   paste -d, "$out/embedded.csv" "$out/$e.csv" |
-    awk -F, -v e="$e" -f "$top/scripts/first_peak.awk" -f "$top/scripts/compare_diff.awk" > "$out/diff_$e.md"
+    awk -F, -v e="$e" -f "$top/scripts/columns.awk" -f "$top/scripts/first_peak.awk" -f "$top/scripts/compare_diff.awk" > "$out/diff_$e.md"
 done
 {
   echo "# $name: every engine on one case"
@@ -157,7 +162,7 @@ done
     wall=$(awk -v e="$e" '$1 == e { print $2 }' "$out/times.txt" 2>/dev/null)
     diffs=$(awk -F'|' '$3 ~ /σ̄/ { if ($4 + 0 > b) b = $4 + 0; if ($6 + 0 > w) w = $6 + 0; n++ }
       END { if (n) printf "%.3g|%.3g", b, w; else printf "|" }' "$out/diff_$e.md" 2>/dev/null || echo "|")
-    awk -F, -v e="$e" -v wall="${wall:-nan}" -v n="$particles" -v d="${diffs:-|}" 'NR > 1 { inc++; steps += $17; it += $16 }
+    awk -F, -v e="$e" -v wall="${wall:-nan}" -v n="$particles" -v d="${diffs:-|}" "$COLUMNS_AWK"'NR > 1 { inc++; steps += $col("relax_steps"); it += $col("iterations") }
       END { ns = (wall == "nan" || steps == 0) ? "-" : sprintf("%.0f", wall / steps / n * 1e9)
             split(d, x, "|")
             printf "| %s | %d | %s | %d | %s | %d | %s | %s |\n", e, inc - 1, (wall == "nan" ? "failed" : wall), steps, ns, it, x[1], x[2] }' \

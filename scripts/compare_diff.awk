@@ -4,19 +4,21 @@
 # scale (max |sigma| of the embedded run), up to the first peak of |sigma12| of
 # the embedded run (scripts/first_peak.awk) and over the whole path; increments missing from either
 # run are left out and counted.
-NR == 1 { w = NF / 2 } # columns per file
-NR > 1 && $1 != "" {
+# columns by name (scripts/columns.awk, given before this file)
+NR == 1 { w = NF / 2; i = col("increment"); split("sigma11 sigma12 sigma21 sigma22", nm, " ")
+  for (c = 1; c <= 4; c++) cs[c] = col(nm[c]) } # w: columns per file
+NR > 1 && $i != "" {
   n++
-  for (c = 10; c <= 13; c++) {
-    a[n, c] = $c; v = $c < 0 ? -$c : $c; if (v > scale) scale = v
-    have[n] = $(w + 1) != ""; b[n, c] = $(c + w)
+  for (c = 1; c <= 4; c++) {
+    a[n, c] = $cs[c]; v = a[n, c] < 0 ? -a[n, c] : a[n, c]; if (v > scale) scale = v
+    have[n] = $(i + w) != ""; b[n, c] = $(cs[c] + w)
   }
 }
 END {
-  for (k = 1; k <= n; k++) s12[k] = a[k, 11]
+  for (k = 1; k <= n; k++) s12[k] = a[k, 2]
   peak = first_peak(s12, n)
   split("σ̄11 σ̄12 σ̄21 σ̄22", name, " ")
-  for (c = 10; c <= 13; c++) {
+  for (c = 1; c <= 4; c++) {
     m1 = s1 = m2 = s2 = n1 = n2 = 0
     for (k = 1; k <= n; k++) {
       if (!have[k]) continue
@@ -24,7 +26,7 @@ END {
       if (k <= peak) { if (d > m1) m1 = d; s1 += d; n1++ }
       if (d > m2) m2 = d; s2 += d; n2++
     }
-    printf "| %s | %s | %.4g | %.4g | %.4g | %.4g |\n", e, name[c - 9], m1, (n1 ? s1 / n1 : 0), m2, (n2 ? s2 / n2 : 0)
+    printf "| %s | %s | %.4g | %.4g | %.4g | %.4g |\n", e, name[c], m1, (n1 ? s1 / n1 : 0), m2, (n2 ? s2 / n2 : 0)
   }
   missing = 0; for (k = 1; k <= n; k++) missing += !have[k]
   if (missing) printf "| %s | (%d of %d increments missing) | | | | |\n", e, missing, n

@@ -14,7 +14,7 @@ check() {
     fail=$((fail + 1)); echo "FAIL $1: got $2, expected $3 within $4"
   fi
 }
-err() { awk -F, -f "$top/scripts/first_peak.awk" -f "$top/scripts/path_error.awk" "$1" "$2"; }
+err() { awk -F, -f "$top/scripts/columns.awk" -f "$top/scripts/first_peak.awk" -f "$top/scripts/path_error.awk" "$1" "$2"; }
 # csv FILE AWK-BODY: rows k = 0..K of a servo_bc CSV with F12 = -0.01 k; the
 # body sets s11 s12 s22 from k (s21 = s12)
 csv() {

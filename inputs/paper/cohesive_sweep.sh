@@ -36,7 +36,7 @@ SBC
 # F12 = 0.1, where the paper's peaks are (frictional near 0.06, cohesive near
 # 0.07); beyond it the frictional layer slips and rises again at random
 peak() {
-  awk -F, 'NR > 1 && $1 >= 6 && $3 <= 0.1 + 1e-9 { r = -$11 / $13; if (r > m) { m = r; at = $3 } } END { printf "%.4f %.4f", m, at }' "$dir/$1.csv"
+  awk -F, "$COLUMNS_AWK"'NR > 1 && $col("increment") >= 6 && $col("F12") <= 0.1 + 1e-9 { r = -$col("sigma12") / $col("sigma22"); if (r > m) { m = r; at = $col("F12") } } END { printf "%.4f %.4f", m, at }' "$dir/$1.csv"
 }
 run frictional "contact frictional kn 1e8 ks 4e7 mu 0.6"
 set -- $(peak frictional)
@@ -48,7 +48,7 @@ table=$top/out/paper/cohesive_sweep.md
   echo "| frictional | $fp | $fat | 1 | – | – |"
 } > "$table"
 series=("$dir/frictional_ratio.csv" frictional)
-awk -F, 'NR > 1 && $1 >= 6 { printf "%s,%.10g\n", $3, -$11 / $13 }' "$dir/frictional.csv" | (echo "F12,ratio"; cat) > "$dir/frictional_ratio.csv"
+awk -F, "$COLUMNS_AWK"'NR > 1 && $col("increment") >= 6 { printf "%s,%.10g\n", $col("F12"), -$col("sigma12") / $col("sigma22") }' "$dir/frictional.csv" | (echo "F12,ratio"; cat) > "$dir/frictional_ratio.csv"
 for k in $factors; do
   name=cohesive_x$k
   fn=$(awk -v k="$k" 'BEGIN { printf "%.6g %.6g %.6g", 300 * k, 60 * k, 0.2 * k }')
@@ -60,7 +60,7 @@ for k in $factors; do
     END { printf "%s %s", b[6], bf[at + 0] }' "$dir/$name.log")
   set -- "$1" "$2" $bonds
   echo "| $k | $1 | $2 | $(awk -v a="$1" -v b="$fp" 'BEGIN { printf "%.2f", a / b }') | ${3:-?} | ${4:-?} |" >> "$table"
-  awk -F, 'NR > 1 && $1 >= 6 { printf "%s,%.10g\n", $3, -$11 / $13 }' "$dir/$name.csv" | (echo "F12,ratio"; cat) > "$dir/${name}_ratio.csv"
+  awk -F, "$COLUMNS_AWK"'NR > 1 && $col("increment") >= 6 { printf "%s,%.10g\n", $col("F12"), -$col("sigma12") / $col("sigma22") }' "$dir/$name.csv" | (echo "F12,ratio"; cat) > "$dir/${name}_ratio.csv"
   series+=("$dir/${name}_ratio.csv" "strengths x $k")
 done
 cat "$table"

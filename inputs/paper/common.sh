@@ -1,5 +1,7 @@
 # Shared by fig*.sh: build, plotting and the run table.
 top=$(cd "$(dirname "$0")/../.." && pwd)
+# results files are read by column name (scripts/columns.awk)
+COLUMNS_AWK=$(cat "$top/scripts/columns.awk")
 make -s -C "$top" all
 plot=$top/build/servo-bc-plot
 fig=$top/docs/figures
@@ -9,7 +11,7 @@ S=-1.02e-7
 # summary_row LABEL CSV: steps, iterations mean and max, wall time of one run
 summary_row() {
   local log=${2%.csv}.log
-  awk -F, -v label="$1" 'NR > 1 { s += $17; it += $16; if ($16 > m) m = $16; n++ }
+  awk -F, -v label="$1" "$COLUMNS_AWK"'NR > 1 { s += $col("relax_steps"); it += $col("iterations"); if ($col("iterations") > m) m = $col("iterations"); n++ }
     END { printf "| %s | %d | %d | %.1f | %d |", label, n, s, it / n, m }' "$2"
   awk '/finished/ { for (i = 1; i <= NF; i++) if ($i == "wall") printf " %s s |\n", $(i + 1) }' "$log"
 }
@@ -22,9 +24,9 @@ rbar() { awk '$1 != "box" && $1 !~ /^#/ && NF >= 3 { s += $3; n++ } END { printf
 # path_norm CSV SCALE [FMAX]: eq. 42, (sum_ij int (SCALE sigma_ij)^2 dF12)^(1/2),
 # trapezoid over the rows with F12 <= FMAX (default: all)
 path_norm() {
-  awk -F, -v s="$2" -v fmax="${3:-1e300}" 'NR > 1 && $3 <= fmax + 1e-12 { f = $3; a = ($10^2 + $11^2 + $12^2 + $13^2) * s * s
+  awk -F, -v s="$2" -v fmax="${3:-1e300}" "$COLUMNS_AWK"'NR > 1 && $col("F12") <= fmax + 1e-12 { f = $col("F12"); a = ($col("sigma11")^2 + $col("sigma12")^2 + $col("sigma21")^2 + $col("sigma22")^2) * s * s
       if (n++) sum += 0.5 * (a + prev) * (f - fp); prev = a; fp = f }
     END { printf "%.6g", sqrt(sum) }' "$1"
 }
 # last_F12 CSV: F12 of the last converged increment
-last_F12() { tail -n 1 "$1" | cut -d, -f3; }
+last_F12() { awk -F, "$COLUMNS_AWK"'NR > 1 { f = $col("F12") } END { print f }' "$1"; }

@@ -61,7 +61,7 @@ SBC
     [ "$set" = converged ] && [ -f "$svg" ] && cp "$svg" "$fig/fig12_${law}_${pair%%:*}.svg"
   done
   # Fig. 11: F12 of stage 2, -sigma12/sigma22 (a), det F from the state after stage 1 (b), mean rotation (c)
-  awk -F, 'NR > 1 && $1 >= 6 { printf "%s,%.10g,%.10g,%s\n", $3, -$11 / $13, $2 * $5 - $3 * $4, $15 }' "$out/$name.csv" |
+  awk -F, "$COLUMNS_AWK"'NR > 1 && $col("increment") >= 6 { printf "%s,%.10g,%.10g,%s\n", $col("F12"), -$col("sigma12") / $col("sigma22"), $col("F11") * $col("F22") - $col("F12") * $col("F21"), $col("rotation_mean") }' "$out/$name.csv" |
     (echo "F12,ratio,detF,rotation"; cat) > "$out/${name}_fig11.csv"
   tail -n 1 "$out/$name.log"
 done
@@ -83,7 +83,7 @@ done
     f=$out/mixed_${run%_paper}_${n0}${run#${run%_paper}}_fig11.csv
     [ -f "$f" ] || continue
     wall=$(awk '/finished/ { for (i = 1; i <= NF; i++) if ($i == "wall") print $(i + 1) " s" }' "${f%_fig11.csv}.log")
-    steps=$(awk -F, 'NR > 1 { s += $17 } END { print s }' "${f%_fig11.csv}.csv")
+    steps=$(awk -F, "$COLUMNS_AWK"'NR > 1 { s += $col("relax_steps") } END { print s }' "${f%_fig11.csv}.csv")
     awk -F, -v law="$law" -v wall="${wall:-stopped}" -v steps="$steps" 'NR > 1 {
         if ($2 > m) { m = $2; at = $1 } if ($1 <= 0.1 + 1e-9 && $2 > m1) { m1 = $2; at1 = $1 }
         if (!r0 && NR == 2) r0 = $4; if (!d4 && $1 >= 0.04 - 1e-9) d4 = $3; last = $2; lf = $1; dl = $3; rl = $4 }
@@ -101,8 +101,9 @@ cat "$out/fig11.md"
     law=${run%_paper}; [ "$run" = "$law" ] || law="$law, paper settings"
     f=$out/mixed_${run%_paper}_${n0}${run#${run%_paper}}.csv
     [ -f "$f" ] || continue
-    awk -F, -v law="$law" 'NR > 1 { n++; h = $23 < 0 ? -$23 : $23; if (h > hm) hm = h; if ($22 > fr) fr = $22
-        if ($1 >= 6) { d = $9 / -1.05e6 - 1; d = d < 0 ? -d : d; if (d > pm) pm = d } }
+    awk -F, -v law="$law" "$COLUMNS_AWK"'NR > 1 { n++; h = $col("hill_mandel"); h = h < 0 ? -h : h; if (h > hm) hm = h
+        if ($col("frame_residual") > fr) fr = $col("frame_residual")
+        if ($col("increment") >= 6) { d = $col("P22") / -1.05e6 - 1; d = d < 0 ? -d : d; if (d > pm) pm = d } }
       END { printf "| %s | %d | %.2g | %.2g | %.2g |\n", law, n, hm, pm, fr }' "$f"
   done
 } > "$out/fig11_mixed.md"
