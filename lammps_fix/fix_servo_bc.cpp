@@ -30,13 +30,13 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "sbc/columns.h"
 #include "sbc/results.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-enum { VEC_SIZE = 21 };
 enum { CALLBACK_GROW = 0, CALLBACK_RESTART = 1 };    // Atom::GROW, Atom::RESTART in LAMMPS
 // marks fix servo_bc's restart block (and its layout: bump on any change)
 const double RESTART_MAGIC = 8.020001e7;
@@ -65,7 +65,7 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   }
 
   vector_flag = 1;
-  size_vector = VEC_SIZE;
+  size_vector = SBC_THERMO_COUNT;
   global_freq = 1;
   extvector = 0;
   time_integrate = 0;    // moves only the frame atoms, which no integrator may own (checked in init)
@@ -649,23 +649,8 @@ void FixServoBC::post_force(int)
 
 double FixServoBC::compute_vector(int n)
 {
-  if (n == 0) return last.increment;
-  if (n <= 12) {  // 1-12: F, P, sigma, each 11 12 21 22
-    const double *t = n <= 4 ? last.F : n <= 8 ? last.P : last.sigma;
-    const int k = (n - 1) % 4;
-    return t[SBC_IJ(k / 2, k % 2)];
-  }
-  // 13-16: the servo's progress in the increment under way (thermo shows it live)
-  int iteration;
-  double r[3];
-  sbc_controller_progress(ctl, &iteration, &r[0], &r[1], &r[2]);
-  if (n <= 15) return r[n - 13];
-  if (n == 16) return iteration;
-  if (n == 17) return finished;
-  // 18-20: the accuracy the last converged increment was accepted at
-  if (n == 18) return last.unbalanced;
-  if (n == 19) return last.frame_residual;
-  return last.hill_mandel;
+  // the layout is the core's (columns.h: result columns by name, then the increment under way)
+  return sbc_thermo_value(ctl, &last, finished, n);
 }
 
 /* global restart data, written by rank 0: frame, atom IDs, masses, controller

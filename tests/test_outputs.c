@@ -4,6 +4,7 @@
 #include "csv_read.h"
 #include "tests.h"
 
+#include "sbc/columns.h"
 #include "sbc/plot.h"
 #include "sbc/script.h"
 
@@ -12,8 +13,38 @@
 #include <string.h>
 
 
+/* The fixes' thermo vector (columns.h): the 0.2.0 layout that decks index,
+ * f_ID[1] increment, [2-5] F, [6-9] P, [10-13] sigma, [18] finished,
+ * [19-21] unbalanced, frame_residual, hill_mandel, read from a row. */
+static void thermo_vector(void)
+{
+    sbc_result r;
+    int k, named = 0;
+    memset(&r, 0, sizeof r);
+    r.increment = 7;
+    for (k = 0; k < 9; ++k) {
+        r.F[k] = 1.0 + k;
+        r.P[k] = 10.0 + k;
+        r.sigma[k] = 20.0 + k;
+    }
+    r.unbalanced = 1e-5, r.frame_residual = 2e-5, r.hill_mandel = -3e-9;
+    for (k = 0; k < SBC_THERMO_COUNT; ++k)
+        named += sbc_thermo_vector[k].kind == SBC_THERMO_COLUMN && sbc_column_index(sbc_thermo_vector[k].column) >= 0;
+    CHECK(named == 16);
+    CHECK(sbc_thermo_value(NULL, &r, 0, 0) == 7.0);
+    /* F11 F12 F21 F22 are slots 0 1 3 4 of the 3 x 3 storage */
+    CHECK(sbc_thermo_value(NULL, &r, 0, 1) == 1.0 && sbc_thermo_value(NULL, &r, 0, 2) == 2.0 &&
+          sbc_thermo_value(NULL, &r, 0, 3) == 4.0 && sbc_thermo_value(NULL, &r, 0, 4) == 5.0);
+    CHECK(sbc_thermo_value(NULL, &r, 0, 8) == 14.0 && sbc_thermo_value(NULL, &r, 0, 12) == 24.0);
+    CHECK(sbc_thermo_value(NULL, &r, 1, 17) == 1.0 && sbc_thermo_value(NULL, &r, 0, 17) == 0.0);
+    CHECK(sbc_thermo_value(NULL, &r, 0, 18) == 1e-5 && sbc_thermo_value(NULL, &r, 0, 19) == 2e-5 &&
+          sbc_thermo_value(NULL, &r, 0, 20) == -3e-9);
+    CHECK(sbc_thermo_value(NULL, &r, 0, SBC_THERMO_COUNT) == 0.0 && sbc_thermo_value(NULL, &r, 0, -1) == 0.0);
+}
+
 void test_outputs(void)
 {
+    thermo_vector();
     char script[2048], csv[512], path[600], prefix[512], svg[512];
     static double rows[16][CSV_COLS];
     sbc_error err;

@@ -1,7 +1,8 @@
 /* servo_bc: the result columns, one table (name, unit, the dimensions that
  * have the column, how it is written, description) that drives the results
  * file's header and rows (results.h), the hosts' result row (host.h), the
- * YADE module's COLUMNS and the docs' column table (tests/tables.sh checks
+ * YADE module's COLUMNS, the fixes' thermo vector (sbc_thermo_vector) and the
+ * docs' column table (tests/tables.sh checks
  * docs/servo_bc.md against it). Adding a column is one line here and the code
  * that computes it; new columns are only ever appended. */
 #ifndef SBC_COLUMNS_H
@@ -50,6 +51,31 @@ int sbc_column_index(const char *name);
 /* The header line of the results file into out [cap]: the names joined by
  * commas, no newline. Returns its length (as snprintf). */
 int sbc_columns_header(char *out, size_t cap);
+
+/* The thermo vector of the LAMMPS and LIGGGHTS fixes, f_ID[1] ..
+ * f_ID[SBC_THERMO_COUNT]: result columns of the last converged increment by
+ * name, and the progress of the increment under way. The layout is that of
+ * 0.2.0 (input decks index it); new entries are only ever appended. */
+typedef enum sbc_thermo_kind {
+    SBC_THERMO_COLUMN = 0,   /* the result column `column` */
+    SBC_THERMO_R_FORCE,      /* the force residual so far in the increment under way */
+    SBC_THERMO_R_MOMENT,     /* the moment residual so far */
+    SBC_THERMO_R_DEFORMATION, /* the deformation residual so far */
+    SBC_THERMO_ITERATION,    /* servo iterations so far */
+    SBC_THERMO_FINISHED      /* 1 once the loading path is finished */
+} sbc_thermo_kind;
+
+typedef struct sbc_thermo_entry {
+    sbc_thermo_kind kind;
+    const char *column; /* SBC_THERMO_COLUMN: the column's name */
+} sbc_thermo_entry;
+
+#define SBC_THERMO_COUNT 21
+extern const sbc_thermo_entry sbc_thermo_vector[SBC_THERMO_COUNT];
+
+/* Entry k (0-based: f_ID[k + 1]) for a controller c whose last converged row
+ * is last; 0 outside the vector. */
+double sbc_thermo_value(const sbc_controller *c, const sbc_result *last, int finished, int k);
 
 #ifdef __cplusplus
 }

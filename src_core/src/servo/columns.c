@@ -81,3 +81,31 @@ int sbc_columns_header(char *out, size_t cap)
     }
     return (int)used;
 }
+
+#define COLUMN(name) {SBC_THERMO_COLUMN, name}
+const sbc_thermo_entry sbc_thermo_vector[SBC_THERMO_COUNT] = {
+    COLUMN("increment"), COLUMN("F11"), COLUMN("F12"), COLUMN("F21"), COLUMN("F22"),
+    COLUMN("P11"), COLUMN("P12"), COLUMN("P21"), COLUMN("P22"),
+    COLUMN("sigma11"), COLUMN("sigma12"), COLUMN("sigma21"), COLUMN("sigma22"),
+    {SBC_THERMO_R_FORCE, NULL}, {SBC_THERMO_R_MOMENT, NULL}, {SBC_THERMO_R_DEFORMATION, NULL},
+    {SBC_THERMO_ITERATION, NULL}, {SBC_THERMO_FINISHED, NULL},
+    COLUMN("unbalanced"), COLUMN("frame_residual"), COLUMN("hill_mandel"),
+};
+
+double sbc_thermo_value(const sbc_controller *c, const sbc_result *last, int finished, int k)
+{
+    const sbc_thermo_entry *t;
+    double values[SBC_COLUMNS], r[3];
+    int iteration;
+    if (k < 0 || k >= SBC_THERMO_COUNT)
+        return 0.0;
+    t = &sbc_thermo_vector[k];
+    if (t->kind == SBC_THERMO_COLUMN) {
+        sbc_column_values(last, values);
+        return values[sbc_column_index(t->column)];
+    }
+    if (t->kind == SBC_THERMO_FINISHED)
+        return finished;
+    sbc_controller_progress(c, &iteration, &r[0], &r[1], &r[2]);
+    return t->kind == SBC_THERMO_ITERATION ? iteration : r[t->kind - SBC_THERMO_R_FORCE];
+}
