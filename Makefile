@@ -22,7 +22,7 @@ B        = build
 # handle), engines (the embedded 2D and 3D engines, packings), io (results,
 # VTK, plots), runner (the script language of servo-bc)
 CORE_SRC = $(wildcard src_core/src/*/*.c)
-CORE_HDR = $(wildcard src_core/include/sbc/*.h src_core/src/*/*.h)
+CORE_HDR = $(wildcard src_core/include/sbc/*.h src_core/include/sbc/embedded/*.h src_core/src/*/*.h)
 CORE_OBJ = $(CORE_SRC:src_core/src/%.c=$(B)/core/%.o)
 TEST_SRC = $(wildcard tests/*.c)
 # the servo-bc program's own sources beyond main.c: host syntax (the decks of
@@ -83,7 +83,7 @@ deps:
 	@bash scripts/install-deps.sh core
 
 # every public header in one C++ translation unit, linked without a wrapper
-$(B)/cxx_headers: tests/cxx_headers.cpp $(B)/libservo_bc.a $(wildcard src_core/include/sbc/*.h)
+$(B)/cxx_headers: tests/cxx_headers.cpp $(B)/libservo_bc.a $(wildcard src_core/include/sbc/*.h src_core/include/sbc/embedded/*.h)
 	c++ -std=c++11 -Wall -Wextra -pedantic -Werror -Isrc_core/include -o $@ tests/cxx_headers.cpp $(B)/libservo_bc.a -lm
 
 check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B)/libservo_bc.so $(B)/fuzz/restart_seed

@@ -8,7 +8,7 @@
  *                                    driven through the controller each step */
 #define _POSIX_C_SOURCE 200809L
 #include "sbc/controller.h"
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "sbc/packing.h"
 
 #include <stdio.h>

@@ -7,7 +7,7 @@
  * test_generate.c, test_bpm.c and test_input.c cover those commands. */
 #include "fuzz.h"
 
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 
 static int jams(const char *text)
 {

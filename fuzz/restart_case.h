@@ -3,7 +3,7 @@
 #ifndef SBC_FUZZ_RESTART_CASE_H
 #define SBC_FUZZ_RESTART_CASE_H
 
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "sbc/frame.h"
 #include "sbc/packing.h"
 #include "sbc/settings.h"

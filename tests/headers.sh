@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# Every public header (src_core/include/sbc/*.h) can be included from C++
+# Every public header (src_core/include/sbc/*.h, the host-facing ones, and
+# sbc/embedded/*.h, the embedded engines' and runner's) can be included from C++
 # without a wrapper: after its include guard and includes, an extern "C" block
 # that opens before its first declaration and closes before the guard's
 # #endif (tests/cxx_headers.cpp links a few of them from C++). Prints
 # "N passed, N failed".
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
-python3 - "$top"/src_core/include/sbc/*.h <<'PY'
+python3 - "$top"/src_core/include/sbc/*.h "$top"/src_core/include/sbc/embedded/*.h <<'PY'
 import re, sys
 passed = failed = 0
 for path in sys.argv[1:]:

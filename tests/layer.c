@@ -1,6 +1,6 @@
 #include "layer.h"
 
-#include "sbc/generate.h"
+#include "sbc/embedded/generate.h"
 
 sbc_engine *test_layer(sbc_packing *p, sbc_frame *f, int fire)
 {

@@ -4,7 +4,7 @@
 #ifndef SBC_TEST_LAYER_H
 #define SBC_TEST_LAYER_H
 
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "sbc/frame.h"
 #include "sbc/packing.h"
 

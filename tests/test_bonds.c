@@ -7,7 +7,7 @@
 #include "check.h"
 #include "tests.h"
 
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 
 #include <math.h>
 #include <string.h>
@@ -209,7 +209,7 @@ void test_rattler_energy(void)
  * frictional lattice would carry nothing) while the bonds carry shear; the log
  * counts the bonds, the VTK and SVG snapshots show them. */
 #include "csv_read.h"
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 
 #include <stdio.h>
 

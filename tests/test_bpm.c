@@ -7,10 +7,10 @@
 #include "tests.h"
 
 #include "sbc/bpm.h"
-#include "sbc/bpm_loading.h"
-#include "sbc/bpm_packing.h"
-#include "sbc/bpm_stress.h"
-#include "sbc/script.h"
+#include "sbc/embedded/bpm_loading.h"
+#include "sbc/embedded/bpm_packing.h"
+#include "sbc/embedded/bpm_stress.h"
+#include "sbc/embedded/script.h"
 
 #include <math.h>
 #include <string.h>

@@ -8,7 +8,7 @@
 #include "tests.h"
 
 #include "sbc/cohesive_host.h"
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -5,9 +5,9 @@
 #include "tests.h"
 
 #include "sbc/frame.h"
-#include "sbc/generate.h"
-#include "sbc/plot.h"
-#include "sbc/script.h"
+#include "sbc/embedded/generate.h"
+#include "sbc/embedded/plot.h"
+#include "sbc/embedded/script.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -5,10 +5,10 @@
 #include "csv_read.h"
 #include "tests.h"
 
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "sbc/host.h"
 #include "sbc/packing.h"
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -5,7 +5,7 @@
 #include "csv_read.h"
 #include "tests.h"
 
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 #include "sbc/settings.h"
 
 #include <stdio.h>

@@ -23,7 +23,7 @@
 #include "csv_read.h"
 #include "tests.h"
 
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 
 #include <stdio.h>
 

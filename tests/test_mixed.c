@@ -5,14 +5,14 @@
  * prescribed stress after stage 1 and the prescribed shear in stage 2; the
  * residuals are recomputed here from the raw reaction forces. */
 #include "check.h"
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 #include "csv_read.h"
 #include "layer.h"
 #include "tests.h"
 
 #include "sbc/controller.h"
-#include "sbc/engine.h"
-#include "sbc/generate.h"
+#include "sbc/embedded/engine.h"
+#include "sbc/embedded/generate.h"
 #include "sbc/homogenize.h"
 
 #include <math.h>

@@ -5,8 +5,8 @@
 #include "tests.h"
 
 #include "sbc/columns.h"
-#include "sbc/plot.h"
-#include "sbc/script.h"
+#include "sbc/embedded/plot.h"
+#include "sbc/embedded/script.h"
 
 #include <stdio.h>
 #include <stdlib.h>

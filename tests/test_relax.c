@@ -3,7 +3,7 @@
 #include "tests.h"
 
 #include "sbc/controller.h"
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "sbc/fire_damping.h"
 #include "sbc/frame.h"
 #include "sbc/packing.h"

@@ -6,7 +6,7 @@
 #include "tests.h"
 
 #include "sbc/controller.h"
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "sbc/packing.h"
 
 #include <math.h>

@@ -5,9 +5,9 @@
 #include "csv_read.h"
 #include "tests.h"
 
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "sbc/host.h"
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 #include "sbc/seal.h"
 #include "sbc/settings.h"
 

@@ -7,11 +7,11 @@
 #include "tests.h"
 
 #include "sbc/controller.h"
-#include "sbc/engine.h"
-#include "sbc/generate.h"
+#include "sbc/embedded/engine.h"
+#include "sbc/embedded/generate.h"
 #include "sbc/homogenize.h"
 #include "sbc/packing.h"
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -11,7 +11,7 @@
  * cohesive in LAMMPS and LIGGGHTS, servo_bc.Cohesive in YADE. */
 #include "decks.h"
 #include "runner/script_state.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/output_file.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -3,7 +3,7 @@
 #ifndef SBC_RUNNER_DECKS_H
 #define SBC_RUNNER_DECKS_H
 
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 
 /* Writes into the folder dir the packing in every host's format and
  * embedded.sbc, lammps.in, liggghts.in, yade.py for the case s (sbc_script_decks_fn). */

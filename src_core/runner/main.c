@@ -9,7 +9,7 @@
 #include "decks.h"
 #include "sbc/columns.h"
 #include "sbc/keywords.h"
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 #include "sbc/version.h"
 
 #include <signal.h>

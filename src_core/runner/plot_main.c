@@ -4,7 +4,7 @@
  *
  * Plots YSCALE * YCOL against XSCALE * XCOL for every FILE (column names of
  * the CSV header, e.g. F12 -1 sigma11 -1.02e-7). */
-#include "sbc/plot.h"
+#include "sbc/embedded/plot.h"
 #include "sbc/settings.h"
 
 #include <stdio.h>

@@ -1,7 +1,7 @@
 /* servo_bc: uniaxial test on a bonded specimen (thesis Sect. 4.3). */
-#include "sbc/bpm_loading.h"
-#include "sbc/bpm_packing.h"
-#include "sbc/bpm_stress.h"
+#include "sbc/embedded/bpm_loading.h"
+#include "sbc/embedded/bpm_packing.h"
+#include "sbc/embedded/bpm_stress.h"
 
 #include <math.h>
 #include <stdlib.h>

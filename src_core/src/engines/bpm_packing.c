@@ -1,5 +1,5 @@
 /* servo_bc: lattice packings of equal spheres (thesis Sect. 4.1). */
-#include "sbc/bpm_packing.h"
+#include "sbc/embedded/bpm_packing.h"
 #include "sbc/packing.h"
 
 #include <math.h>

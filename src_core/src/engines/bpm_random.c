@@ -1,6 +1,6 @@
 /* servo_bc: random close packing of equal spheres in a box by radius
  * expansion (thesis Sect. 4.1, our own algorithm; bpm_packing.h). */
-#include "sbc/bpm_packing.h"
+#include "sbc/embedded/bpm_packing.h"
 #include "fire.h"
 #include "sbc/packing.h"
 

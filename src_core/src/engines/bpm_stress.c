@@ -1,6 +1,6 @@
 /* servo_bc: particle and RVE stress (thesis eqs. 54-62). */
-#include "sbc/bpm_stress.h"
-#include "sbc/bpm_packing.h"
+#include "sbc/embedded/bpm_stress.h"
+#include "sbc/embedded/bpm_packing.h"
 
 #include <stdlib.h>
 #include <string.h>

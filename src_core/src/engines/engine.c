@@ -1,5 +1,5 @@
 /* Embedded 2D disc engine (paper Sect. 2.2). */
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "sbc/fire_damping.h"
 #include "sbc/seal.h"
 

@@ -1,6 +1,6 @@
 /* Irregular polydisperse periodic packings: jamming by box shrinking with FIRE
  * overlap minimization, then the periodic reconstruction of Sect. 4.2. */
-#include "sbc/generate.h"
+#include "sbc/embedded/generate.h"
 #include "fire.h"
 
 #include <math.h>

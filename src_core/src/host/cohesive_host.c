@@ -3,7 +3,7 @@
  * integrated. */
 #include "sbc/cohesive_host.h"
 #include "sbc/contact.h"
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "base/words.h"
 
 #include <math.h>

@@ -1,8 +1,8 @@
 /* servo_bc: VTK snapshot of the 3D bonded particle engine, for ParaView. */
-#include "sbc/bpm_vtk.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/bpm_vtk.h"
+#include "sbc/embedded/output_file.h"
 
-#include "sbc/bpm_stress.h"
+#include "sbc/embedded/bpm_stress.h"
 
 #include <stdio.h>
 #include <stdlib.h>

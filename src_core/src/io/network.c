@@ -1,7 +1,7 @@
 /* Contact network picture (Figs. 8 and 12) as a self-contained SVG file. */
-#include "sbc/network.h"
+#include "sbc/embedded/network.h"
 #include "sbc/confine.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/output_file.h"
 
 #include <float.h>
 #include <math.h>

@@ -1,6 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 /* servo_bc: opening an output file (output_file.h). */
-#include "sbc/output_file.h"
+#include "sbc/embedded/output_file.h"
 
 #include <errno.h>
 #include <fcntl.h>

@@ -1,6 +1,6 @@
 /* Packing writers: one packing, read by every host (text, LAMMPS and LIGGGHTS data, YADE). */
 #include "sbc/packing.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/output_file.h"
 
 #include <math.h>
 #include <stdio.h>

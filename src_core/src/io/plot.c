@@ -1,5 +1,5 @@
-#include "sbc/plot.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/plot.h"
+#include "sbc/embedded/output_file.h"
 
 #include <float.h>
 #include <math.h>

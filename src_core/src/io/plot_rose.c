@@ -1,6 +1,6 @@
 /* Rose diagram of contact orientations (paper Fig. 6c) as an SVG file. */
-#include "sbc/plot.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/plot.h"
+#include "sbc/embedded/output_file.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -2,7 +2,7 @@
 /* servo_bc: the results file (results.h). */
 #include "sbc/results.h"
 #include "sbc/columns.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/output_file.h"
 
 #include <errno.h>
 #include <math.h>

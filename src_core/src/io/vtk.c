@@ -1,5 +1,5 @@
-#include "sbc/vtk.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/vtk.h"
+#include "sbc/embedded/output_file.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -12,14 +12,14 @@
  *   run */
 #define _POSIX_C_SOURCE 200809L
 #include "script_state.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/output_file.h"
 #include "base/words.h"
 
 #include "sbc/bpm.h"
-#include "sbc/bpm_loading.h"
-#include "sbc/bpm_packing.h"
-#include "sbc/bpm_stress.h"
-#include "sbc/bpm_vtk.h"
+#include "sbc/embedded/bpm_loading.h"
+#include "sbc/embedded/bpm_packing.h"
+#include "sbc/embedded/bpm_stress.h"
+#include "sbc/embedded/bpm_vtk.h"
 #include "sbc/settings.h"
 
 #include <math.h>

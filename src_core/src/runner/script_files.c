@@ -3,7 +3,7 @@
  * script read, or an output an earlier command of the script or another
  * output of the same run writes. */
 #include "script_state.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/output_file.h"
 
 #include <limits.h>
 #include <stdlib.h>

@@ -1,10 +1,10 @@
 /* Runner commands on packings: generate, write_packing, rose. */
 #include "script_state.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/output_file.h"
 
 #include "sbc/frame.h"
-#include "sbc/generate.h"
-#include "sbc/plot.h"
+#include "sbc/embedded/generate.h"
+#include "sbc/embedded/plot.h"
 
 #include <stdlib.h>
 #include <string.h>

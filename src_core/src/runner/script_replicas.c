@@ -13,7 +13,7 @@
 #include "script_state.h"
 
 #include "sbc/frame.h"
-#include "sbc/output_file.h"
+#include "sbc/embedded/output_file.h"
 
 #include <math.h>
 #include <stdint.h>

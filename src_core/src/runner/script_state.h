@@ -3,7 +3,7 @@
 #ifndef SBC_SCRIPT_STATE_H
 #define SBC_SCRIPT_STATE_H
 
-#include "sbc/script.h"
+#include "sbc/embedded/script.h"
 #include "sbc/contact.h"
 #include "sbc/packing.h"
 #include "sbc/settings.h"

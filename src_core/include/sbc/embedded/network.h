@@ -9,7 +9,7 @@
 #ifndef SBC_NETWORK_H
 #define SBC_NETWORK_H
 
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 #include "sbc/frame.h"
 
 #ifdef __cplusplus

@@ -11,7 +11,7 @@
 #ifndef SBC_VTK_H
 #define SBC_VTK_H
 
-#include "sbc/engine.h"
+#include "sbc/embedded/engine.h"
 
 #ifdef __cplusplus
 extern "C" {
