@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The presets against the frictional lattice's closed form (docs/servo_bc.md,
-# "Accuracy", the table "Measured"): N x N frictional square lattices (R =
+# The presets against the frictional lattice's closed form
+# (docs/speed-accuracy.md, "The presets on the closed-form lattices"): N x N frictional square lattices (R =
 # 1.02 mm, spacing 2 mm, kn 1e4, ks 2e3 N/m, mu 0.4, dt 1e-5 s), F =
 # diag(0.99, 0.995) in 4 increments, (D) and (P), every preset, against the
 # affine closed form of tests/test_lattice.c. Prints one markdown row per run:

@@ -1,5 +1,5 @@
 /* Private: the controller's tuning constants, a line each. Why each has its
- * value, with the measurements, is in docs/servo_bc.md, "Tuning constants". */
+ * value, with the measurements, is in docs/tuning.md. */
 #ifndef SBC_TUNING_H
 #define SBC_TUNING_H
 
