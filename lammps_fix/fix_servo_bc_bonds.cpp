@@ -115,7 +115,7 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
 
 FixServoBCBonds::~FixServoBCBonds()
 {
-  sbc_bpm_destroy(bonds);
+  sbc_bpm_free(bonds);
   sbc_cohesive_host_free(contacts);
 }
 

@@ -222,7 +222,7 @@ static void test_beam_chains(void)
         CHECK_REL(en.external, F * d, 1e-6);        /* eq. 52: the load's work */
         CHECK(en.balance < 1e-9);                   /* eq. 53, far inside 1e-2 */
         CHECK_REL(en.strain, 0.5 * F * d, 1e-6);    /* Clapeyron: half the work is stored */
-        sbc_bpm_destroy(e);
+        sbc_bpm_free(e);
     }
 }
 
@@ -281,7 +281,7 @@ static void test_beam_vibration(void)
     CHECK(f < fn);          /* the ends' remaining inertia can only slow it */
     en = sbc_bpm_energies(e);
     CHECK(en.balance < 1e-9);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
 }
 
 /* Table 2 at r_p = 5 mm in 0.25 x 0.1 x 0.1 m: uniform 2500 spheres, C_n
@@ -301,7 +301,7 @@ static void test_lattices(void)
     CHECK(e->nb == 24 * 10 * 10 + 2 * 25 * 9 * 10);
     CHECK_REL(sbc_bpm_mean_coordination(e), 5.52, 1e-12);
     CHECK_REL(sbc_bpm_porosity(e, ext), 1.0 - SBC_PI / 6.0, 1e-12);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
     sbc_bpm_create(&s, &e, &err);
     CHECK(sbc_bpm_pack_lattice(e, SBC_PACK_HCP, box, 5e-3, 925.0, ext, &err) == SBC_OK);
     CHECK(sbc_bpm_bond_touching(e, &err) == SBC_OK);
@@ -313,7 +313,7 @@ static void test_lattices(void)
     CHECK_REL(ext[5] - ext[2], 0.0998, 1e-3);
     CHECK(sbc_bpm_pack_lattice(e, SBC_PACK_HCP, box, 0.2, 925.0, ext, &err) == SBC_ERR_INPUT);
     CHECK(strstr(err.message, "no sphere of radius 0.2") != NULL);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
 }
 
 /* Random close packing by radius expansion at 12.5 mm: n from the porosity
@@ -349,14 +349,14 @@ static void test_random_packing(void)
     sbc_bpm_create(&s, &again, &err);
     CHECK(sbc_bpm_pack_random(again, box, rp, 925.0, 0.48, 1, NULL, &err) == SBC_OK);
     CHECK(again->n == e->n && memcmp(again->x, e->x, 3 * e->n * sizeof(double)) == 0);
-    sbc_bpm_destroy(again);
+    sbc_bpm_free(again);
     sbc_bpm_create(&s, &again, &err);
     CHECK(sbc_bpm_pack_random(again, box, rp, 925.0, 0.40, 1, NULL, &err) == SBC_ERR_GEOMETRY);
     CHECK(strstr(err.message, "183 spheres of radius 0.0125 jam") != NULL);
     CHECK(sbc_bpm_pack_random(again, box, rp, 925.0, 0.30, 1, NULL, &err) == SBC_ERR_INPUT);
     CHECK(strstr(err.message, "porosity 0.3") != NULL);
-    sbc_bpm_destroy(again);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(again);
+    sbc_bpm_free(e);
     for (k = 0; k < 2; ++k) {
         sbc_bpm_uniaxial test = {rp, 1.5, k ? 1e-5 : -1e-5, 3000, NULL, 0};
         sbc_bpm_uniaxial_result res;
@@ -372,7 +372,7 @@ static void test_random_packing(void)
         CHECK(res.E > 0.0 && res.E < SBC_PI * EB / 4.0);
         if (k == 0)
             CHECK_REL(res.sigma_rve[0], res.sigma_load, 2.5e-2);
-        sbc_bpm_destroy(e);
+        sbc_bpm_free(e);
     }
     CHECK_REL(E[1], E[0], 5e-3);
 }
@@ -397,7 +397,7 @@ static void uniaxial_cubic(sbc_bond_model model, double rp, double velocity, sbc
     sbc_bpm_bond_touching(e, &err);
     e->dt = 0.6 * sbc_bpm_critical_dt(e);
     CHECK(sbc_bpm_uniaxial_run(e, &test, res, &err) == SBC_OK);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
 }
 
 static void test_uniaxial_cubic(void)
@@ -452,7 +452,7 @@ static void test_rve_stress(void)
             CHECK(fabs(res.sigma_rve[1] - res.sigma_rve[3]) < 1e-2 * fabs(res.sigma_load)); /* symmetric */
             if (lattices[l] == SBC_PACK_CUBIC) /* one chain per row: uniaxial to round-off */
                 CHECK(fabs(res.sigma_rve[4]) + fabs(res.sigma_rve[8]) < 1e-9 * fabs(res.sigma_load));
-            sbc_bpm_destroy(e);
+            sbc_bpm_free(e);
         }
 }
 
@@ -487,7 +487,7 @@ static void test_bending(void)
     test.steps = 10;
     CHECK(sbc_bpm_bending_run(e, &test, &res, &err) == SBC_ERR_INPUT); /* ramp longer than the run */
     CHECK(strstr(err.message, "ramp 5000, steps 10") != NULL);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
 }
 
 /* Optional failure (bpm_bond.h): two bonded spheres (r_p = 5 mm, parallel
@@ -551,7 +551,7 @@ static void test_failure(void)
     CHECK(e->reaction[6] < 0.0); /* pushed back by the contact */
     CHECK_REL(-e->reaction[6], k * (1e-2 - e->x[3]), 2e-2);
     CHECK(sbc_bpm_energies(e).balance < 1e-3);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
 
     e = pair(SBC_BOND_BEAM, 1e9, 2.0); /* twisting alone */
     peak = 0.0;
@@ -565,7 +565,7 @@ static void test_failure(void)
     CHECK(broke_at > 0);
     CHECK(peak <= 2.0 && peak > 2.0 * 0.99);
     CHECK(sbc_bpm_energies(e).balance < 1e-3); /* the breaking step's half increment: 5e-5 */
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
 
     e = pair(SBC_BOND_PARALLEL, 0.0, 0.0); /* no strength: no failure */
     e->vfix[6] = v;
@@ -573,7 +573,7 @@ static void test_failure(void)
         sbc_bpm_step(e, &err);
     CHECK(e->nbroken == 0 && e->broken == NULL);
     CHECK(e->reaction[6] > 100.0);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
 }
 
 /* Bad input is refused with a message. */
@@ -594,7 +594,7 @@ static void test_bpm_input(void)
     CHECK(sbc_bpm_add(e, x, -1.0, 925.0, NULL, &err) == SBC_ERR_INPUT);
     CHECK(strstr(err.message, "radius -1") != NULL);
     CHECK(sbc_bpm_step(e, &err) == SBC_ERR_INPUT); /* dt unset */
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
 }
 
 /* The runner's 3D grammar: a uniaxial run prints eq. 64's modulus, writes its

@@ -34,7 +34,7 @@ static void one_bond(void)
         CHECK_REL(load[6], -k * vb * dt, 1e-12); /* B pulled back */
         CHECK_ABS(load[1] + load[2] + load[7] + load[8], 0.0, 1e-12 * k * vb * dt);
         CHECK_REL(sbc_bpm_host_strain_energy(e), 0.5 * k * vb * dt * vb * dt, 1e-9);
-        sbc_bpm_destroy(e);
+        sbc_bpm_free(e);
     }
 }
 
@@ -91,7 +91,7 @@ static double host_chain(int n, const char *model)
         d = -x[3 * mid + 2];
     } while (++chunk < 1000 && fabs(d - prev) > 1e-9 * d_b1);
     CHECK(chunk < 1000);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
     return d;
 }
 
@@ -125,7 +125,7 @@ static double engine_chain(int n)
             sbc_bpm_step(e, &err);
         d = -e->x[3 * mid + 2];
     } while (++chunk < 1000 && fabs(d - prev) > 1e-10 * fabs(d));
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
     return d;
 }
 
@@ -160,8 +160,8 @@ static void state_roundtrip(void)
         CHECK(same);
         CHECK(la[0] != 0.0);
         CHECK_REL(sbc_bpm_host_strain_energy(b), sbc_bpm_host_strain_energy(a), 1e-15);
-        sbc_bpm_destroy(a);
-        sbc_bpm_destroy(b);
+        sbc_bpm_free(a);
+        sbc_bpm_free(b);
     }
 }
 
@@ -214,8 +214,8 @@ static void failure(void)
     }
     CHECK_REL(load[6], K * 5e-5, 1e-9);
     CHECK(again && load2[6] == load[6]);
-    sbc_bpm_destroy(again);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(again);
+    sbc_bpm_free(e);
     CHECK(!sbc_bpm_host_create("beam", EB, NUB, 1.0, (const double[5]){0, 1, 1, 1, 0}, 2, x, r, m, msg, sizeof msg) &&
           strstr(msg, "expected a tension > 0 N"));
 }

@@ -685,7 +685,7 @@ class Bonds(_BondedBodies):
 
     def __del__(self):
         if getattr(self, '_h', None) and _lib is not None:
-            _lib.sbc_bpm_destroy(self._h)
+            _lib.sbc_bpm_free(self._h)
             self._h = None
 
     def critical_dt(self):

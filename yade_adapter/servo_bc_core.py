@@ -70,7 +70,7 @@ def _load():
         'sbc_bpm_host_loads': (I, [P, pd, pd, pd, D, pd]),
         'sbc_bpm_host_strain_energy': (D, [P]),
         'sbc_bpm_critical_dt': (D, [P]),
-        'sbc_bpm_destroy': (None, [P]),
+        'sbc_bpm_free': (None, [P]),
         'sbc_cohesive_host_create': (P, [ctypes.c_char_p, I, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_cohesive_host_free': (None, [P]),
         'sbc_cohesive_host_kn': (D, [P]),

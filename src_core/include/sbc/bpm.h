@@ -102,7 +102,7 @@ sbc_bpm_settings sbc_bpm_settings_default(void);
 sbc_parallel_bond_law sbc_bpm_parallel_law(double E, double rp, double kn_over_ks);
 
 sbc_status sbc_bpm_create(const sbc_bpm_settings *set, sbc_bpm **out, sbc_error *err);
-void sbc_bpm_destroy(sbc_bpm *e);
+void sbc_bpm_free(sbc_bpm *e);
 
 /* Adds a sphere at x with radius r (m) and density rho (kg/m^3); returns its
  * index in *index (may be NULL). */

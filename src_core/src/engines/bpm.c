@@ -54,7 +54,7 @@ sbc_status sbc_bpm_create(const sbc_bpm_settings *set, sbc_bpm **out, sbc_error 
     return SBC_OK;
 }
 
-void sbc_bpm_destroy(sbc_bpm *e)
+void sbc_bpm_free(sbc_bpm *e)
 {
     if (!e)
         return;

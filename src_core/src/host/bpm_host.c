@@ -9,7 +9,7 @@ static sbc_bpm *fail_create(sbc_bpm *e, char *msg, size_t cap, const char *text)
 {
     if (msg && cap > 0)
         snprintf(msg, cap, "%s", text);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
     return NULL;
 }
 

@@ -335,7 +335,7 @@ static sbc_status cmd_run(script *s, struct bpm_script *b, sbc_error *err)
 done:
     if (series && fclose(series) != 0 && st == SBC_OK)
         st = sbc_fail(err, SBC_ERR_IO, "test: cannot finish '%s'", b->series);
-    sbc_bpm_destroy(e);
+    sbc_bpm_free(e);
     return st;
 }
 
