@@ -636,10 +636,9 @@ void FixServoBC::post_force(int)
     last = *sbc_controller_result(ctl);
     if (comm->me == 0 && csv.fp && sbc_csv_write(&csv, &last, &err) != SBC_OK)
       fail_here(err.message);
-    log("servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %ld iterations %d "
-        "unbalanced %.2g\n",
-        sbc_bc_name(settings.bc), last.increment, sbc_settings_total_increments(&settings), last.F[1],
-        last.sigma[0], last.sigma[1], (long) last.relax_steps, last.iterations, last.unbalanced);
+    char line[320];
+    sbc_result_line(&last, settings.bc, sbc_settings_total_increments(&settings), line, sizeof line);
+    log("%s\n", line);
   }
   if (ev == SBC_EVENT_FINISHED) {
     finished = 1;

@@ -5,6 +5,7 @@
 #include "tests.h"
 
 #include "sbc/columns.h"
+#include "sbc/results.h"
 #include "sbc/embedded/plot.h"
 #include "sbc/embedded/script.h"
 
@@ -40,6 +41,14 @@ static void thermo_vector(void)
     CHECK(sbc_thermo_value(NULL, &r, 0, 18) == 1e-5 && sbc_thermo_value(NULL, &r, 0, 19) == 2e-5 &&
           sbc_thermo_value(NULL, &r, 0, 20) == -3e-9);
     CHECK(sbc_thermo_value(NULL, &r, 0, SBC_THERMO_COUNT) == 0.0 && sbc_thermo_value(NULL, &r, 0, -1) == 0.0);
+    /* the one log line of every host (results.h) */
+    {
+        char line[320];
+        r.relax_steps = 1234, r.iterations = 5;
+        sbc_result_line(&r, SBC_BC_P, 10, line, sizeof line);
+        CHECK(strcmp(line, "servo_bc P: increment 7/10 F12 +2.00000 sigma11 +2.000000e+01 sigma12 +2.100000e+01 N/m "
+                           "steps 1234 iterations 5 unbalanced 1e-05 HM -3.0e-09") == 0);
+    }
 }
 
 void test_outputs(void)

@@ -537,9 +537,7 @@ class ServoBC(object):
             lib.sbc_host_result(self._h, self._row)
             row = dict(zip(self._columns, self._row))
             self.rows.append(row)
-            print('servo_bc: increment %d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %d iterations %d'
-                  % (row['increment'], row['F12'], row['sigma11'], row['sigma12'], row['relax_steps'],
-                     row['iterations']), flush=True)
+            print(lib.sbc_host_result_line(self._h).decode(), flush=True)
         if ev == FINISHED:
             self._stop(None)
             return

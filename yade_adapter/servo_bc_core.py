@@ -51,6 +51,7 @@ def _load():
         'sbc_host_needs': (ctypes.c_uint, [P, pd]),
         'sbc_host_step': (I, [P, pd, pd, pd, pd, pd]),
         'sbc_host_message': (ctypes.c_char_p, [P]),
+        'sbc_host_result_line': (ctypes.c_char_p, [P]),
         'sbc_host_progress': (None, [P, pd]),
         'sbc_host_command_x': (pd, [P]),
         'sbc_host_command_theta': (pd, [P]),

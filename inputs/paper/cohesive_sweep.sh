@@ -56,7 +56,7 @@ for k in $factors; do
   run "$name" "contact cohesive kn 1e8 ks 4e7 kr 20 fn $1 fs $2 mr $3 mu 0.6"
   set -- $(peak "$name")
   # the runner logs "bonds intact N" after each increment's line
-  bonds=$(awk -v at="$2" '/^increment/ { split($2, a, "/"); i = a[1]; f = $4 + 0 } /bonds intact/ { b[i] = $3; bf[f] = $3 }
+  bonds=$(awk -v at="$2" '$3 == "increment" { split($4, a, "/"); i = a[1]; f = $6 + 0 } /bonds intact/ { b[i] = $3; bf[f] = $3 }
     END { printf "%s %s", b[6], bf[at + 0] }' "$dir/$name.log")
   set -- "$1" "$2" $bonds
   echo "| $k | $1 | $2 | $(awk -v a="$1" -v b="$fp" 'BEGIN { printf "%.2f", a / b }') | ${3:-?} | ${4:-?} |" >> "$table"

@@ -92,6 +92,10 @@ int sbc_host_step(sbc_host *h, const double *measures, const double *x, const do
                   const double *torque);
 const char *sbc_host_message(const sbc_host *h);
 
+/* The log line of the last converged increment (results.h, sbc_result_line),
+ * owned by the handle. */
+const char *sbc_host_result_line(sbc_host *h);
+
 /* Progress within the increment under way (sbc_controller_progress), for the
  * progress lines of long increments: out [4] = servo iteration, residual
  * norms of force, moment and deformation. */

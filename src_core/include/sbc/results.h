@@ -36,6 +36,14 @@ sbc_status sbc_csv_resume(sbc_csv *csv, const char *path, int next, int *kept, s
 /* Writes one row with 17 significant digits; refuses a non-finite value. */
 sbc_status sbc_csv_write(sbc_csv *csv, const sbc_result *r, sbc_error *err);
 
+/* The log line of a converged increment, one format for every host (no
+ * newline), into out [cap]:
+ *   servo_bc P: increment 3/10 F12 +0.00300 sigma11 -2.396300e+02 sigma12 +1.234500e+01 N/m
+ *   steps 1234 iterations 5 unbalanced 3.2e-06 HM 1.1e-12
+ * total: the path's increments (sbc_settings_total_increments). Returns its
+ * length (as snprintf). */
+int sbc_result_line(const sbc_result *r, sbc_bc bc, int total, char *out, size_t cap);
+
 /* Closes the file (nothing when none is open). */
 void sbc_csv_close(sbc_csv *csv);
 

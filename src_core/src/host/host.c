@@ -30,6 +30,7 @@ struct sbc_host {
     int *slot;        /* [n] frame position, -1 interior */
     double *reaction; /* [3Q] N */
     char step_note[SBC_ERROR_LEN]; /* time_step.h: sbc_time_step_note, or "" */
+    char line[320];   /* sbc_host_result_line */
 };
 
 static int host_slot(const void *ctx, int k) { return ((const int *)ctx)[k]; }
@@ -311,6 +312,13 @@ int sbc_host_confined(sbc_host *h, const double *frame_x, int n, const long *ids
 }
 
 const char *sbc_host_message(const sbc_host *h) { return h->err.message; }
+
+const char *sbc_host_result_line(sbc_host *h)
+{
+    sbc_result_line(sbc_controller_result(h->ctl), h->settings.bc, sbc_settings_total_increments(&h->settings), h->line,
+                    sizeof h->line);
+    return h->line;
+}
 
 void sbc_host_progress(const sbc_host *h, double *out)
 {

@@ -5,6 +5,7 @@
 #include "sbc/embedded/output_file.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -128,4 +129,13 @@ void sbc_csv_close(sbc_csv *csv)
     if (csv->fp)
         fclose(csv->fp);
     csv->fp = NULL;
+}
+
+int sbc_result_line(const sbc_result *r, sbc_bc bc, int total, char *out, size_t cap)
+{
+    return snprintf(out, cap,
+                    "servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %ld iterations %d "
+                    "unbalanced %.2g HM %.1e",
+                    sbc_bc_name(bc), r->increment, total, r->F[SBC_IJ(0, 1)], r->sigma[SBC_IJ(0, 0)],
+                    r->sigma[SBC_IJ(0, 1)], r->relax_steps, r->iterations, r->unbalanced, r->hill_mandel);
 }

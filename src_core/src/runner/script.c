@@ -399,10 +399,11 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
             if ((st = keep_row(&r, row, err)) != SBC_OK) break;
             if (r.csv.fp && (st = sbc_csv_write(&r.csv, row, err)) != SBC_OK) break;
             if ((st = write_snapshots(s, r.engine, &r.frame, row->increment, ev == SBC_EVENT_FINISHED, err)) != SBC_OK) break;
-            if (s->log)
-                fprintf(s->log, "increment %d/%d  F12 %+.5f  sigma11 %+.6e  sigma12 %+.6e N/m  steps %ld  HM %.1e\n",
-                        row->increment, sbc_settings_total_increments(&s->settings), row->F[1], row->sigma[0], row->sigma[1],
-                        row->relax_steps, row->hill_mandel);
+            if (s->log) {
+                char line[320];
+                sbc_result_line(row, s->settings.bc, sbc_settings_total_increments(&s->settings), line, sizeof line);
+                fprintf(s->log, "%s\n", line);
+            }
             if (s->log && s->cohesive)
                 fprintf(s->log, "  bonds intact %d\n", sbc_engine_get_view(r.engine).bond_count);
             if (s->log) fflush(s->log);
