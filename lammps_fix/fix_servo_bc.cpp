@@ -43,7 +43,7 @@ const double RESTART_MAGIC = 8.020001e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), per_atom(nullptr), contacts(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), since_check(0), seal_on(0), seal_energy(0.0)
+    Fix(lmp, narg, arg), ctl(nullptr), driver(nullptr), per_atom(nullptr), contacts(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), seal_on(0), seal_energy(0.0)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
@@ -103,6 +103,7 @@ FixServoBC::~FixServoBC()
   atom->delete_callback(id, CALLBACK_GROW);
   atom->delete_callback(id, CALLBACK_RESTART);
   memory->destroy(per_atom);
+  sbc_driver_free(driver);
   sbc_controller_free(ctl);
   sbc_seal_free(&seal);
   sbc_frame_free(&frame);
@@ -184,9 +185,6 @@ void FixServoBC::detect_frame()
 
 void FixServoBC::make_buffers()
 {
-  // frame order: x [3Q], force [3Q] (3 slots whatever the dimension), torque [Q], theta [Q], sum |theta|, count
-  buf.assign(8 * frame.n + 2, 0.0);
-  sum.assign(8 * frame.n + 2, 0.0);
   slot.clear();
   for (int q = 0; q < frame.n; q++) slot[frame_tag[q]] = q;
 }
@@ -309,6 +307,7 @@ void FixServoBC::init()
     if (!ctl) fail(err.message);
     if (!saved_state.empty() && sbc_controller_load(ctl, saved_state.data(), saved_state.size(), &err) != SBC_OK)
       fail(err.message);
+    make_driver();
     // continued from a restart: the rows an interrupted run wrote after the
     // restart file are dropped, so that the file equals an uninterrupted run's
     int kept = 0;
@@ -404,12 +403,37 @@ void FixServoBC::seal_pass()
     fail(err.message);
 }
 
-/* damping fire: the interior's sums of fire_damping.h over all ranks, and
-   FIRE's mix for this step (the same on every rank) */
-sbc_fire_mix FixServoBC::fire_pass()
+/* the driver (driver.h) over this fix's passes; FIRE's state from a restart file */
+void FixServoBC::make_driver()
+{
+  sbc_driver_callbacks cb;
+  cb.user_data = this;
+  cb.fire_sums = [](void *self, double *sums) { static_cast<FixServoBC *>(self)->fire_pass(sums); };
+  cb.interior = [](void *self, const sbc_fire_mix *mix, int again, double out[2]) {
+    static_cast<FixServoBC *>(self)->interior_pass(again != 0, mix, out);
+  };
+  cb.contacts = [](void *self, double out[4]) { static_cast<FixServoBC *>(self)->contact_pass(out); };
+  cb.frame = [](void *self, double *buf) { static_cast<FixServoBC *>(self)->frame_pass(buf); };
+  cb.reduce = [](void *self, const double *in, double *out, int n, sbc_reduce_op op) {
+    MPI_Allreduce(in, out, n, MPI_DOUBLE, op == SBC_REDUCE_MAX ? MPI_MAX : MPI_SUM, static_cast<FixServoBC *>(self)->world);
+  };
+  cb.confined = [](void *self, const double *fx, int increment, char *message, size_t cap) {
+    return static_cast<FixServoBC *>(self)->confined(fx, increment, message, cap);
+  };
+  cb.row = [](void *self, const sbc_result *, const char *line, char *, size_t) {
+    static_cast<FixServoBC *>(self)->write_row(line);
+    return 0;
+  };
+  sbc_error err;
+  if (!(driver = sbc_driver_create(ctl, &settings, &cb, &err))) fail(err.message);
+  *sbc_driver_fire(driver) = fire;
+}
+
+/* damping fire: the interior's sums of fire_damping.h on this rank */
+void FixServoBC::fire_pass(double *local)
 {
   const int nlocal = atom->nlocal, *mask = atom->mask;
-  double local[SBC_FIRE_SUMS] = {0.0, 0.0, 0.0, 0.0, 0.0}, sums[SBC_FIRE_SUMS];
+  for (int k = 0; k < SBC_FIRE_SUMS; k++) local[k] = 0.0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & interior_bit)) continue;
     const double *f = atom->f[i], *v = atom->v[i], m = atom->torque[i][2], w = atom->omega[i][2];
@@ -419,8 +443,6 @@ sbc_fire_mix FixServoBC::fire_pass()
     local[SBC_FIRE_WW] += w * w;
     local[SBC_FIRE_MM] += m * m;
   }
-  MPI_Allreduce(local, sums, SBC_FIRE_SUMS, MPI_DOUBLE, MPI_SUM, world);
-  return sbc_fire_step(&fire, sums);
 }
 
 /* local damping (eq. 10) on the interior's forces, or FIRE's mix (mix not
@@ -522,12 +544,12 @@ void FixServoBC::contact_pass(double out[4])
 }
 
 /* frame positions, reactions and rotations in frame order, plus sum |theta|
-   and the particle count (eq. 41), into buf (summed over ranks later) */
-void FixServoBC::frame_pass()
+   and the particle count (eq. 41), this rank's share, into buf (driver.h's
+   layout, zeroed) */
+void FixServoBC::frame_pass(double *buf)
 {
   const int nlocal = atom->nlocal, Q = frame.n, *mask = atom->mask;
   double **x = atom->x, **f = atom->f, **torque = atom->torque;
-  std::fill(buf.begin(), buf.end(), 0.0);
   double rot = 0.0, npart = 0.0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -548,98 +570,58 @@ void FixServoBC::frame_pass()
   buf[8 * Q + 1] = npart;
 }
 
-/* confine.h on the owned interior atoms against the frame's present centres;
-   the smallest failing atom ID over all ranks names the error, on every rank */
-void FixServoBC::check_confined(int increment)
+/* confine.h on the owned interior atoms against the frame's present centres
+   fx; the smallest failing atom ID over all ranks names the error, on every rank */
+int FixServoBC::confined(const double *fx, int increment, char *message, size_t cap)
 {
-  const int Q = frame.n, nlocal = atom->nlocal, *mask = atom->mask;
+  const int nlocal = atom->nlocal, *mask = atom->mask;
   double **x = atom->x, **v = atom->v;
-  frame_pass();
-  MPI_Allreduce(buf.data(), sum.data(), 3 * Q, MPI_DOUBLE, MPI_SUM, world);
   long bad = LONG_MAX, first;
-  char message[SBC_ERROR_LEN] = "";
+  char mine_text[SBC_ERROR_LEN] = "";
   sbc_error err;
   for (int i = 0; i < nlocal; i++) {
     const long id = (long) atom->tag[i];
     if (!(mask[i] & interior_bit) || id >= bad) continue;
-    if (sbc_confine_check(&frame, sum.data(), increment, id, x[i], v[i], &err) != SBC_OK) {
+    if (sbc_confine_check(&frame, fx, increment, id, x[i], v[i], &err) != SBC_OK) {
       bad = id;
-      std::snprintf(message, sizeof message, "%s", err.message);
+      std::snprintf(mine_text, sizeof mine_text, "%s", err.message);
     }
   }
   MPI_Allreduce(&bad, &first, 1, MPI_LONG, MPI_MIN, world);
-  if (first == LONG_MAX) return;
+  if (first == LONG_MAX) return 0;
   int mine = bad == first ? comm->me : comm->nprocs, root;
   MPI_Allreduce(&mine, &root, 1, MPI_INT, MPI_MIN, world);
-  MPI_Bcast(message, (int) sizeof message, MPI_CHAR, root, world);
-  fail(message);
+  MPI_Bcast(mine_text, (int) sizeof mine_text, MPI_CHAR, root, world);
+  std::snprintf(message, cap, "%s", mine_text);
+  return 1;
 }
 
-/* damping, then what the controller asks for (sbc_controller_needs): Ek every
-   step, Ep and the contact sums past the kinetic-energy peak, the frame when
-   the relaxation ends; then the controller step */
+/* a converged increment: its row in the results file (rank 0) and the log line */
+void FixServoBC::write_row(const char *line)
+{
+  sbc_error err;
+  if (comm->me == 0 && csv.fp && sbc_csv_write(&csv, sbc_controller_result(ctl), &err) != SBC_OK)
+    fail_here(err.message);
+  log("%s\n", line);
+}
+
+/* damping, then what the controller asks for (driver.h: Ek every step, Ep and
+   the contact sums when the criterion needs them, the frame when the
+   relaxation ends), the controller step, the confinement check, the row */
 void FixServoBC::post_force(int)
 {
   if (finished) return;
-  const int Q = frame.n;
   // the setup of a later run (or of a restarted one) sees the configuration of
   // the last step again: the controller has already taken it
   const bool again = update->ntimestep == last_step;
-  double interior_local[2], interior[2];
-  sbc_fire_mix mix;
   seal_pass();
-  if (settings.damping == SBC_DAMPING_FIRE && !again) mix = fire_pass();
-  interior_pass(again, settings.damping == SBC_DAMPING_FIRE && !again ? &mix : nullptr, interior_local);
-  MPI_Allreduce(&interior_local[0], &interior[0], 1, MPI_DOUBLE, MPI_SUM, world);
-  MPI_Allreduce(&interior_local[1], &interior[1], 1, MPI_DOUBLE, MPI_MAX, world);
+  sbc_error err;
+  sbc_event ev = sbc_driver_step(driver, again, &err);
   if (again) return;
   last_step = update->ntimestep;
-
-  sbc_snapshot snap;
-  std::memset(&snap, 0, sizeof snap);
-  snap.kinetic_energy = interior[0];
-  snap.unbalanced_max = interior[1];
-  snap.potential_energy = SBC_RELAX_EP_UNMEASURED;
-  unsigned need = sbc_controller_needs(ctl, &snap);
-  if (need) {
-    double local[4], contacts[4];
-    contact_pass(local);
-    MPI_Allreduce(local, contacts, 4, MPI_DOUBLE, MPI_SUM, world);
-    snap.potential_energy = contacts[0];
-    snap.overlap_sum = contacts[1];
-    snap.contact_count = (long) contacts[2];
-    snap.contact_force_sum = contacts[3];
-    need = sbc_controller_needs(ctl, &snap);
-  }
-  if (need & SBC_NEED_FRAME) {
-    frame_pass();
-    MPI_Allreduce(buf.data(), sum.data(), (int) buf.size(), MPI_DOUBLE, MPI_SUM, world);
-    snap.x = &sum[0];
-    snap.force = &sum[3 * Q];
-    snap.torque = &sum[6 * Q];
-    snap.theta = &sum[7 * Q];
-    snap.rotation_sum = sum[8 * Q];
-    snap.particle_count = (long) sum[8 * Q + 1];
-  }
-
-  sbc_error err;
-  sbc_event ev = sbc_controller_step(ctl, &snap, &err);
-  const bool converged = ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED;
-  // confine.h: before a converged increment's row, on failure, and every SBC_CONFINE_EVERY steps
-  if (converged || ev == SBC_EVENT_FAILED || ++since_check >= SBC_CONFINE_EVERY) {
-    since_check = 0;
-    check_confined(converged ? sbc_controller_result(ctl)->increment : sbc_controller_increment(ctl));
-  }
   if (ev == SBC_EVENT_FAILED) fail(err.message);
   if (ev == SBC_EVENT_CORRECTED || ev == SBC_EVENT_INCREMENT) frame_still = 0;
-  if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
-    last = *sbc_controller_result(ctl);
-    if (comm->me == 0 && csv.fp && sbc_csv_write(&csv, &last, &err) != SBC_OK)
-      fail_here(err.message);
-    char line[320];
-    sbc_result_line(&last, settings.bc, sbc_settings_total_increments(&settings), line, sizeof line);
-    log("%s\n", line);
-  }
+  if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) last = *sbc_controller_result(ctl);
   if (ev == SBC_EVENT_FINISHED) {
     finished = 1;
     servo_bc_host::end_run(lmp);
@@ -673,8 +655,9 @@ void FixServoBC::write_restart(FILE *fp)
   if (ctl) sbc_controller_save(ctl, &list[at]);
   list.push_back(finished);
   list.push_back((double) last_step);
-  list.push_back(fire.alpha);
-  list.push_back((double) fire.positive);
+  const sbc_fire_state &now = driver ? *sbc_driver_fire(driver) : fire;
+  list.push_back(now.alpha);
+  list.push_back((double) now.positive);
   list[1] = (double) list.size();
   int bytes = (int) (list.size() * sizeof(double));    // LAMMPS reads the block size in bytes
   fwrite(&bytes, sizeof(int), 1, fp);

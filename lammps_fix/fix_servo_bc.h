@@ -30,6 +30,7 @@ FixStyle(servo_bc,FixServoBC);
 
 #include "sbc/confine.h"
 #include "sbc/controller.h"
+#include "sbc/driver.h"
 #include "sbc/fire_damping.h"
 #include "sbc/frame.h"
 #include "sbc/results.h"
@@ -71,9 +72,9 @@ class FixServoBC : public Fix {
   sbc_settings settings;
   sbc_frame frame;
   sbc_controller *ctl;
+  sbc_driver *driver;              // the per-step protocol (driver.h), over this fix's callbacks
   std::vector<tagint> frame_tag;   // [Q] atom IDs in frame order
   std::vector<double> frame_mass;  // [Q] kg
-  std::vector<double> buf, sum;    // reduction buffers
   std::unordered_map<tagint, int> slot;  // atom ID -> frame position, built with the frame
   double **per_atom;               // per atom: frame flag (1 frame, 0 other), accumulated rotation (rad)
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
@@ -88,8 +89,7 @@ class FixServoBC : public Fix {
   bigint run_start;                  // timestep at the setup of this run
   int frame_still;                   // steps since the commands last changed (initial_integrate)
   int any_free;                      // some frame rotation is free ((T)): integrated every step
-  int since_check;                   // steps since the last confinement check (confine.h)
-  sbc_fire_state fire;               // damping fire: FIRE's state (fire_damping.h)
+  sbc_fire_state fire;               // damping fire: FIRE's state as a restart file gave it (the driver's after init)
   sbc_seal seal;                     // keyword seal: walls on the frame's polygon (seal.h)
   int seal_on;                       // seal initialised
   std::vector<double> seal_reaction; // [3Q] the walls' reactions on the frame from this rank's atoms, N
@@ -99,11 +99,14 @@ class FixServoBC : public Fix {
   void find_contacts();
   void seal_pass();
   static int seal_slot(const void *self, int i);
-  sbc_fire_mix fire_pass();
+  // this rank's share of each measure the driver asks for (driver.h)
+  void fire_pass(double *sums);
   void interior_pass(bool again, const sbc_fire_mix *mix, double out[2]);
   void contact_pass(double out[4]);
-  void frame_pass();
-  void check_confined(int increment);
+  void frame_pass(double *buf);
+  int confined(const double *fx, int increment, char *message, size_t cap);
+  void write_row(const char *line);
+  void make_driver();
   void detect_frame();
   void make_buffers();
   void fail(const std::string &message);

@@ -1,0 +1,82 @@
+/* servo_bc: the per-step protocol of a host, once (docs/core.md, "The host
+ * driver"). A host computes its contact forces, then calls sbc_driver_step,
+ * which asks the host through callbacks (SUNDIALS-style, with user_data) for
+ * what the controller needs on this step, in this order:
+ *
+ *   fire_sums  (damping fire)  FIRE's sums over the rank's interior, reduced (sum)
+ *   interior                   damping (eq. 10, or FIRE's mix) on the rank's
+ *                              interior; its Ek (reduced: sum) and largest
+ *                              |net contact force| before damping (max)
+ *   contacts   (when needed)   Ep, sum dn/Rbar, count, sum |f| (sum)
+ *   frame      (when needed)   the frame's positions, reactions, moments and
+ *                              rotations in frame order, sum |theta|, count (sum)
+ *   confined   (on a converged increment, on failure, every SBC_CONFINE_EVERY
+ *                              steps) confine.h against the frame's centres
+ *   row        (converged)     the increment's row and its log line
+ *
+ * then steps the controller and returns its event; the host applies
+ * sbc_controller_commands before its next step. Every rank of a parallel host
+ * calls it with reduce set; all ranks take the same decisions. */
+#ifndef SBC_DRIVER_H
+#define SBC_DRIVER_H
+
+#include <stddef.h>
+
+#include "sbc/controller.h"
+#include "sbc/fire_damping.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum sbc_reduce_op { SBC_REDUCE_SUM = 0, SBC_REDUCE_MAX } sbc_reduce_op;
+
+/* The frame buffer of the frame callback, doubles at these offsets (Q: frame
+ * particles): x [3Q], force [3Q], torque [Q], theta [Q], sum |theta|, count. */
+#define SBC_DRIVER_FRAME_SIZE(Q) (8 * (size_t)(Q) + 2)
+
+typedef struct sbc_driver_callbacks {
+    void *user_data;
+    /* FIRE's sums (fire_damping.h) over this rank's interior particles into sums */
+    void (*fire_sums)(void *user_data, double *sums);
+    /* damping on this rank's interior (mix: FIRE's of this step, NULL: eq. 10
+       or none, as the settings say); out[0] its Ek (eq. 12, the particles that
+       carry a force), out[1] its largest |net contact force| before damping;
+       again: the step is a revisit (a later run's setup), damp but count no
+       rotation */
+    void (*interior)(void *user_data, const sbc_fire_mix *mix, int again, double out[2]);
+    /* this rank's contact sums: Ep (J), sum dn / Rbar, contact count, sum |contact force| (N) */
+    void (*contacts)(void *user_data, double out[4]);
+    /* this rank's share of the frame buffer (SBC_DRIVER_FRAME_SIZE, zeroed by the driver) */
+    void (*frame)(void *user_data, double *buf);
+    /* out = op over the ranks of in [n]; NULL for a single process */
+    void (*reduce)(void *user_data, const double *in, double *out, int n, sbc_reduce_op op);
+    /* confine.h over this rank's interior against the frame's centres fx [3Q]:
+       0, or 1 with the same message on every rank; NULL: not checked */
+    int (*confined)(void *user_data, const double *fx, int increment, char *message, size_t cap);
+    /* a converged increment: its row and log line (sbc_result_line); 0, or 1
+       with the message (the run stops) */
+    int (*row)(void *user_data, const sbc_result *row, const char *line, char *message, size_t cap);
+} sbc_driver_callbacks;
+
+typedef struct sbc_driver sbc_driver;
+
+/* A driver for the controller c (borrowed; it must outlive the driver) with
+ * the settings it was created with. NULL with the message on failure. */
+sbc_driver *sbc_driver_create(sbc_controller *c, const sbc_settings *s, const sbc_driver_callbacks *cb,
+                              sbc_error *err);
+void sbc_driver_free(sbc_driver *d);
+
+/* One host step after its contact forces. again: the host revisits a step
+ * already taken (the setup of a later run): damping only, returns
+ * SBC_EVENT_RELAXING without stepping the controller. */
+sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err);
+
+/* FIRE's state, for a host's restart file. */
+sbc_fire_state *sbc_driver_fire(sbc_driver *d);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
