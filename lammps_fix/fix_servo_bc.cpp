@@ -593,7 +593,7 @@ int FixServoBC::confined(const double *fx, int increment, char *message, size_t 
   MPI_Allreduce(&mine, &root, 1, MPI_INT, MPI_MIN, world);
   MPI_Bcast(mine_text, (int) sizeof mine_text, MPI_CHAR, root, world);
   std::snprintf(message, cap, "%s", mine_text);
-  return 1;
+  return SBC_ERR_GEOMETRY;
 }
 
 /* a converged increment: its row in the results file (rank 0) and the log line */

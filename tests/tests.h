@@ -22,4 +22,5 @@ void test_accuracy(void);
 void test_seal(void);
 void test_bpm_host(void);
 void test_cohesive_host(void);
+void test_driver(void);
 #endif

@@ -52,10 +52,11 @@ typedef struct sbc_driver_callbacks {
     /* out = op over the ranks of in [n]; NULL for a single process */
     void (*reduce)(void *user_data, const double *in, double *out, int n, sbc_reduce_op op);
     /* confine.h over this rank's interior against the frame's centres fx [3Q]:
-       0, or 1 with the same message on every rank; NULL: not checked */
+       SBC_OK, or the sbc_status of the refusal with the same message on
+       every rank; NULL: not checked */
     int (*confined)(void *user_data, const double *fx, int increment, char *message, size_t cap);
-    /* a converged increment: its row and log line (sbc_result_line); 0, or 1
-       with the message (the run stops) */
+    /* a converged increment: its row and log line (sbc_result_line); SBC_OK,
+       or an sbc_status with the message (the run stops) */
     int (*row)(void *user_data, const sbc_result *row, const char *line, char *message, size_t cap);
 } sbc_driver_callbacks;
 

@@ -344,12 +344,13 @@ static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
     e->bond_count -= broken;
 }
 
-/* FIRE's mix of this step (fire_damping.h) from the interior's contact
- * forces and the velocities the step starts from. */
-static sbc_fire_mix fire_mix(sbc_engine *e)
+/* FIRE's sums (fire_damping.h) of the interior's contact forces and the
+ * velocities the step starts from. */
+void sbc_engine_fire_sums(const sbc_engine *e, double *sums)
 {
-    double sums[SBC_FIRE_SUMS] = {0.0, 0.0, 0.0, 0.0, 0.0};
     int k;
+    for (k = 0; k < SBC_FIRE_SUMS; ++k)
+        sums[k] = 0.0;
     for (k = 0; k < e->n; ++k) {
         const double fx = e->f[2 * k], fy = e->f[2 * k + 1], m = e->tq[k];
         const double vx = e->v[2 * k], vy = e->v[2 * k + 1], w = e->omega[k];
@@ -361,7 +362,6 @@ static sbc_fire_mix fire_mix(sbc_engine *e)
         sums[SBC_FIRE_WW] += w * w;
         sums[SBC_FIRE_MM] += m * m;
     }
-    return sbc_fire_step(&e->fire_state, sums);
 }
 
 /* Explicit first-order update of eq. 9 with the local damping of eq. 10:
@@ -372,10 +372,9 @@ static sbc_fire_mix fire_mix(sbc_engine *e)
  * compile-time constant in each instance. Also records Ek of the
  * interior (eq. 12), sum |theta| (eq. 41) and whether a particle has moved
  * more than half the skin since the last neighbour build. */
-static inline void integrate_interior(sbc_engine *e, const int damped)
+static inline void integrate_interior(sbc_engine *e, const int damped, const sbc_fire_mix mix)
 {
     const double dt = e->dt, a = e->alpha, b = e->beta;
-    const sbc_fire_mix mix = damped == 2 ? fire_mix(e) : (sbc_fire_mix){1.0, 0.0, 0.0, 0.0};
     const double lim = 0.25 * e->pairs.skin * e->pairs.skin;
     double *restrict x = e->x, *restrict v = e->v, *restrict th = e->theta, *restrict om = e->omega;
     const double *restrict f = e->f, *restrict tq = e->tq, *restrict xb = e->pairs.x_build;
@@ -447,20 +446,41 @@ static sbc_status pair_forces(sbc_engine *e, sbc_error *err)
     return SBC_OK;
 }
 
-/* One time step: forces at x^n, then the interior to x^(n+1). */
-sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err)
+sbc_status sbc_engine_forces(sbc_engine *e, sbc_error *err)
 {
     if (pair_forces(e, err) != SBC_OK)
         return err->status;
     if (e->sealed && seal_step(e, err) != SBC_OK)
         return err->status;
-    if (e->fire)
-        integrate_interior(e, 2);
+    return SBC_OK;
+}
+
+void sbc_engine_integrate(sbc_engine *e, const sbc_fire_mix *mix)
+{
+    static const sbc_fire_mix none = {1.0, 0.0, 0.0, 0.0};
+    if (mix)
+        integrate_interior(e, 2, *mix);
     else if (e->alpha > 0.0 || e->beta > 0.0)
-        integrate_interior(e, 1);
+        integrate_interior(e, 1, none);
     else
-        integrate_interior(e, 0);
+        integrate_interior(e, 0, none);
     e->step++;
+}
+
+/* One time step: forces at x^n, then the interior to x^(n+1). */
+sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err)
+{
+    if (sbc_engine_forces(e, err) != SBC_OK)
+        return err->status;
+    if (e->fire) {
+        double sums[SBC_FIRE_SUMS];
+        sbc_fire_mix mix;
+        sbc_engine_fire_sums(e, sums);
+        mix = sbc_fire_step(&e->fire_state, sums);
+        sbc_engine_integrate(e, &mix);
+    } else {
+        sbc_engine_integrate(e, NULL);
+    }
     return SBC_OK;
 }
 

@@ -81,17 +81,19 @@ static int escaped(sbc_driver *d, sbc_event ev, sbc_error *err)
 {
     const int converged = ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED;
     char message[SBC_ERROR_LEN] = "";
+    int status;
     if (!(converged || ev == SBC_EVENT_FAILED || ++d->since_check >= SBC_CONFINE_EVERY))
         return 0;
     d->since_check = 0;
     if (!d->cb.confined)
         return 0;
     gather_frame(d, 3 * d->Q);
-    if (!d->cb.confined(d->cb.user_data, d->sum,
-                        converged ? sbc_controller_result(d->ctl)->increment : sbc_controller_increment(d->ctl), message,
-                        sizeof message))
+    status = d->cb.confined(d->cb.user_data, d->sum,
+                            converged ? sbc_controller_result(d->ctl)->increment : sbc_controller_increment(d->ctl),
+                            message, sizeof message);
+    if (status == SBC_OK)
         return 0;
-    sbc_fail(err, SBC_ERR_GEOMETRY, "%s", message);
+    sbc_fail(err, (sbc_status)status, "%s", message);
     return 1;
 }
 
@@ -145,9 +147,10 @@ sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err)
     if ((ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) && d->cb.row) {
         const sbc_result *row = sbc_controller_result(d->ctl);
         char line[320], message[SBC_ERROR_LEN] = "";
+        int status;
         sbc_result_line(row, d->s.bc, sbc_settings_total_increments(&d->s), line, sizeof line);
-        if (d->cb.row(d->cb.user_data, row, line, message, sizeof message)) {
-            sbc_fail(err, SBC_ERR_IO, "%s", message);
+        if ((status = d->cb.row(d->cb.user_data, row, line, message, sizeof message)) != SBC_OK) {
+            sbc_fail(err, (sbc_status)status, "%s", message);
             return SBC_EVENT_FAILED;
         }
     }

@@ -3,6 +3,7 @@
 
 #include "sbc/confine.h"
 #include "sbc/controller.h"
+#include "sbc/driver.h"
 #include "sbc/embedded/engine.h"
 #include "sbc/frame.h"
 #include "sbc/homogenize.h"
@@ -164,8 +165,11 @@ typedef struct run_state {
     sbc_result *rows;
     int nrows, cap;
     int increment_now; /* the increment in progress */
-    long since_check;  /* engine steps since the last confinement check */
+    long since_check;  /* engine steps since the last progress check */
     struct timespec start, reported; /* the run's start, the last progress line */
+    sbc_driver *driver; /* the per-step protocol (driver.h) over the engine */
+    const script *s;
+    sbc_snapshot snap;  /* the engine's measures of this step */
 } run_state;
 
 static double seconds_between(const struct timespec *a, const struct timespec *b)
@@ -196,6 +200,7 @@ static void report_progress(const script *s, run_state *r)
 
 static void run_free(run_state *r)
 {
+    sbc_driver_free(r->driver);
     sbc_frame_free(&r->frame);
     sbc_engine_free(r->engine);
     sbc_controller_free(r->ctl);
@@ -275,6 +280,81 @@ static sbc_status expect_touching(const sbc_packing *p, sbc_error *err)
     return SBC_OK;
 }
 
+/* The engine as a host of the driver (driver.h): one process, its own
+ * measures of the step. */
+static void engine_fire_sums(void *user_data, double *sums)
+{
+    sbc_engine_fire_sums(((run_state *)user_data)->engine, sums);
+}
+
+static void engine_interior(void *user_data, const sbc_fire_mix *mix, int again, double out[2])
+{
+    run_state *r = user_data;
+    (void)again;
+    sbc_engine_integrate(r->engine, mix);
+    sbc_engine_snapshot(r->engine, &r->snap);
+    out[0] = r->snap.kinetic_energy;
+    out[1] = r->snap.unbalanced_max;
+}
+
+static void engine_contacts(void *user_data, double out[4])
+{
+    const sbc_snapshot *s = &((run_state *)user_data)->snap;
+    out[0] = s->potential_energy;
+    out[1] = s->overlap_sum;
+    out[2] = (double)s->contact_count;
+    out[3] = s->contact_force_sum;
+}
+
+static void engine_frame(void *user_data, double *buf)
+{
+    const run_state *r = user_data;
+    const sbc_snapshot *s = &r->snap;
+    const size_t Q = (size_t)r->frame.n;
+    memcpy(buf, s->x, sizeof(double) * 3 * Q);
+    memcpy(buf + 3 * Q, s->force, sizeof(double) * 3 * Q);
+    memcpy(buf + 6 * Q, s->torque, sizeof(double) * Q);
+    memcpy(buf + 7 * Q, s->theta, sizeof(double) * Q);
+    buf[8 * Q] = s->rotation_sum;
+    buf[8 * Q + 1] = (double)s->particle_count;
+}
+
+static int engine_confined(void *user_data, const double *fx, int increment, char *message, size_t cap)
+{
+    run_state *r = user_data;
+    sbc_error err;
+    (void)fx; /* the same centres, gathered from the engine */
+    if (check_confined(&r->frame, r->engine, r->fx, increment, &err) == SBC_OK)
+        return SBC_OK;
+    snprintf(message, cap, "%s", err.message);
+    return err.status;
+}
+
+/* a converged increment: kept for the plot, the results file, the snapshots
+   due, the log line */
+static int engine_row(void *user_data, const sbc_result *row, const char *line, char *message, size_t cap)
+{
+    run_state *r = user_data;
+    const script *s = r->s;
+    const int last = row->increment == sbc_settings_total_increments(&s->settings);
+    sbc_error err;
+    sbc_status st;
+    r->increment_now = row->increment + 1;
+    if ((st = keep_row(r, row, &err)) != SBC_OK || (r->csv.fp && (st = sbc_csv_write(&r->csv, row, &err)) != SBC_OK) ||
+        (st = write_snapshots(s, r->engine, &r->frame, row->increment, last, &err)) != SBC_OK) {
+        snprintf(message, cap, "%s", err.message);
+        return st;
+    }
+    if (s->log) {
+        fprintf(s->log, "%s\n", line);
+        if (s->cohesive)
+            fprintf(s->log, "  bonds intact %d\n", sbc_engine_get_view(r->engine).bond_count);
+        fflush(s->log);
+    }
+    timespec_get(&r->reported, TIME_UTC);
+    return SBC_OK;
+}
+
 sbc_status sbc_script_run_once(script *s, sbc_error *err)
 {
     run_state r;
@@ -338,7 +418,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         run_free(&r);
         return err->status;
     }
-    if ((st = sbc_engine_step(r.engine, err)) != SBC_OK) {
+    if ((st = sbc_engine_forces(r.engine, err)) != SBC_OK) {
         run_free(&r);
         return st;
     }
@@ -373,47 +453,39 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
     if (s->log && s->cohesive)
         fprintf(s->log, "servo_bc: %d cohesive bonds between the pairs touching at the start\n",
                 sbc_engine_get_view(r.engine).bonds_initial);
+    {
+        sbc_driver_callbacks cb;
+        cb.user_data = &r;
+        cb.fire_sums = engine_fire_sums;
+        cb.interior = engine_interior;
+        cb.contacts = engine_contacts;
+        cb.frame = engine_frame;
+        cb.reduce = NULL;
+        cb.confined = engine_confined;
+        cb.row = engine_row;
+        r.s = s;
+        if (!(r.driver = sbc_driver_create(r.ctl, &s->settings, &cb, err))) {
+            run_free(&r);
+            return err->status;
+        }
+    }
+    /* the first step's forces were taken above */
     for (;;) {
         sbc_commands cmd;
-        sbc_event ev = sbc_controller_step(r.ctl, &snap, err);
-        /* an escaped disc explains a stalled servo better than its residuals do;
-           looked for at every converged increment, every 10^4 steps and on failure */
+        sbc_event ev = sbc_driver_step(r.driver, 0, err);
         if (ev == SBC_EVENT_FAILED || ++r.since_check == SBC_CONFINE_EVERY) {
-            sbc_error esc;
             r.since_check = 0;
             report_progress(s, &r);
-            if (check_confined(&r.frame, r.engine, r.fx, r.increment_now, &esc) != SBC_OK) {
-                *err = esc;
-                st = err->status;
-                break;
-            }
         }
         if (ev == SBC_EVENT_FAILED) {
             st = err->status;
             break;
         }
-        if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
-            const sbc_result *row = sbc_controller_result(r.ctl);
-            if ((st = check_confined(&r.frame, r.engine, r.fx, row->increment, err)) != SBC_OK) break;
-            r.increment_now = row->increment + 1;
-            if ((st = keep_row(&r, row, err)) != SBC_OK) break;
-            if (r.csv.fp && (st = sbc_csv_write(&r.csv, row, err)) != SBC_OK) break;
-            if ((st = write_snapshots(s, r.engine, &r.frame, row->increment, ev == SBC_EVENT_FINISHED, err)) != SBC_OK) break;
-            if (s->log) {
-                char line[320];
-                sbc_result_line(row, s->settings.bc, sbc_settings_total_increments(&s->settings), line, sizeof line);
-                fprintf(s->log, "%s\n", line);
-            }
-            if (s->log && s->cohesive)
-                fprintf(s->log, "  bonds intact %d\n", sbc_engine_get_view(r.engine).bond_count);
-            if (s->log) fflush(s->log);
-            timespec_get(&r.reported, TIME_UTC);
-            if (ev == SBC_EVENT_FINISHED) break;
-        }
+        if (ev == SBC_EVENT_FINISHED)
+            break;
         cmd = sbc_controller_commands(r.ctl);
         sbc_engine_move_frame(r.engine, &cmd);
-        if ((st = sbc_engine_step(r.engine, err)) != SBC_OK) break;
-        sbc_engine_snapshot(r.engine, &snap);
+        if ((st = sbc_engine_forces(r.engine, err)) != SBC_OK) break;
     }
     if (st != SBC_OK) { /* the state the run stopped in, for a look in ParaView and a picture */
         sbc_error verr;

@@ -15,6 +15,7 @@
 
 #include "sbc/contact.h"
 #include "sbc/controller.h"
+#include "sbc/fire_damping.h"
 #include "sbc/frame.h"
 
 #ifdef __cplusplus
@@ -58,6 +59,14 @@ sbc_status sbc_engine_seal(sbc_engine *e, sbc_error *err);
  * positions, and the interior particles advanced by the equations of motion
  * with damping. Frame particles keep their place (see sbc_engine_move_frame). */
 sbc_status sbc_engine_step(sbc_engine *e, sbc_error *err);
+
+/* sbc_engine_step in the host driver's parts (driver.h): the contact forces
+ * at x^n (and the seal's); FIRE's sums of the interior; the interior to
+ * x^(n+1) with FIRE's mix of this step, or with eq. 10 (or nothing) for mix
+ * NULL. */
+sbc_status sbc_engine_forces(sbc_engine *e, sbc_error *err);
+void sbc_engine_fire_sums(const sbc_engine *e, double *sums);
+void sbc_engine_integrate(sbc_engine *e, const sbc_fire_mix *mix);
 
 /* Fills a snapshot from the last sbc_engine_step: frame positions and
  * reactions before the frame moves, Ek after the interior moved (arrays
