@@ -119,8 +119,8 @@ static sbc_event until_converged_or_stopped(rig *g, sbc_controller *c, sbc_drive
 
 void test_driver(void)
 {
-    sbc_packing p;
-    sbc_frame f;
+    sbc_packing p, p2;
+    sbc_frame f, f2;
     sbc_settings s;
     sbc_controller *c, *h;
     sbc_driver *d;
@@ -149,7 +149,7 @@ void test_driver(void)
     CHECK(g.reduced_max == steps && g.reduced_sum >= 2 * steps);
 
     /* by hand: sbc_engine_step and the whole snapshot every step */
-    setup(&by_hand, &p, &f, &s, &h);
+    setup(&by_hand, &p2, &f2, &s, &h);
     ev = SBC_EVENT_RELAXING;
     for (k = 0; ev != SBC_EVENT_FINISHED && ev != SBC_EVENT_FAILED && hand_steps < 2000000; ++hand_steps) {
         sbc_commands cmd;
@@ -173,6 +173,8 @@ void test_driver(void)
     sbc_engine_free(by_hand.e);
     sbc_frame_free(&f);
     sbc_packing_free(&p);
+    sbc_frame_free(&f2);
+    sbc_packing_free(&p2);
 
     /* the contract: a revisit, the refusals */
     setup(&g, &p, &f, &s, &c);
