@@ -95,7 +95,8 @@ static void start_increment(sbc_controller *c)
     }
     c->servo = 0;
     c->iteration = 0;
-    c->have_prev = 0;
+    if (c->rule->start)
+        c->rule->start(c);
     c->r_first = 0.0;
     c->win_min = c->prev_min = DBL_MAX;
     c->steps = 0;
@@ -169,9 +170,9 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     c->du = calloc(3 * q, sizeof(double));
     c->a_hat = calloc(3 * q, sizeof(double));
     c->dtheta = calloc(q, sizeof(double));
-    c->d_prev = calloc((size_t)SBC_CTL_STEP_PARTS(frame->dim) * q, sizeof(double));
-    c->lambda = 1.0;
-    if (!sbc_motion_alloc(&c->motion, frame->n) || !c->d_prev || !c->mass || !c->x_cmd || !c->theta_cmd ||
+    c->secant.d_prev = calloc((size_t)SBC_CTL_STEP_PARTS(frame->dim) * q, sizeof(double));
+    c->secant.lambda = 1.0;
+    if (!sbc_motion_alloc(&c->motion, frame->n) || !c->secant.d_prev || !c->mass || !c->x_cmd || !c->theta_cmd ||
         !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du || !c->a_hat || !c->dtheta || !c->mode) {
         sbc_controller_free(c);
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
@@ -222,7 +223,7 @@ void sbc_controller_free(sbc_controller *c)
     free(c->du);
     free(c->a_hat);
     free(c->dtheta);
-    free(c->d_prev);
+    free(c->secant.d_prev);
     sbc_motion_free(&c->motion);
     free(c);
 }

@@ -45,9 +45,7 @@ struct sbc_controller {
     double *m;           /* [Q] boundary moments m_q = -sum of contact moments (eq. 5), N m */
     double *x_prev;      /* [3Q] converged positions of the previous increment (prediction), m */
     double *du, *dtheta; /* [3Q], [Q] servo corrections, m, rad */
-    double lambda;       /* update secant: factor on the fixed-gain corrections */
-    int have_prev;       /* update secant: d_prev holds this increment's last correction */
-    double *d_prev;      /* [SBC_CTL_STEP_PARTS(dim) Q] update secant: last fixed-gain correction (du, R dtheta), m */
+    sbc_secant secant;   /* the secant update's state (update_rules.h) */
     double F_prev[9];    /* F imposed at the previous increment */
     double F_now[9];     /* F imposed at this increment */
     int total;           /* increments of the whole path, sbc_settings_total_increments */
@@ -86,5 +84,6 @@ int sbc_ctl_certified(const sbc_controller *c, const sbc_snapshot *snap, sbc_err
 /* controller_update.c: the update rules (fixed, secant) and eq. 15 under (T) */
 void sbc_ctl_restore_eq15(sbc_controller *c);
 void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n);
+void sbc_ctl_secant_start(sbc_controller *c);
 
 #endif

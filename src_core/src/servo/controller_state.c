@@ -79,8 +79,8 @@ static int state_fields(sbc_controller *c, double *ref, state_field f[STATE_FIEL
     INT("relaxation past_peak", &c->relax.past_peak, 0, 1);
     REAL("relaxation ek_prev", &c->relax.ek_prev, 1);
     INT("relaxation at_rest", &c->relax.at_rest, 0, 1);
-    REAL("lambda", &c->lambda, 1);
-    INT("have_prev", &c->have_prev, 0, 1);
+    REAL("lambda", &c->secant.lambda, 1);
+    INT("have_prev", &c->secant.have_prev, 0, 1);
     REAL("win_min", &c->win_min, 1);
     REAL("prev_min", &c->prev_min, 1);
     TENSOR("F_prev", c->F_prev);
@@ -116,7 +116,7 @@ static int state_fields(sbc_controller *c, double *ref, state_field f[STATE_FIEL
     f[n++] = (state_field){"free_rot", 'u', c->free_rot, q, 0, 1, ' ', dim};
     VECTORS("x_prev", c->x_prev);
     VECTORS("reference X", ref);
-    REAL("d_prev", c->d_prev, (size_t)SBC_CTL_STEP_PARTS(dim) * q);
+    REAL("d_prev", c->secant.d_prev, (size_t)SBC_CTL_STEP_PARTS(dim) * q);
     VECTORS("motion x_from", c->motion.x_from);
     VECTORS("motion x_goal", c->motion.x_goal);
     REAL("motion th_from", c->motion.th_from, q);
@@ -194,8 +194,9 @@ static sbc_status check_loaded(const sbc_controller *c, const double *ref, sbc_e
     if (c->motion.done > c->motion.steps)
         return sbc_fail(err, SBC_ERR_INPUT, "%s: the frame's travel has done %ld of %ld steps", what, c->motion.done,
                         c->motion.steps);
-    if (!(c->lambda > 0.0) || !(det > 0.0))
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: secant factor %g or det F %g is not > 0", what, c->lambda, det);
+    if (!(c->secant.lambda > 0.0) || !(det > 0.0))
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: secant factor %g or det F %g is not > 0", what, c->secant.lambda,
+                        det);
     for (k = 0; k < f->n; ++k)
         for (d = 0; d < f->dim; ++d) {
             lo[d] = fmin(lo[d], f->X[3 * k + d]);

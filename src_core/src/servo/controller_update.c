@@ -66,11 +66,11 @@ void sbc_ctl_restore_eq15(sbc_controller *c)
 void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n)
 {
     const sbc_frame *f = c->frame;
-    double dd = 0.0, dy = 0.0, yy = 0.0, lam = c->lambda, cap = DBL_MAX;
+    double dd = 0.0, dy = 0.0, yy = 0.0, lam = c->secant.lambda, cap = DBL_MAX;
     const int nd = SBC_CTL_STEP_PARTS(f->dim);
     int q, k;
     for (q = 0; q < f->n; ++q) {
-        double d[SBC_DIM_MAX + 1], len = 0.0, *prev = &c->d_prev[nd * q];
+        double d[SBC_DIM_MAX + 1], len = 0.0, *prev = &c->secant.d_prev[nd * q];
         for (k = 0; k < f->dim; ++k)
             d[k] = c->du[3 * q + k];
         d[f->dim] = f->R[q] * c->dtheta[q];
@@ -87,19 +87,23 @@ void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n)
         if (len > 0.0 && SECANT_MAX_STEP * f->R[q] / len < cap)
             cap = SECANT_MAX_STEP * f->R[q] / len;
     }
-    if (c->have_prev)
-        lam = dy > 0.0 && yy > 0.0 ? c->lambda * dy / yy : 0.5 * c->lambda;
+    if (c->secant.have_prev)
+        lam = dy > 0.0 && yy > 0.0 ? c->secant.lambda * dy / yy : 0.5 * c->secant.lambda;
     if (c->kn > 0.0) /* scale-free first steps (servo.c): the factor stays within two decades of them */
         lam = fmin(fmax(lam, SECANT_LAMBDA_MIN), SECANT_LAMBDA_MAX);
     if (dd > 0.0) {
-        c->lambda = lam = fmin(lam, cap);
+        c->secant.lambda = lam = fmin(lam, cap);
     } else {
-        lam = c->lambda; /* no correction to scale; the factor stays */
+        lam = c->secant.lambda; /* no correction to scale; the factor stays */
     }
-    c->have_prev = 1;
+    c->secant.have_prev = 1;
     for (k = 0; k < 3 * f->n; ++k)
         c->du[k] *= lam;
     for (k = 0; k < f->n; ++k)
         c->dtheta[k] *= lam;
     n->max_step *= lam;
 }
+
+/* update secant: a new increment keeps the factor and forgets the last
+   correction */
+void sbc_ctl_secant_start(sbc_controller *c) { c->secant.have_prev = 0; }

@@ -9,9 +9,9 @@
 
 static const sbc_update_rule rules[] = {
     /* the paper's: gains of Table 4 per time step (eqs. 33, 34, 36, 48) */
-    {SBC_UPDATE_FIXED, "fixed", 0, 0, 0, NULL},
+    {SBC_UPDATE_FIXED, "fixed", 0, 0, 0, NULL, NULL},
     /* those corrections scaled by a Barzilai-Borwein factor (controller_update.c) */
-    {SBC_UPDATE_SECANT, "secant", 1, 1, 1, sbc_ctl_secant_scale},
+    {SBC_UPDATE_SECANT, "secant", 1, 1, 1, sbc_ctl_secant_scale, sbc_ctl_secant_start},
 };
 
 enum { RULES = (int)(sizeof rules / sizeof rules[0]) };

@@ -12,6 +12,14 @@
 
 struct sbc_controller;
 
+/* The secant update's state (controller_update.c): its own, saved with the
+ * controller's restart state where 0.2.0 saved it. */
+typedef struct sbc_secant {
+    double lambda;  /* factor on the fixed-gain corrections */
+    int have_prev;  /* d_prev holds this increment's last correction */
+    double *d_prev; /* [SBC_CTL_STEP_PARTS(dim) Q] the last fixed-gain correction (du, R dtheta), m */
+} sbc_secant;
+
 typedef struct sbc_update_rule {
     sbc_update id;
     const char *name;       /* the value of keyword `update` */
@@ -24,6 +32,8 @@ typedef struct sbc_update_rule {
     /* the correction du, dtheta of the controller scaled as the rule takes it,
        n->max_step with it; NULL: as servo.c computed it */
     void (*scale)(struct sbc_controller *c, sbc_servo_norms *n);
+    /* a new increment begins (the rule's state); NULL: nothing to do */
+    void (*start)(struct sbc_controller *c);
 } sbc_update_rule;
 
 /* The row of a rule; NULL for an id that has none. */
