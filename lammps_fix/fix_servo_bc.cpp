@@ -406,7 +406,7 @@ void FixServoBC::seal_pass()
 /* the driver (driver.h) over this fix's passes; FIRE's state from a restart file */
 void FixServoBC::make_driver()
 {
-  sbc_driver_callbacks cb;
+  sbc_driver_callbacks cb = {};
   cb.user_data = this;
   cb.fire_sums = [](void *self, double *sums) { static_cast<FixServoBC *>(self)->fire_pass(sums); };
   cb.interior = [](void *self, const sbc_fire_mix *mix, int again, double out[2]) {

@@ -19,6 +19,8 @@ typedef struct rig {
     int Q;
     int reduced_sum, reduced_max; /* reduce calls seen */
     int refuse_confined, refuse_row;
+    int contact_calls, net_calls, net_saw_other_sums;
+    double net_force; /* net_force's answer; 0: interior's own */
     sbc_result rows[8];
     int nrows;
 } rig;
@@ -38,8 +40,17 @@ static void interior(void *u, const sbc_fire_mix *mix, int again, double out[2])
 static void contacts(void *u, double out[4])
 {
     const sbc_snapshot *s = &((rig *)u)->snap;
+    ++((rig *)u)->contact_calls;
     out[0] = s->potential_energy, out[1] = s->overlap_sum, out[2] = (double)s->contact_count;
     out[3] = s->contact_force_sum;
+}
+
+static double net_force(void *u, const double *sums)
+{
+    rig *g = u;
+    g->net_saw_other_sums |= !(sums[0] == g->snap.potential_energy && sums[3] == g->snap.contact_force_sum);
+    ++g->net_calls;
+    return g->net_force > 0.0 ? g->net_force : g->snap.unbalanced_max;
 }
 
 static void frame(void *u, double *buf)
@@ -103,6 +114,15 @@ static void setup(rig *g, sbc_packing *p, sbc_frame *f, sbc_settings *s, sbc_con
     CHECK(*c != NULL);
 }
 
+static void teardown(rig *g, sbc_packing *p, sbc_frame *f, sbc_controller *c, sbc_driver *d)
+{
+    sbc_driver_free(d);
+    sbc_controller_free(c);
+    sbc_engine_free(g->e);
+    sbc_frame_free(f);
+    sbc_packing_free(p);
+}
+
 /* host steps through the driver until an increment converges or the run stops */
 static sbc_event until_converged_or_stopped(rig *g, sbc_controller *c, sbc_driver *d, sbc_error *err)
 {
@@ -124,7 +144,7 @@ void test_driver(void)
     sbc_settings s;
     sbc_controller *c, *h;
     sbc_driver *d;
-    sbc_driver_callbacks cb = {NULL, fire_sums, interior, contacts, frame, reduce, confined, row};
+    sbc_driver_callbacks cb = {NULL, fire_sums, interior, contacts, frame, reduce, confined, row, net_force};
     sbc_error err;
     rig g, by_hand;
     long steps = 0, hand_steps = 0;
@@ -145,8 +165,10 @@ void test_driver(void)
         ++steps;
     }
     CHECK(ev == SBC_EVENT_FINISHED && g.nrows == 3);
-    /* FIRE's sums and Ek summed, the largest net force maxed, every step */
-    CHECK(g.reduced_max == steps && g.reduced_sum >= 2 * steps);
+    /* FIRE's sums and Ek summed, the largest net force maxed, every step, and
+       again on every step that measured the contacts (net_force) */
+    CHECK(g.net_calls == g.contact_calls && g.net_calls > 0 && !g.net_saw_other_sums && g.reduced_max == steps + g.net_calls &&
+          g.reduced_sum >= 2 * steps);
 
     /* by hand: sbc_engine_step and the whole snapshot every step */
     setup(&by_hand, &p2, &f2, &s, &h);
@@ -185,11 +207,7 @@ void test_driver(void)
     g.refuse_row = 1;
     ev = until_converged_or_stopped(&g, c, d, &err);
     CHECK(ev == SBC_EVENT_FAILED && err.status == SBC_ERR_IO && strstr(err.message, "row of increment 0"));
-    sbc_driver_free(d);
-    sbc_controller_free(c);
-    sbc_engine_free(g.e);
-    sbc_frame_free(&f);
-    sbc_packing_free(&p);
+    teardown(&g, &p, &f, c, d);
     setup(&g, &p, &f, &s, &c);
     cb.user_data = &g;
     g.refuse_confined = 1;
@@ -197,12 +215,22 @@ void test_driver(void)
     ev = until_converged_or_stopped(&g, c, d, &err);
     CHECK(ev == SBC_EVENT_FAILED && err.status == SBC_ERR_GEOMETRY && strstr(err.message, "particle 7 left at "
                                                                                            "increment 0"));
+    teardown(&g, &p, &f, c, d);
+    /* net_force's answer is the one the controller judges: 1 N, no increment converges */
+    setup(&g, &p, &f, &s, &c);
+    cb.user_data = &g;
+    g.net_force = 1.0;
+    d = sbc_driver_create(c, &s, &cb, &err);
+    for (ev = SBC_EVENT_RELAXING, k = 0; k < steps && ev != SBC_EVENT_INCREMENT && ev != SBC_EVENT_FAILED; ++k) {
+        sbc_commands cmd;
+        sbc_engine_forces(g.e, &err);
+        ev = sbc_driver_step(d, 0, &err);
+        cmd = sbc_controller_commands(c);
+        sbc_engine_move_frame(g.e, &cmd);
+    }
+    CHECK(ev == SBC_EVENT_RELAXING && g.nrows == 0 && g.net_calls > 0);
     /* missing callbacks are refused */
     cb.frame = NULL;
     CHECK(sbc_driver_create(c, &s, &cb, &err) == NULL && strstr(err.message, "callbacks"));
-    sbc_driver_free(d);
-    sbc_controller_free(c);
-    sbc_engine_free(g.e);
-    sbc_frame_free(&f);
-    sbc_packing_free(&p);
+    teardown(&g, &p, &f, c, d);
 }

@@ -8,6 +8,8 @@
  *                              interior; its Ek (reduced: sum) and largest
  *                              |net contact force| before damping (max)
  *   contacts   (when needed)   Ep, sum dn/Rbar, count, sum |f| (sum)
+ *   net_force  (optional, after contacts) the largest |net contact force|
+ *                              again, from this step's contact sums (max)
  *   frame      (when needed)   the frame's positions, reactions, moments and
  *                              rotations in frame order, sum |theta|, count (sum)
  *   confined   (on a converged increment, on failure, every SBC_CONFINE_EVERY
@@ -58,6 +60,11 @@ typedef struct sbc_driver_callbacks {
     /* a converged increment: its row and log line (sbc_result_line); SBC_OK,
        or an sbc_status with the message (the run stops) */
     int (*row)(void *user_data, const sbc_result *row, const char *line, char *message, size_t cap);
+    /* optional, for a host whose measure of the largest |net contact force|
+       depends on the contact sums (YADE's unbalancedForce is relative to the
+       mean contact force): this rank's, once the contact sums [4] of all
+       ranks are known; it replaces interior's out[1]. NULL: interior's stands */
+    double (*net_force)(void *user_data, const double *contacts);
 } sbc_driver_callbacks;
 
 typedef struct sbc_driver sbc_driver;

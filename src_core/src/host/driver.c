@@ -130,6 +130,10 @@ sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err)
         snap.overlap_sum = measured[1];
         snap.contact_count = (long)measured[2];
         snap.contact_force_sum = measured[3];
+        if (d->cb.net_force) {
+            const double mine = d->cb.net_force(d->cb.user_data, measured);
+            reduce(d, &mine, &snap.unbalanced_max, 1, SBC_REDUCE_MAX);
+        }
         need = sbc_controller_needs(d->ctl, &snap);
     }
     if (need & SBC_NEED_FRAME) {

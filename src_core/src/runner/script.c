@@ -454,7 +454,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         fprintf(s->log, "servo_bc: %d cohesive bonds between the pairs touching at the start\n",
                 sbc_engine_get_view(r.engine).bonds_initial);
     {
-        sbc_driver_callbacks cb;
+        sbc_driver_callbacks cb = {0};
         cb.user_data = &r;
         cb.fire_sums = engine_fire_sums;
         cb.interior = engine_interior;
