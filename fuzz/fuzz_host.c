@@ -10,26 +10,58 @@
 
 #define MAX_PARTICLES 64
 
+/* a host whose packing is at rest: the frame where the commands put it */
+typedef struct resting {
+    sbc_host *h;
+    int n, q;
+} resting;
+
+static void rest_interior(void *u, const double *mix, double *out)
+{
+    (void)u, (void)mix;
+    out[0] = out[1] = 0.0;
+}
+
+static void rest_fire_sums(void *u, double *sums)
+{
+    (void)u;
+    memset(sums, 0, sizeof(double) * SBC_FIRE_SUMS);
+}
+
+static void rest_contacts(void *u, double *out)
+{
+    const resting *r = u;
+    out[0] = 1e-9, out[1] = 0.0, out[2] = 2.0 * r->n, out[3] = 1.0;
+}
+
+static void rest_frame(void *u, double *buf)
+{
+    const resting *r = u;
+    const double *cx = sbc_host_command_x(r->h);
+    int i;
+    for (i = 0; i < 3 * r->q; ++i) {
+        if (!isfinite(cx[i]))
+            abort();
+        buf[i] = cx[i];
+    }
+    buf[8 * r->q + 1] = r->n;
+}
+
 static void drive(sbc_host *h, int n)
 {
-    const int q = sbc_host_frame_size(h);
-    double measures[SBC_HOST_MEASURES] = {0}, x[3 * MAX_PARTICLES], theta[MAX_PARTICLES] = {0},
-           force[3 * MAX_PARTICLES] = {0}, torque[MAX_PARTICLES] = {0};
-    int k, i;
-    measures[SBC_HOST_EP] = 1e-9;
-    measures[SBC_HOST_CONTACT_SUM] = 1.0;
-    measures[SBC_HOST_CONTACT_COUNT] = 2 * n;
-    measures[SBC_HOST_PARTICLE_COUNT] = n;
+    resting r;
+    sbc_host_callbacks cb = {0};
+    int k;
+    r.h = h, r.n = n, r.q = sbc_host_frame_size(h);
+    cb.user_data = &r;
+    cb.fire_sums = rest_fire_sums;
+    cb.interior = rest_interior;
+    cb.contacts = rest_contacts;
+    cb.frame = rest_frame;
+    if (sbc_host_drive(h, &cb) != 0)
+        abort();
     for (k = 0; k < 20; ++k) {
-        const double *cx = sbc_host_command_x(h);
-        int ev;
-        for (i = 0; i < 3 * q; ++i) {
-            if (!isfinite(cx[i]))
-                abort();
-            x[i] = cx[i];
-        }
-        sbc_host_needs(h, measures);
-        ev = sbc_host_step(h, measures, x, theta, force, torque);
+        const int ev = sbc_host_step(h);
         if (ev == SBC_EVENT_FAILED) {
             fuzz_expect_message(sbc_host_message(h), "sbc_host_step");
             break;

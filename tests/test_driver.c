@@ -56,13 +56,7 @@ static double net_force(void *u, const double *sums)
 static void frame(void *u, double *buf)
 {
     const rig *g = u;
-    const size_t Q = (size_t)g->Q;
-    memcpy(buf, g->snap.x, sizeof(double) * 3 * Q);
-    memcpy(buf + 3 * Q, g->snap.force, sizeof(double) * 3 * Q);
-    memcpy(buf + 6 * Q, g->snap.torque, sizeof(double) * Q);
-    memcpy(buf + 7 * Q, g->snap.theta, sizeof(double) * Q);
-    buf[8 * Q] = g->snap.rotation_sum;
-    buf[8 * Q + 1] = (double)g->snap.particle_count;
+    sbc_driver_frame_from_snapshot(&g->snap, g->Q, buf);
 }
 
 static void reduce(void *u, const double *in, double *out, int n, sbc_reduce_op op)

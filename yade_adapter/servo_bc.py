@@ -22,10 +22,10 @@ import math
 import os
 import sys
 
-from servo_bc_core import (ServoBCError, EP_UNMEASURED, NEED_CONTACTS, NEED_FRAME, DAMPING_NONE,  # noqa: F401
-                           DAMPING_LOCAL, DAMPING_FIRE, EK, NET_MAX, EP, CONTACT_SUM, CONTACT_COUNT, OVERLAP_SUM,
-                           ROTATION_SUM, PARTICLE_COUNT, MEASURES, RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED,
-                           library as _core, columns as _columns, doubles as _doubles, version as _version)
+from servo_bc_core import (ServoBCError, DAMPING_NONE, DAMPING_LOCAL, DAMPING_FIRE,  # noqa: F401
+                           RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED, HostCallbacks, frame_size as _frame_size,
+                           library as _core, columns as _columns, doubles as _doubles, version as _version,
+                           free as _free)
 from yade import O, utils
 from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop,
                           Ig2_Sphere_Sphere_ScGeom, Ip2_FrictMat_FrictMat_FrictPhys,
@@ -36,7 +36,7 @@ __all__ = ['ServoBCError', 'ServoBC', 'Bonds', 'Cohesive', 'load_packing', 'engi
            'FRAME_MASK']
 
 RATTLER_SCAN = 1000                     # steps between full scans for contact-free bodies
-CONFINE_EVERY = 10000                   # SBC_CONFINE_EVERY: steps between confinement checks
+PROGRESS_CHECK = 10000                  # steps between looks at the clock for a progress line
 PROGRESS_EVERY = 10.0                   # s of wall time between progress lines of a long increment
 FRAME_MASK = 2                          # groupMask bit of the frame bodies load_packing flags
 
@@ -262,7 +262,6 @@ class ServoBC(object):
         lib = _core()
         words = self.words
         self.kn = float(kn)
-        self._since_check = 0
         self._started = self._reported = time.time()
         n = len(self.bodies)
         xy, r, m = [], [], []
@@ -290,9 +289,8 @@ class ServoBC(object):
                 raise ServoBCError('servo_bc: keyword damping: alpha %g and beta %g differ; YADE\'s NewtonIntegrator '
                                    'damps forces and moments with one factor' % (alpha.value, beta.value))
             self.damping = alpha.value
-        self._fire_sums = (ctypes.c_double * 5)()
         self._interior_states = None      # FIRE: the interior's State objects and (mass, inertia), cached
-        self._fire_out = (ctypes.c_double * 4)()
+        self._fire_seen = None            # FIRE: the interior's forces, torques, velocities at the sums
         self.Q = lib.sbc_host_frame_size(self._h)
         particles = lib.sbc_host_frame_particles(self._h)
         self.frame = [self.bodies[particles[q]] for q in range(self.Q)]
@@ -304,11 +302,7 @@ class ServoBC(object):
         self._law_functor = None
         self._states = [O.bodies[i].state for i in self.frame]
         self._moving = False
-        self._buffers = [(ctypes.c_double * (3 * self.Q))(), (ctypes.c_double * self.Q)(),
-                         (ctypes.c_double * (3 * self.Q))(), (ctypes.c_double * self.Q)()]
         self._columns = _columns()
-        self._row = (ctypes.c_double * len(self._columns))()
-        self._m = (ctypes.c_double * MEASURES)()
         self._fc_mean = 0.0       # the last measured mean |contact force|, N
         # keyword seal (seal.h): the walls' forces, computed by the core each step
         self._seal = lib.sbc_host_sealed(self._h) == 1
@@ -322,7 +316,35 @@ class ServoBC(object):
         if lib.sbc_host_warning(self._h, warning, 2048):
             for line in warning.value.decode().splitlines():
                 print('servo_bc: WARNING: %s' % line, flush=True)
+        self._drive()
         self._apply_commands()
+
+    def _drive(self):
+        """The callbacks of sbc_host_drive (host.h): the core's host driver asks through them for what it
+        needs on each step. An exception in one is kept and raised once sbc_host_step returns."""
+        def guarded(function, default=None):
+            def call(*args):
+                try:
+                    return function(*args)
+                except BaseException as e:    # ctypes would print it and go on
+                    if self._callback_error is None:
+                        self._callback_error = e
+                    return default
+            return call
+        T = HostCallbacks
+        self._callback_error = None
+        cb = HostCallbacks()
+        if self._fire:
+            cb.fire_sums = T.fire_sums_type(guarded(self._fire_sums_callback))
+        cb.interior = T.interior_type(guarded(self._interior_callback))
+        cb.contacts = T.contacts_type(guarded(self._contacts_callback))
+        cb.net_force = T.net_force_type(guarded(self._net_force_callback, 0.0))
+        cb.frame = T.frame_type(guarded(self._frame_callback))
+        cb.interior_state = T.interior_state_type(guarded(self._interior_state_callback))
+        cb.row = T.row_type(guarded(self._row_callback))
+        self._callbacks = cb              # ctypes keeps no reference of its own
+        if _core().sbc_host_drive(self._h, ctypes.byref(cb)):
+            raise ServoBCError(_core().sbc_host_message(self._h).decode())
 
     def _frame_list(self, words):
         w = words.split('#', 1)[0].split()
@@ -338,9 +360,8 @@ class ServoBC(object):
         return [k for k, i in enumerate(self.bodies) if O.bodies[i].groupMask & mask]
 
     def __del__(self):
-        if getattr(self, '_h', None) and _lib is not None:
-            _lib.sbc_host_free(self._h)
-            self._h = None
+        _free('sbc_host_free', getattr(self, '_h', None))
+        self._h = None
 
     # -- one step -----------------------------------------------------------
     def _kinetic_energy(self):
@@ -441,11 +462,11 @@ class ServoBC(object):
         except ServoBCError as e:
             self._stop(e)
 
-    def _fire_mix(self):
-        """damping fire (fire_damping.h): FIRE's mix on the interior's velocities, which are
-        YADE's v^(n-1/2) here (NewtonIntegrator then adds dt F/m, as the embedded engine does);
-        eq. 10 on the torque of a freely rotating frame body ((T)), as in the other hosts."""
-        sums, out, forces = self._fire_sums, self._fire_out, O.forces
+    # -- the callbacks of the host driver (sbc_host_callbacks) ----------------
+    def _fire_sums_callback(self, user_data, sums):
+        """damping fire (fire_damping.h): FIRE's sums over the interior, whose velocities are YADE's
+        v^(n-1/2) here (NewtonIntegrator then adds dt F/m, as the embedded engine does)."""
+        forces = O.forces
         if self._interior_states is None:
             self._interior_states = [O.bodies[i].state for i in self.interior]
             self._interior_mass = [(st.mass, st.inertia[2]) for st in self._interior_states]
@@ -462,19 +483,68 @@ class ServoBC(object):
             ww += w * w
             mm += t * t
         sums[0], sums[1], sums[2], sums[3], sums[4] = p, vv, ff, ww, mm
-        _core().sbc_host_fire_mix(self._h, sums, out)
-        keep, push, spin, stop = out[0], out[1], out[2], out[3]
+        self._fire_seen = (fs, ts, vs, ws)
+
+    def _fire_mix(self, mix):
+        """FIRE's mix of this step on the interior's velocities; eq. 10 on the torque of a freely
+        rotating frame body ((T)), as in the other hosts."""
+        keep, push, spin, stop = mix[0], mix[1], mix[2], mix[3]
+        fs, ts, vs, ws = self._fire_seen
         half = 0.5 * self.dt * stop
-        for st, (mass, inertia), f, t, v, w in zip(states, self._interior_mass, fs, ts, vs, ws):
+        for st, (mass, inertia), f, t, v, w in zip(self._interior_states, self._interior_mass, fs, ts, vs, ws):
             q = push - half / mass
             st.vel = (keep * v[0] + q * f[0], keep * v[1] + q * f[1], 0.0)
             st.angVel = (0.0, 0.0, keep * w + (spin - half / inertia) * t)
         if self._free_any and self._fire_beta > 0.0:
+            forces = O.forces
             for q, s in enumerate(self._states):
                 if self._free[q]:
                     t, w = forces.t(self.frame[q])[2], s.angVel[2]
                     if w != 0.0:
                         forces.addT(self.frame[q], (0.0, 0.0, -math.copysign(self._fire_beta * abs(t), w)))
+
+    def _interior_callback(self, user_data, mix, out):
+        """FIRE's mix when given; the interior's Ek and largest net force (relax.h). Eq. 10 is
+        NewtonIntegrator's, later in the step."""
+        if mix:
+            self._fire_mix(mix)
+        out[0] = self._kinetic_energy()
+        out[1] = self._net_force_max(self._fc_mean)
+
+    def _contacts_callback(self, user_data, out):
+        out[0] = self._potential_energy() + (self._seal_energy.value if self._seal else 0.0)
+        out[1], out[2], out[3] = self._contact_sums()
+
+    def _net_force_callback(self, user_data, sums):
+        """The largest net force again with this step's mean contact force (_net_force_max)."""
+        self._fc_mean = sums[3] / sums[2] if sums[2] > 0 else 0.0
+        return self._net_force_max(self._fc_mean)
+
+    def _frame_callback(self, user_data, buf):
+        Q = self.Q
+        theta = [self._frame_theta(q, s) for q, s in enumerate(self._states)]
+        for q, i in enumerate(self.frame):
+            s = self._states[q]
+            f, t = O.forces.f(i), O.forces.t(i)
+            buf[3 * q], buf[3 * q + 1], buf[3 * q + 2] = s.pos[0], s.pos[1], s.pos[2]
+            buf[3 * Q + 3 * q], buf[3 * Q + 3 * q + 1], buf[3 * Q + 3 * q + 2] = f[0], f[1], f[2]
+            buf[6 * Q + q] = t[2]
+            buf[7 * Q + q] = theta[q]
+        buf[8 * Q] = sum(abs(O.bodies[i].state.rot()[2]) for i in self.interior) + sum(abs(v) for v in theta)
+        buf[8 * Q + 1] = len(self.bodies)
+
+    def _interior_state_callback(self, user_data, ids, x, v):
+        """The interior bodies for the confinement test (confine.h): ids, centres, velocities."""
+        for k, i in enumerate(self.interior):
+            st = O.bodies[i].state
+            ids[k] = i
+            x[3 * k], x[3 * k + 1], x[3 * k + 2] = st.pos[0], st.pos[1], st.pos[2]
+            v[3 * k], v[3 * k + 1], v[3 * k + 2] = st.vel[0], st.vel[1], st.vel[2]
+
+    def _row_callback(self, user_data, row, line):
+        self.rows.append(dict(zip(self._columns, row[:len(self._columns)])))
+        print(line.decode(), flush=True)
+        self._reported = time.time()
 
     def _seal_forces(self):
         """keyword seal: the walls of the frame's polygon on the bodies (sbc_host_seal), added to
@@ -491,85 +561,33 @@ class ServoBC(object):
 
     def _step(self):
         lib = _core()
-        m = self._m
         if self._seal:
             self._seal_forces()
-        if self._fire:
-            self._fire_mix()
-        m[EK] = self._kinetic_energy()
-        m[NET_MAX] = self._net_force_max(self._fc_mean)
-        m[EP] = EP_UNMEASURED
-        need = lib.sbc_host_needs(self._h, m)
-        if need & NEED_CONTACTS:
-            m[EP] = self._potential_energy() + (self._seal_energy.value if self._seal else 0.0)
-            m[OVERLAP_SUM], m[CONTACT_COUNT], m[CONTACT_SUM] = self._contact_sums()
-            self._fc_mean = m[CONTACT_SUM] / m[CONTACT_COUNT] if m[CONTACT_COUNT] > 0 else 0.0
-            m[NET_MAX] = self._net_force_max(self._fc_mean)
-            need = lib.sbc_host_needs(self._h, m)
-        if need & NEED_FRAME:
-            x, theta, force, torque = self._buffers
-            for q, i in enumerate(self.frame):
-                s = self._states[q]
-                f, t = O.forces.f(i), O.forces.t(i)
-                x[3 * q], x[3 * q + 1] = s.pos[0], s.pos[1]
-                force[3 * q], force[3 * q + 1] = f[0], f[1]
-                torque[q] = t[2]
-                theta[q] = self._frame_theta(q, s)
-            m[ROTATION_SUM] = sum(abs(O.bodies[i].state.rot()[2]) for i in self.interior) + sum(abs(v) for v in theta)
-            m[PARTICLE_COUNT] = len(self.bodies)
-            ev = lib.sbc_host_step(self._h, m, x, theta, force, torque)
-        else:
-            ev = lib.sbc_host_step(self._h, m, None, None, None, None)
+        ev = lib.sbc_host_step(self._h)
         self.steps += 1
-        self._since_check += 1
-        converged = ev in (INCREMENT, FINISHED)
-        # confine.h: before a converged increment's row is kept, on failure, every CONFINE_EVERY steps
-        if converged or ev == FAILED or self._since_check >= CONFINE_EVERY:
-            self._since_check = 0
-            self._report_progress(converged)
-            if not self._confined():
-                self._stop(ServoBCError(lib.sbc_host_message(self._h).decode()))
-                return
+        if self._callback_error is not None:
+            error, self._callback_error = self._callback_error, None
+            raise error
+        if self.steps % PROGRESS_CHECK == 0:
+            self._report_progress()
         if ev == FAILED:
             self._stop(ServoBCError(lib.sbc_host_message(self._h).decode()))
             return
-        if ev in (INCREMENT, FINISHED):
-            lib.sbc_host_result(self._h, self._row)
-            row = dict(zip(self._columns, self._row))
-            self.rows.append(row)
-            print(lib.sbc_host_result_line(self._h).decode(), flush=True)
         if ev == FINISHED:
             self._stop(None)
             return
         self._apply_commands(ev in (CORRECTED, INCREMENT))
 
-    def _report_progress(self, converged):
+    def _report_progress(self):
         """A progress line when an increment has run PROGRESS_EVERY seconds since the last line."""
         now = time.time()
-        if converged:
-            self._reported = now
-        elif now - self._reported >= PROGRESS_EVERY:
+        if now - self._reported >= PROGRESS_EVERY:
             self._reported = now
             p = (ctypes.c_double * 4)()
             _core().sbc_host_progress(self._h, p)
             print('servo_bc:   increment %d: servo iteration %d, residuals force %.3e moment %.3e deformation '
                   '%.3e, step %d, elapsed %.0f s' % (len(self.rows), int(p[0]), p[1], p[2], p[3], self.steps,
                                                      now - self._started), flush=True)
-
-    def _confined(self):
-        """The interior bodies against the polygon of the frame's centres (sbc_host_confined);
-        writes a converged increment's row when they pass."""
-        n = len(self.interior)
-        fx = (ctypes.c_double * (3 * self.Q))()
-        for q, s in enumerate(self._states):
-            fx[3 * q], fx[3 * q + 1] = s.pos[0], s.pos[1]
-        ids = (ctypes.c_long * max(1, n))(*self.interior)
-        xy, vxy = (ctypes.c_double * max(2, 2 * n))(), (ctypes.c_double * max(2, 2 * n))()
-        for k, i in enumerate(self.interior):
-            st = O.bodies[i].state
-            xy[2 * k], xy[2 * k + 1] = st.pos[0], st.pos[1]
-            vxy[2 * k], vxy[2 * k + 1] = st.vel[0], st.vel[1]
-        return _core().sbc_host_confined(self._h, fx, n, ids, xy, vxy) == 0
 
     def _frame_theta(self, q, state):
         return state.rot()[2] if self._free[q] else self.theta[q]
@@ -682,9 +700,8 @@ class Bonds(_BondedBodies):
         _bonded_engines[self.engine.label] = self
 
     def __del__(self):
-        if getattr(self, '_h', None) and _lib is not None:
-            _lib.sbc_bpm_free(self._h)
-            self._h = None
+        _free('sbc_bpm_free', getattr(self, '_h', None))
+        self._h = None
 
     def critical_dt(self):
         return _core().sbc_bpm_critical_dt(self._h)
@@ -767,9 +784,8 @@ class Cohesive(_BondedBodies):
         _bonded_engines[self.engine.label] = self
 
     def __del__(self):
-        if getattr(self, '_h', None) and _lib is not None:
-            _lib.sbc_cohesive_host_free(self._h)
-            self._h = None
+        _free('sbc_cohesive_host_free', getattr(self, '_h', None))
+        self._h = None
 
     def bond_count(self):
         """Intact bonds now."""

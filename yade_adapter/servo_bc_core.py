@@ -14,17 +14,35 @@ The library is found at $SERVO_BC_LIB, beside this file, or in ../build/.
 import ctypes
 import os
 
-__all__ = ['ServoBCError', 'library', 'version', 'columns', 'doubles', 'EP_UNMEASURED', 'NEED_CONTACTS',
-           'NEED_FRAME', 'DAMPING_NONE', 'DAMPING_LOCAL', 'DAMPING_FIRE', 'EK', 'NET_MAX', 'EP', 'CONTACT_SUM',
-           'CONTACT_COUNT', 'OVERLAP_SUM', 'ROTATION_SUM', 'PARTICLE_COUNT', 'MEASURES', 'RELAXING', 'CORRECTED',
-           'INCREMENT', 'FINISHED', 'FAILED']
+__all__ = ['ServoBCError', 'library', 'version', 'columns', 'doubles', 'frame_size', 'HostCallbacks', 'DAMPING_NONE',
+           'DAMPING_LOCAL', 'DAMPING_FIRE', 'FIRE_SUMS', 'RELAXING', 'CORRECTED', 'INCREMENT', 'FINISHED', 'FAILED']
 
-EP_UNMEASURED = -1.0                    # SBC_RELAX_EP_UNMEASURED
-NEED_CONTACTS, NEED_FRAME = 1, 2        # SBC_NEED_*
 DAMPING_NONE, DAMPING_LOCAL, DAMPING_FIRE = 0, 1, 2  # sbc_damping (settings.h)
-# the measures of one step (SBC_HOST_EK ... SBC_HOST_PARTICLE_COUNT, host.h)
-EK, NET_MAX, EP, CONTACT_SUM, CONTACT_COUNT, OVERLAP_SUM, ROTATION_SUM, PARTICLE_COUNT, MEASURES = range(9)
+FIRE_SUMS = 5                                        # SBC_FIRE_SUMS (fire_damping.h)
 RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED = range(5)   # sbc_event
+
+_pd = ctypes.POINTER(ctypes.c_double)
+
+
+class HostCallbacks(ctypes.Structure):
+    """sbc_host_callbacks (host.h): the host's side of one step, given once to sbc_host_drive. Each field is
+    made from its own function type, e.g. HostCallbacks.interior_type(f) for f(user_data, mix, out)."""
+    fire_sums_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _pd)
+    interior_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _pd, _pd)
+    contacts_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _pd)
+    net_force_type = ctypes.CFUNCTYPE(ctypes.c_double, ctypes.c_void_p, _pd)
+    frame_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _pd)
+    interior_state_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.POINTER(ctypes.c_long), _pd, _pd)
+    row_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _pd, ctypes.c_char_p)
+    _fields_ = [('user_data', ctypes.c_void_p), ('fire_sums', fire_sums_type), ('interior', interior_type),
+                ('contacts', contacts_type), ('net_force', net_force_type), ('frame', frame_type),
+                ('interior_state', interior_state_type), ('row', row_type)]
+
+
+def frame_size(q):
+    """SBC_DRIVER_FRAME_SIZE (driver.h): the doubles of the frame callback's buffer for q frame particles:
+    x [3q], force [3q], torque [q], theta [q], sum |theta|, particle count."""
+    return 8 * q + 2
 
 
 class ServoBCError(RuntimeError):
@@ -41,17 +59,16 @@ def _load():
             break
     else:
         raise ServoBCError('servo_bc: libservo_bc.so not found (run `make yade`, or set SERVO_BC_LIB)')
-    D, I, L, P = ctypes.c_double, ctypes.c_int, ctypes.c_long, ctypes.c_void_p
+    D, I, P = ctypes.c_double, ctypes.c_int, ctypes.c_void_p
     pd, pi = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_int)
     sig = {
         'sbc_host_create': (P, [ctypes.c_char_p, I, pd, pd, pd, I, pi, D, D, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_host_free': (None, [P]),
         'sbc_host_frame_size': (I, [P]),
         'sbc_host_frame_particles': (pi, [P]),
-        'sbc_host_needs': (ctypes.c_uint, [P, pd]),
-        'sbc_host_step': (I, [P, pd, pd, pd, pd, pd]),
+        'sbc_host_drive': (I, [P, ctypes.POINTER(HostCallbacks)]),
+        'sbc_host_step': (I, [P]),
         'sbc_host_message': (ctypes.c_char_p, [P]),
-        'sbc_host_result_line': (ctypes.c_char_p, [P]),
         'sbc_host_progress': (None, [P, pd]),
         'sbc_host_command_x': (pd, [P]),
         'sbc_host_command_theta': (pd, [P]),
@@ -62,8 +79,6 @@ def _load():
         'sbc_version': (ctypes.c_char_p, []),
         'sbc_column_count': (I, []),
         'sbc_column_name': (ctypes.c_char_p, [I]),
-        'sbc_host_fire_mix': (None, [P, pd, pd]),
-        'sbc_host_confined': (I, [P, pd, I, ctypes.POINTER(L), pd, pd]),
         'sbc_bpm_host_create': (P, [ctypes.c_char_p, D, D, D, pd, I, pd, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_bpm_host_bond_count': (I, [P]),
         'sbc_bpm_host_intact': (I, [P]),
@@ -109,6 +124,12 @@ def columns():
 def doubles(values):
     """A ctypes array of the values (double)."""
     return (ctypes.c_double * len(values))(*values)
+
+
+def free(name, handle):
+    """Calls the library's free function name on handle, unless the library is already gone (interpreter exit)."""
+    if _lib is not None and handle:
+        getattr(_lib, name)(handle)
 
 
 def version():

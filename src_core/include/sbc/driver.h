@@ -80,6 +80,10 @@ void sbc_driver_free(sbc_driver *d);
  * SBC_EVENT_RELAXING without stepping the controller. */
 sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err);
 
+/* The frame buffer (SBC_DRIVER_FRAME_SIZE(Q)) from a snapshot's frame arrays
+ * and sums, for a host that measures into an sbc_snapshot. */
+void sbc_driver_frame_from_snapshot(const sbc_snapshot *s, int Q, double *buf);
+
 /* FIRE's state, for a host's restart file. */
 sbc_fire_state *sbc_driver_fire(sbc_driver *d);
 

@@ -3,9 +3,10 @@
  * mirror the core's structs. Plain types only: words as one string, arrays
  * of doubles, events as ints, messages as C strings owned by the handle.
  *
- * One handle = parsed settings + frame + controller + the CSV of `file`.
- * Per host step: sbc_host_needs (relax.h, controller.h: what to measure),
- * sbc_host_step, then the commands (sbc_host_command_*). */
+ * One handle = parsed settings + frame + controller + the CSV of `file` +
+ * the host driver (driver.h). Once: sbc_host_drive with the host's
+ * callbacks. Per host step: sbc_host_step, then the commands
+ * (sbc_host_command_*). */
 #ifndef SBC_HOST_H
 #define SBC_HOST_H
 
@@ -13,6 +14,7 @@
 
 #include "sbc/columns.h"
 #include "sbc/controller.h"
+#include "sbc/driver.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -42,11 +44,6 @@ int sbc_host_warning(const sbc_host *h, char *msg, size_t cap);
  * 10 (0 for none; with FIRE they damp the free frame rotations of (T)). */
 int sbc_host_damping(const sbc_host *h, double *alpha, double *beta);
 
-/* damping fire (fire_damping.h): this step's mix from the interior's sums
- * [SBC_FIRE_SUMS]; mix [4] = keep, push, spin, stop (sbc_fire_mix). Call it
- * once per step. */
-void sbc_host_fire_mix(sbc_host *h, const double *sums, double *mix);
-
 /* keyword seal (seal.h): sbc_host_sealed is 1 when the words ask for it.
  * sbc_host_seal: the walls' forces on the creation's particles at centres xy
  * [2n] (m), the frame's at the commanded centres, into force [2n] (N,
@@ -62,54 +59,53 @@ int sbc_host_seal(sbc_host *h, const double *xy, double *force, double *energy);
 int sbc_host_frame_size(const sbc_host *h);
 const int *sbc_host_frame_particles(const sbc_host *h);
 
-/* The measures of one host step (sbc_snapshot's scalars), as an array of
- * SBC_HOST_MEASURES doubles indexed so; unmeasured contact sums: Ep =
- * SBC_RELAX_EP_UNMEASURED (controller.h, sbc_controller_needs). */
-enum {
-    SBC_HOST_EK = 0,          /* J */
-    SBC_HOST_NET_MAX,         /* largest |net contact force| on an interior particle, N */
-    SBC_HOST_EP,              /* J */
-    SBC_HOST_CONTACT_SUM,     /* sum |contact force|, N */
-    SBC_HOST_CONTACT_COUNT,
-    SBC_HOST_OVERLAP_SUM,     /* eq. 39 */
-    SBC_HOST_ROTATION_SUM,    /* eq. 41, rad */
-    SBC_HOST_PARTICLE_COUNT,
-    SBC_HOST_MEASURES
-};
+/* The host's side of one step: driver.h's callbacks in plain types. The
+ * per-step protocol (what to measure and when, FIRE's state, the controller,
+ * the confinement cadence, the row) is the driver's, the same as every other
+ * host's; the callbacks only read and write the host's particles. */
+typedef struct sbc_host_callbacks {
+    void *user_data;
+    /* damping fire (fire_damping.h): the interior's sums [SBC_FIRE_SUMS] */
+    void (*fire_sums)(void *user_data, double *sums);
+    /* the interior: FIRE's mix of this step when mix is not NULL ([4] keep,
+       push, spin, stop: sbc_fire_mix), then out [2]: its Ek (eq. 12, J; the
+       particles that carry a force) and its largest |net contact force| (N) */
+    void (*interior)(void *user_data, const double *mix, double *out);
+    /* out [4]: Ep (eq. 12, J), sum dn / Rbar (eq. 39), contact count, sum
+       |contact force| (N) */
+    void (*contacts)(void *user_data, double *out);
+    /* optional (driver.h): the largest |net contact force| again, from this
+       step's contact sums [4] */
+    double (*net_force)(void *user_data, const double *contacts);
+    /* the frame, in frame order, into buf [SBC_DRIVER_FRAME_SIZE(Q)] (zeroed):
+       x [3Q] (m), force [3Q] (N), torque [Q] (N m), theta [Q] (rad), sum
+       |theta| over every particle (eq. 41), particle count */
+    void (*frame)(void *user_data, double *buf);
+    /* optional (without it confinement is not checked): the interior
+       particles, those of the creation arrays not in the frame, in creation
+       order: ids [N - Q] (for the message), centres and velocities [3 (N - Q)]
+       (m, m/s) */
+    void (*interior_state)(void *user_data, long *ids, double *x, double *v);
+    /* optional: a converged increment, once the CSV of `file` has it: its row
+       [SBC_HOST_ROW] and its log line (sbc_result_line) */
+    void (*row)(void *user_data, const double *row, const char *line);
+} sbc_host_callbacks;
 
-/* sbc_controller_needs. */
-unsigned sbc_host_needs(const sbc_host *h, const double *measures);
+/* The callbacks of the host's steps (copied). 0, or 1 with the message in
+ * sbc_host_message (a required callback missing). */
+int sbc_host_drive(sbc_host *h, const sbc_host_callbacks *cb);
 
-/* One host step (sbc_controller_step) with the measures above and the
- * frame arrays of sbc_snapshot in frame order: x, force [3Q] (3 slots
- * whatever the dimension), theta, torque [Q]; they may be NULL where
- * sbc_host_needs allowed it.
- * Returns the sbc_event. The row of SBC_EVENT_INCREMENT and
- * SBC_EVENT_FINISHED goes to the CSV once sbc_host_confined passes it (or at
- * the next sbc_host_step, or sbc_host_free, for a host that does not check).
- * On SBC_EVENT_FAILED the message is in sbc_host_message. */
-int sbc_host_step(sbc_host *h, const double *measures, const double *x, const double *theta, const double *force,
-                  const double *torque);
+/* One host step, after the host's contact forces (and sbc_host_seal's):
+ * sbc_driver_step through the callbacks. Returns the sbc_event; apply the
+ * commands (sbc_host_command_*) before the next step. On SBC_EVENT_FAILED the
+ * message is in sbc_host_message. */
+int sbc_host_step(sbc_host *h);
 const char *sbc_host_message(const sbc_host *h);
-
-/* The log line of the last converged increment (results.h, sbc_result_line),
- * owned by the handle. */
-const char *sbc_host_result_line(sbc_host *h);
 
 /* Progress within the increment under way (sbc_controller_progress), for the
  * progress lines of long increments: out [4] = servo iteration, residual
  * norms of force, moment and deformation. */
 void sbc_host_progress(const sbc_host *h, double *out);
-
-/* confine.h for n interior particles (ids [n] for the message, centres xy
- * [2n] in m, velocities vxy [2n] in m/s) against the frame's present centres
- * frame_x [3Q] (frame order). Call it after SBC_EVENT_INCREMENT and
- * SBC_EVENT_FINISHED (it then writes the pending row), after
- * SBC_EVENT_FAILED (an escape explains a stalled servo) and every
- * SBC_CONFINE_EVERY steps. Returns 0, or 1 with the message in
- * sbc_host_message and the pending row dropped. */
-int sbc_host_confined(sbc_host *h, const double *frame_x, int n, const long *ids, const double *xy,
-                      const double *vxy);
 
 /* The commands in force: target positions [3Q] (m), rotations [Q] (rad),
  * free-rotation flags [Q]; valid until the next sbc_host_step. */

@@ -59,6 +59,17 @@ void sbc_driver_free(sbc_driver *d)
 
 sbc_fire_state *sbc_driver_fire(sbc_driver *d) { return &d->fire; }
 
+void sbc_driver_frame_from_snapshot(const sbc_snapshot *s, int Q, double *buf)
+{
+    const size_t q = (size_t)Q;
+    memcpy(buf, s->x, sizeof(double) * 3 * q);
+    memcpy(buf + 3 * q, s->force, sizeof(double) * 3 * q);
+    memcpy(buf + 6 * q, s->torque, sizeof(double) * q);
+    memcpy(buf + 7 * q, s->theta, sizeof(double) * q);
+    buf[8 * q] = s->rotation_sum;
+    buf[8 * q + 1] = (double)s->particle_count;
+}
+
 static void reduce(const sbc_driver *d, const double *in, double *out, int n, sbc_reduce_op op)
 {
     if (d->cb.reduce)

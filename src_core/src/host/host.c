@@ -1,6 +1,5 @@
 /* The core behind one handle, for hosts reaching C through an FFI (host.h). */
 #include "sbc/host.h"
-#include "sbc/fire_damping.h"
 
 #include "sbc/columns.h"
 #include "sbc/confine.h"
@@ -21,8 +20,10 @@ struct sbc_host {
     sbc_controller *ctl;
     sbc_csv csv;
     sbc_error err;
-    int pending; /* a converged increment's row, written once sbc_host_confined passes it */
-    sbc_fire_state fire; /* damping fire */
+    sbc_driver *driver;    /* sbc_host_drive */
+    sbc_host_callbacks cb;
+    long *ids;             /* [N - Q] interior_state's */
+    double *ix, *iv;       /* [3 (N - Q)] */
     /* keyword seal (seal.h) */
     int sealed, n;    /* n: the creation's particles */
     sbc_seal seal;
@@ -30,7 +31,6 @@ struct sbc_host {
     int *slot;        /* [n] frame position, -1 interior */
     double *reaction; /* [3Q] N */
     char step_note[SBC_ERROR_LEN]; /* time_step.h: sbc_time_step_note, or "" */
-    char line[320];   /* sbc_host_result_line */
 };
 
 static int host_slot(const void *ctx, int k) { return ((const int *)ctx)[k]; }
@@ -61,15 +61,6 @@ static int seal_start(sbc_host *h, int n, const double *r, double kn, sbc_error 
     return 0;
 }
 
-/* the pending row to the CSV; 0, or 1 with the message in h->err */
-static int write_pending(sbc_host *h)
-{
-    if (!h->pending)
-        return 0;
-    h->pending = 0;
-    return h->csv.fp && sbc_csv_write(&h->csv, sbc_controller_result(h->ctl), &h->err) != SBC_OK;
-}
-
 static sbc_host *fail_create(sbc_host *h, const sbc_error *err, char *msg, size_t cap)
 {
     if (msg && cap > 0)
@@ -82,8 +73,6 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
                           const int *list, double dt, double kn, char *msg, size_t cap)
 {
     sbc_host *h = calloc(1, sizeof *h);
-    if (h)
-        sbc_fire_start(&h->fire);
     sbc_error err;
     char *line, **w;
     int nw, q;
@@ -184,8 +173,7 @@ void sbc_host_free(sbc_host *h)
 {
     if (!h)
         return;
-    if (h->ctl)
-        write_pending(h);
+    sbc_driver_free(h->driver);
     sbc_controller_free(h->ctl);
     sbc_csv_close(&h->csv);
     sbc_frame_free(&h->frame);
@@ -193,6 +181,9 @@ void sbc_host_free(sbc_host *h)
     free(h->r);
     free(h->slot);
     free(h->reaction);
+    free(h->ids);
+    free(h->ix);
+    free(h->iv);
     free(h);
 }
 
@@ -216,15 +207,6 @@ int sbc_host_damping(const sbc_host *h, double *alpha, double *beta)
     *alpha = h->settings.damping ? h->settings.alpha : 0.0;
     *beta = h->settings.damping ? h->settings.beta : 0.0;
     return (int)h->settings.damping;
-}
-
-void sbc_host_fire_mix(sbc_host *h, const double *sums, double *mix)
-{
-    const sbc_fire_mix m = sbc_fire_step(&h->fire, sums);
-    mix[0] = m.keep;
-    mix[1] = m.push;
-    mix[2] = m.spin;
-    mix[3] = m.stop;
 }
 
 int sbc_host_sealed(const sbc_host *h) { return h->sealed; }
@@ -259,66 +241,117 @@ int sbc_host_frame_size(const sbc_host *h) { return h->frame.n; }
 
 const int *sbc_host_frame_particles(const sbc_host *h) { return h->frame.particle; }
 
-/* the snapshot of the measures (no frame arrays) */
-static sbc_snapshot measures(const double *m)
+/* driver.h's callbacks over the host's (sbc_host_callbacks) */
+static void drive_fire_sums(void *u, double *sums)
 {
-    sbc_snapshot s;
-    memset(&s, 0, sizeof s);
-    s.kinetic_energy = m[SBC_HOST_EK];
-    s.unbalanced_max = m[SBC_HOST_NET_MAX];
-    s.potential_energy = m[SBC_HOST_EP];
-    s.contact_force_sum = m[SBC_HOST_CONTACT_SUM];
-    s.contact_count = (long)m[SBC_HOST_CONTACT_COUNT];
-    s.overlap_sum = m[SBC_HOST_OVERLAP_SUM];
-    s.rotation_sum = m[SBC_HOST_ROTATION_SUM];
-    s.particle_count = (long)m[SBC_HOST_PARTICLE_COUNT];
-    return s;
+    const sbc_host *h = u;
+    h->cb.fire_sums(h->cb.user_data, sums);
 }
 
-unsigned sbc_host_needs(const sbc_host *h, const double *m)
+static void drive_interior(void *u, const sbc_fire_mix *mix, int again, double out[2])
 {
-    const sbc_snapshot s = measures(m);
-    return sbc_controller_needs(h->ctl, &s);
+    const sbc_host *h = u;
+    double m[4];
+    (void)again; /* a handle's host never revisits a step */
+    if (mix)
+        m[0] = mix->keep, m[1] = mix->push, m[2] = mix->spin, m[3] = mix->stop;
+    h->cb.interior(h->cb.user_data, mix ? m : NULL, out);
 }
 
-int sbc_host_step(sbc_host *h, const double *m, const double *x, const double *theta, const double *force,
-                  const double *torque)
+static void drive_contacts(void *u, double out[4])
 {
-    sbc_snapshot s = measures(m);
-    sbc_event ev;
-    s.x = x;
-    s.theta = theta;
-    s.force = force;
-    s.torque = torque;
-    if (write_pending(h))
-        return SBC_EVENT_FAILED;
-    ev = sbc_controller_step(h->ctl, &s, &h->err);
-    if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED)
-        h->pending = 1;
-    return (int)ev;
+    const sbc_host *h = u;
+    h->cb.contacts(h->cb.user_data, out);
 }
 
-int sbc_host_confined(sbc_host *h, const double *frame_x, int n, const long *ids, const double *xy,
-                      const double *vxy)
+static double drive_net_force(void *u, const double *contacts)
 {
-    const int increment = h->pending ? sbc_controller_result(h->ctl)->increment : sbc_controller_increment(h->ctl);
+    const sbc_host *h = u;
+    return h->cb.net_force(h->cb.user_data, contacts);
+}
+
+static void drive_frame(void *u, double *buf)
+{
+    const sbc_host *h = u;
+    h->cb.frame(h->cb.user_data, buf);
+}
+
+static int drive_confined(void *u, const double *fx, int increment, char *message, size_t cap)
+{
+    sbc_host *h = u;
+    const int n = h->n - h->frame.n;
+    sbc_error err;
     int k;
+    h->cb.interior_state(h->cb.user_data, h->ids, h->ix, h->iv);
     for (k = 0; k < n; ++k)
-        if (sbc_confine_check(&h->frame, frame_x, increment, ids[k], &xy[2 * k], &vxy[2 * k], &h->err) != SBC_OK) {
-            h->pending = 0; /* the increment's results are not kept */
+        if (sbc_confine_check(&h->frame, fx, increment, h->ids[k], &h->ix[3 * k], &h->iv[3 * k], &err) != SBC_OK) {
+            snprintf(message, cap, "%s", err.message);
+            return err.status;
+        }
+    return SBC_OK;
+}
+
+static int drive_row(void *u, const sbc_result *row, const char *line, char *message, size_t cap)
+{
+    sbc_host *h = u;
+    double values[SBC_HOST_ROW];
+    sbc_error err;
+    if (h->csv.fp && sbc_csv_write(&h->csv, row, &err) != SBC_OK) {
+        snprintf(message, cap, "%s", err.message);
+        return err.status;
+    }
+    if (h->cb.row) {
+        sbc_column_values(row, values);
+        h->cb.row(h->cb.user_data, values, line);
+    }
+    return SBC_OK;
+}
+
+int sbc_host_drive(sbc_host *h, const sbc_host_callbacks *cb)
+{
+    sbc_driver_callbacks d = {0};
+    const size_t interior = (size_t)(h->n - h->frame.n);
+    if (!cb || !cb->interior || !cb->contacts || !cb->frame ||
+        (h->settings.damping == SBC_DAMPING_FIRE && !cb->fire_sums)) {
+        sbc_fail(&h->err, SBC_ERR_INPUT, "servo_bc: sbc_host_drive needs the callbacks interior, contacts, frame "
+                 "(and fire_sums for damping fire)");
+        return 1;
+    }
+    sbc_driver_free(h->driver);
+    h->cb = *cb;
+    d.user_data = h;
+    d.fire_sums = cb->fire_sums ? drive_fire_sums : NULL;
+    d.interior = drive_interior;
+    d.contacts = drive_contacts;
+    d.net_force = cb->net_force ? drive_net_force : NULL;
+    d.frame = drive_frame;
+    d.row = drive_row;
+    if (cb->interior_state) {
+        free(h->ids);
+        free(h->ix);
+        free(h->iv);
+        h->ids = malloc(sizeof *h->ids * (interior > 0 ? interior : 1));
+        h->ix = malloc(sizeof *h->ix * 3 * (interior > 0 ? interior : 1));
+        h->iv = malloc(sizeof *h->iv * 3 * (interior > 0 ? interior : 1));
+        if (!h->ids || !h->ix || !h->iv) {
+            sbc_fail(&h->err, SBC_ERR_NOMEM, "servo_bc: out of memory for %zu interior particles", interior);
             return 1;
         }
-    return write_pending(h);
+        d.confined = drive_confined;
+    }
+    return !(h->driver = sbc_driver_create(h->ctl, &h->settings, &d, &h->err));
+}
+
+int sbc_host_step(sbc_host *h)
+{
+    if (!h->driver) {
+        sbc_fail(&h->err, SBC_ERR_INPUT, "servo_bc: sbc_host_step before sbc_host_drive gave the host's callbacks");
+        return SBC_EVENT_FAILED;
+    }
+    return (int)sbc_driver_step(h->driver, 0, &h->err);
 }
 
 const char *sbc_host_message(const sbc_host *h) { return h->err.message; }
-
-const char *sbc_host_result_line(sbc_host *h)
-{
-    sbc_result_line(sbc_controller_result(h->ctl), h->settings.bc, sbc_settings_total_increments(&h->settings), h->line,
-                    sizeof h->line);
-    return h->line;
-}
 
 void sbc_host_progress(const sbc_host *h, double *out)
 {

@@ -309,14 +309,7 @@ static void engine_contacts(void *user_data, double out[4])
 static void engine_frame(void *user_data, double *buf)
 {
     const run_state *r = user_data;
-    const sbc_snapshot *s = &r->snap;
-    const size_t Q = (size_t)r->frame.n;
-    memcpy(buf, s->x, sizeof(double) * 3 * Q);
-    memcpy(buf + 3 * Q, s->force, sizeof(double) * 3 * Q);
-    memcpy(buf + 6 * Q, s->torque, sizeof(double) * Q);
-    memcpy(buf + 7 * Q, s->theta, sizeof(double) * Q);
-    buf[8 * Q] = s->rotation_sum;
-    buf[8 * Q + 1] = (double)s->particle_count;
+    sbc_driver_frame_from_snapshot(&r->snap, r->frame.n, buf);
 }
 
 static int engine_confined(void *user_data, const double *fx, int increment, char *message, size_t cap)
