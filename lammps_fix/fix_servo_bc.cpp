@@ -7,6 +7,7 @@
 
 #include "fix_servo_bc.h"
 #include "fix_servo_bc_bonds.h"
+#include "sbc/damping.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -367,8 +368,7 @@ void FixServoBC::initial_integrate(int)
     x[i][0] = cmd.x[3 * q];
     x[i][1] = cmd.x[3 * q + 1];
     if (cmd.free_rotation[q]) {    // (T): free rotation with the damping of eq. 10
-      double m = torque[i][2], w = omega[i][2];
-      if (settings.damping) m -= settings.beta * std::fabs(m) * ((w > 0.0) - (w < 0.0));
+      const double w = omega[i][2], m = settings.damping ? sbc_damp_local(torque[i][2], w, settings.beta) : torque[i][2];
       omega[i][2] = w + dt * m / (servo_bc_host::inertia * atom->rmass[i] * atom->radius[i] * atom->radius[i]);
       per_atom[i][1] += dt * omega[i][2];
     } else {
@@ -436,12 +436,7 @@ void FixServoBC::fire_pass(double *local)
   for (int k = 0; k < SBC_FIRE_SUMS; k++) local[k] = 0.0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & interior_bit)) continue;
-    const double *f = atom->f[i], *v = atom->v[i], m = atom->torque[i][2], w = atom->omega[i][2];
-    local[SBC_FIRE_POWER] += f[0] * v[0] + f[1] * v[1] + m * w;
-    local[SBC_FIRE_VV] += v[0] * v[0] + v[1] * v[1];
-    local[SBC_FIRE_FF] += f[0] * f[0] + f[1] * f[1];
-    local[SBC_FIRE_WW] += w * w;
-    local[SBC_FIRE_MM] += m * m;
+    sbc_fire_add(local, 2, atom->f[i], atom->v[i], &atom->torque[i][2], &atom->omega[i][2]);
   }
 }
 
@@ -469,17 +464,17 @@ void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2
     double *fi = &f[3 * i], *ti = &torque[3 * i];
     const double m = rmass[i], I = inertia * m * radius[i] * radius[i], inv = dt / (m * I);
     if (mix) {
-      const double push = mix->push - mix->stop * 0.5 * dt / m, spin = mix->spin - mix->stop * 0.5 * dt / I;
-      v[3 * i] = mix->keep * v[3 * i] + push * fi[0];
-      v[3 * i + 1] = mix->keep * v[3 * i + 1] + push * fi[1];
-      omega[3 * i + 2] = mix->keep * omega[3 * i + 2] + spin * ti[2];
+      const double push = sbc_fire_factor(mix->push, mix, dt / m), spin = sbc_fire_factor(mix->spin, mix, dt / I);
+      v[3 * i] = sbc_fire_velocity(mix, push, v[3 * i], fi[0]);
+      v[3 * i + 1] = sbc_fire_velocity(mix, push, v[3 * i + 1], fi[1]);
+      omega[3 * i + 2] = sbc_fire_velocity(mix, spin, omega[3 * i + 2], ti[2]);
     }
     const double vx0 = v[3 * i], vy0 = v[3 * i + 1], w0 = omega[3 * i + 2];
     net = std::max(net, fi[0] * fi[0] + fi[1] * fi[1]);
     // eq. 10, with the half-step velocities (no damping at v = 0)
-    fi[0] -= vx0 != 0.0 ? std::copysign(alpha * std::fabs(fi[0]), vx0) : 0.0;
-    fi[1] -= vy0 != 0.0 ? std::copysign(alpha * std::fabs(fi[1]), vy0) : 0.0;
-    ti[2] -= w0 != 0.0 ? std::copysign(beta * std::fabs(ti[2]), w0) : 0.0;
+    fi[0] = sbc_damp_local(fi[0], vx0, alpha);
+    fi[1] = sbc_damp_local(fi[1], vy0, alpha);
+    ti[2] = sbc_damp_local(ti[2], w0, beta);
     // Ek and the rotation with the velocities after this step's kick
     // (v^(n+1/2) = v^(n-1/2) + dt f/m), as the embedded engine measures them;
     // one division: 1/m = I/(m I), 1/I = m/(m I)

@@ -4,6 +4,7 @@
 
 #include "sbc/controller.h"
 #include "sbc/embedded/engine.h"
+#include "sbc/damping.h"
 #include "sbc/fire_damping.h"
 #include "sbc/frame.h"
 #include "sbc/packing.h"
@@ -275,9 +276,32 @@ static long fire_springs(int fire, double fraction)
     return n;
 }
 
+/* damping.h's kernels by hand: eq. 10 against the sign of v, FIRE's sums in
+ * 2D (z rotation) and 3D, the stop's half kick */
+static void damping_kernels(void)
+{
+    const double f2[2] = {3.0, -4.0}, v2[2] = {1.0, 2.0}, t2 = 0.5, w2 = -2.0;
+    const double f3[3] = {1.0, 2.0, 2.0}, v3[3] = {-1.0, 0.0, 3.0}, t3[3] = {1.0, 0.0, -1.0}, w3[3] = {2.0, 5.0, 1.0};
+    const sbc_fire_mix stop = {0.5, 0.25, 0.125, 1.0}, go = {0.5, 0.25, 0.125, 0.0};
+    double s[SBC_FIRE_SUMS] = {1.0, 1.0, 1.0, 1.0, 1.0};
+    CHECK(sbc_damp_local(2.0, 1.0, 0.5) == 1.0 && sbc_damp_local(2.0, -3.0, 0.5) == 3.0 &&
+          sbc_damp_local(-2.0, 1.0, 0.5) == -3.0 && sbc_damp_local(2.0, 0.0, 0.5) == 2.0);
+    sbc_fire_add(s, 2, f2, v2, &t2, &w2); /* P = 3 - 8 - 1, |v|^2 5, |F|^2 25, w^2 4, t^2 0.25 */
+    CHECK(s[SBC_FIRE_POWER] == -5.0 && s[SBC_FIRE_VV] == 6.0 && s[SBC_FIRE_FF] == 26.0 && s[SBC_FIRE_WW] == 5.0 &&
+          s[SBC_FIRE_MM] == 1.25);
+    sbc_fire_add(s, 3, f3, v3, t3, w3); /* P = -1 + 6 + 2 - 1, |v|^2 10, |F|^2 9, |w|^2 30, |t|^2 2 */
+    CHECK(s[SBC_FIRE_POWER] == 1.0 && s[SBC_FIRE_VV] == 16.0 && s[SBC_FIRE_FF] == 35.0 && s[SBC_FIRE_WW] == 35.0 &&
+          s[SBC_FIRE_MM] == 3.25);
+    /* kick dt / M = 0.5: the stop takes half of it off the push */
+    CHECK(sbc_fire_factor(go.push, &go, 0.5) == 0.25 && sbc_fire_factor(stop.push, &stop, 0.5) == 0.0 &&
+          sbc_fire_factor(stop.spin, &stop, 0.5) == -0.125);
+    CHECK(sbc_fire_velocity(&go, 0.25, 2.0, 4.0) == 2.0 && SBC_ROTATIONS(2) == 1 && SBC_ROTATIONS(3) == 3);
+}
+
 void test_relax(void)
 {
     long fire_n, local_n;
+    damping_kernels();
     fire_steps();
     fire_n = fire_springs(1, 0.1);
     local_n = fire_springs(0, 0.1);

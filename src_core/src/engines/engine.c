@@ -1,6 +1,6 @@
 /* Embedded 2D disc engine (paper Sect. 2.2). */
 #include "sbc/embedded/engine.h"
-#include "sbc/fire_damping.h"
+#include "sbc/damping.h"
 #include "sbc/seal.h"
 
 #include "neighbor.h"
@@ -351,17 +351,9 @@ void sbc_engine_fire_sums(const sbc_engine *e, double *sums)
     int k;
     for (k = 0; k < SBC_FIRE_SUMS; ++k)
         sums[k] = 0.0;
-    for (k = 0; k < e->n; ++k) {
-        const double fx = e->f[2 * k], fy = e->f[2 * k + 1], m = e->tq[k];
-        const double vx = e->v[2 * k], vy = e->v[2 * k + 1], w = e->omega[k];
-        if (e->kinematic[k])
-            continue;
-        sums[SBC_FIRE_POWER] += fx * vx + fy * vy + m * w;
-        sums[SBC_FIRE_VV] += vx * vx + vy * vy;
-        sums[SBC_FIRE_FF] += fx * fx + fy * fy;
-        sums[SBC_FIRE_WW] += w * w;
-        sums[SBC_FIRE_MM] += m * m;
-    }
+    for (k = 0; k < e->n; ++k)
+        if (!e->kinematic[k])
+            sbc_fire_add(sums, 2, &e->f[2 * k], &e->v[2 * k], &e->tq[k], &e->omega[k]);
 }
 
 /* Explicit first-order update of eq. 9 with the local damping of eq. 10:
@@ -392,14 +384,15 @@ static inline void integrate_interior(sbc_engine *e, const int damped, const sbc
         w = om[k];
         net = fmax(net, fx * fx + fy * fy); /* relax.h: the largest net force, squared */
         if (damped == 2) {
-            const double push = mix.push - mix.stop * 0.5 * dt * inv_m[k], spin = mix.spin - mix.stop * 0.5 * dt * inv_I[k];
-            vx = mix.keep * vx + push * fx;
-            vy = mix.keep * vy + push * fy;
-            w = mix.keep * w + spin * m;
+            const double push = sbc_fire_factor(mix.push, &mix, dt * inv_m[k]);
+            const double spin = sbc_fire_factor(mix.spin, &mix, dt * inv_I[k]);
+            vx = sbc_fire_velocity(&mix, push, vx, fx);
+            vy = sbc_fire_velocity(&mix, push, vy, fy);
+            w = sbc_fire_velocity(&mix, spin, w, m);
         } else if (damped) {
-            fx -= a * fabs(fx) * ((vx > 0.0) - (vx < 0.0));
-            fy -= a * fabs(fy) * ((vy > 0.0) - (vy < 0.0));
-            m -= b * fabs(m) * ((w > 0.0) - (w < 0.0));
+            fx = sbc_damp_local(fx, vx, a);
+            fy = sbc_damp_local(fy, vy, a);
+            m = sbc_damp_local(m, w, b);
         }
         vx = flush(vx + dt * fx * inv_m[k]);
         vy = flush(vy + dt * fy * inv_m[k]);
@@ -533,8 +526,7 @@ void sbc_engine_move_frame(sbc_engine *e, const sbc_commands *cmd)
             x[2 * p + 1] = cmd->x[3 * q + 1];
             if (cmd->free_rotation[q]) {
                 /* free rotation (T): integrated with the rotational damping of eq. 10 */
-                double m = e->tq[p];
-                m -= e->beta * fabs(m) * ((om[p] > 0.0) - (om[p] < 0.0));
+                const double m = sbc_damp_local(e->tq[p], om[p], e->beta);
                 om[p] = flush(om[p] + dt * m * e->inv_I[p]);
                 th[p] += dt * om[p];
             } else {
