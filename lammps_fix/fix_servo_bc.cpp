@@ -481,7 +481,10 @@ void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2
     const double vx = vx0 + fi[0] * I * inv, vy = vy0 + fi[1] * I * inv, w = w0 + ti[2] * m * inv;
     per_atom[i][1] += turn * w;
     // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
-    if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) ek += 0.5 * m * (vx * vx + vy * vy) + 0.5 * I * w * w;
+    if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) {
+      const double vk[2] = {vx, vy};
+      ek += sbc_kinetic_energy(2, m, I, vk, &w);
+    }
   }
   out[0] = ek;
   out[1] = std::sqrt(net);

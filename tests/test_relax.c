@@ -277,7 +277,7 @@ static long fire_springs(int fire, double fraction)
 }
 
 /* damping.h's kernels by hand: eq. 10 against the sign of v, FIRE's sums in
- * 2D (z rotation) and 3D, the stop's half kick */
+ * 2D (z rotation) and 3D, the stop's half kick, Ek in 2D and 3D */
 static void damping_kernels(void)
 {
     const double f2[2] = {3.0, -4.0}, v2[2] = {1.0, 2.0}, t2 = 0.5, w2 = -2.0;
@@ -296,6 +296,11 @@ static void damping_kernels(void)
     CHECK(sbc_fire_factor(go.push, &go, 0.5) == 0.25 && sbc_fire_factor(stop.push, &stop, 0.5) == 0.0 &&
           sbc_fire_factor(stop.spin, &stop, 0.5) == -0.125);
     CHECK(sbc_fire_velocity(&go, 0.25, 2.0, 4.0) == 2.0 && SBC_ROTATIONS(2) == 1 && SBC_ROTATIONS(3) == 3);
+    /* Ek = m |v|^2 / 2 + I |w|^2 / 2: m 2 kg, I 4 kg m^2 */
+    {
+        const double v[3] = {1.0, 2.0, 2.0}, w2 = 3.0, w[3] = {1.0, 0.0, 1.0};
+        CHECK(sbc_kinetic_energy(2, 2.0, 4.0, v, &w2) == 23.0 && sbc_kinetic_energy(3, 2.0, 4.0, v, w) == 13.0);
+    }
 }
 
 void test_relax(void)

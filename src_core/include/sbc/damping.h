@@ -1,6 +1,6 @@
-/* servo_bc: the per-particle kernels of the relaxation's damping, inline, the
- * same arithmetic in every host that applies them: eq. 10 (local damping) and
- * FIRE's sums and mix (fire_damping.h). Vectors have dim components; a
+/* servo_bc: the per-particle kernels of the relaxation, inline, the same
+ * arithmetic in every host that applies them: eq. 10 (local damping), FIRE's
+ * sums and mix (fire_damping.h), a particle's kinetic energy (eq. 12). Vectors have dim components; a
  * particle's rotation has SBC_ROTATIONS(dim) (the z component in 2D). */
 #ifndef SBC_DAMPING_H
 #define SBC_DAMPING_H
@@ -60,6 +60,20 @@ static inline double sbc_fire_factor(double push, const sbc_fire_mix *mix, doubl
 static inline double sbc_fire_velocity(const sbc_fire_mix *mix, double factor, double v, double f)
 {
     return mix->keep * v + factor * f;
+}
+
+/* eq. 12: the kinetic energy (J) of a particle of mass m (kg) and moment of
+ * inertia I (kg m^2) with velocity v [dim] and angular velocity w
+ * [SBC_ROTATIONS(dim)] */
+static inline double sbc_kinetic_energy(int dim, double m, double I, const double *v, const double *w)
+{
+    double vv = 0.0, ww = 0.0;
+    int k;
+    for (k = 0; k < dim; ++k)
+        vv += v[k] * v[k];
+    for (k = 0; k < SBC_ROTATIONS(dim); ++k)
+        ww += w[k] * w[k];
+    return 0.5 * m * vv + 0.5 * I * ww;
 }
 
 #ifdef __cplusplus

@@ -406,8 +406,10 @@ static inline void integrate_interior(sbc_engine *e, const int damped, const sbc
         /* Ek of eq. 12 over the particles that carry force: a disc without contacts
          * (a rattler) keeps its speed and spin, since the damping of eq. 10 acts
          * through the force, and would hold Ek up for good */
-        if (fx != 0.0 || fy != 0.0 || m != 0.0)
-            ek += mass[k] * (0.5 * (vx * vx + vy * vy) + 0.25 * r[k] * r[k] * w * w);
+        if (fx != 0.0 || fy != 0.0 || m != 0.0) {
+            const double vk[2] = {vx, vy};
+            ek += sbc_kinetic_energy(2, mass[k], 0.5 * mass[k] * r[k] * r[k], vk, &w); /* I = M R^2 / 2 (eq. 9) */
+        }
         rot += fabs(th[k]);
         ddx = x[2 * k] - xb[2 * k];
         ddy = x[2 * k + 1] - xb[2 * k + 1];
