@@ -21,20 +21,21 @@ extern "C" {
 /* Steps between two checks during a relaxation. */
 #define SBC_CONFINE_EVERY 10000
 
-/* 1 when p [2] (m) lies inside the polygon of the frame's centres fx [3Q]
- * (m, frame order) by the even-odd rule, else 0. O(Q). */
-int sbc_confine_inside(const sbc_frame *f, const double *fx, const double p[2]);
+/* 1 when p [dim] (m) lies inside the closed surface through the frame's
+ * centres fx [3Q] (m, frame order; in 2D their polygon, by the even-odd
+ * rule), else 0. O(Q). */
+int sbc_confine_inside(const sbc_frame *f, const double *fx, const double *p);
 
-/* One interior particle, numbered id by the host (for the message), at x [2]
- * (m) with velocity v [2] (m/s), against the frame f whose centres are now
+/* One interior particle, numbered id by the host (for the message), at x
+ * [dim] (m) with velocity v [dim] (m/s), against the frame f whose centres are now
  * fx [3Q] (m, frame order). increment: the increment under way, whose
  * results are not kept when the check fails. Returns SBC_OK, or fails with
  *   SBC_ERR_NUMERIC   a non-finite position, or a moving particle more than
  *                     the frame's width beyond it (the packing blew up);
  *   SBC_ERR_GEOMETRY  a particle that slipped out through a gap.
  * O(Q). */
-sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment, long id, const double x[2],
-                             const double v[2], sbc_error *err);
+sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment, long id, const double *x,
+                             const double *v, sbc_error *err);
 
 #ifdef __cplusplus
 }

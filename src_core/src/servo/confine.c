@@ -1,48 +1,53 @@
 /* servo_bc: is the packing still held by its frame? (confine.h) */
 #include "sbc/confine.h"
+#include "geometry.h"
 
 #include <math.h>
+#include <stdio.h>
 
-int sbc_confine_inside(const sbc_frame *f, const double *fx, const double p[2])
+int sbc_confine_inside(const sbc_frame *f, const double *fx, const double *p)
 {
-    int q, in = 0;
-    for (q = 0; q < f->n; ++q) {
-        const double *a = &fx[3 * q], *b = &fx[3 * ((q + 1) % f->n)];
-        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
-            in = !in;
-    }
-    return in;
+    return sbc_frame_geometry_of(f->dim)->inside(f, fx, p);
 }
 
-sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment, long id, const double x[2],
-                             const double v[2], sbc_error *err)
+sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment, long id, const double *x,
+                             const double *v, sbc_error *err)
 {
-    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, size, far = 0.0;
-    int q, c;
-    if (!isfinite(x[0]) || !isfinite(x[1]))
+    const int dim = f->dim;
+    double lo[SBC_DIM_MAX], hi[SBC_DIM_MAX], size = 0.0, far = 0.0;
+    char centre[3 * 32];
+    int q, c, moving = 0, finite = 1;
+    for (c = 0; c < dim; ++c)
+        finite &= isfinite(x[c]) != 0;
+    if (!finite)
         return sbc_fail(err, SBC_ERR_NUMERIC,
                         "servo_bc: increment %d: particle %ld has a non-finite position (the packing blew up; lower "
                         "the time step or take smaller increments); the results before increment %d stand",
                         increment, id, increment);
     if (sbc_confine_inside(f, fx, x))
         return SBC_OK;
-    for (q = 0; q < f->n; ++q)
-        for (c = 0; c < 2; ++c) {
+    for (c = 0; c < dim; ++c) {
+        lo[c] = HUGE_VAL, hi[c] = -HUGE_VAL;
+        for (q = 0; q < f->n; ++q) {
             lo[c] = fmin(lo[c], fx[3 * q + c]);
             hi[c] = fmax(hi[c], fx[3 * q + c]);
         }
-    size = fmax(hi[0] - lo[0], hi[1] - lo[1]);
-    for (c = 0; c < 2; ++c)
+        size = fmax(size, hi[c] - lo[c]);
         far = fmax(far, fmax(lo[c] - x[c], x[c] - hi[c]));
-    if (far > size && hypot(v[0], v[1]) > 0.0) /* a frame's width away and moving: thrown */
+        moving |= v[c] != 0.0;
+    }
+    if (far > size && moving) /* a frame's width away and moving: thrown */
         return sbc_fail(err, SBC_ERR_NUMERIC,
                         "servo_bc: increment %d: interior particle %ld was thrown %g m beyond the frame of width %g m "
                         "(the packing blew up; lower the time step: with several contacts per particle the stable "
                         "step is below the critical step of a contact pair); the results before increment %d stand",
                         increment, id, far, size, increment);
+    if (dim == 3)
+        snprintf(centre, sizeof centre, "(%g, %g, %g)", x[0], x[1], x[2]);
+    else
+        snprintf(centre, sizeof centre, "(%g, %g)", x[0], x[1]);
     return sbc_fail(err, SBC_ERR_GEOMETRY,
                     "servo_bc: increment %d: interior particle %ld escaped through a gap between frame particles (its "
-                    "centre (%g, %g) m is outside the polygon of the frame's centres); the results before increment "
-                    "%d stand",
-                    increment, id, x[0], x[1], increment);
+                    "centre %s m is outside the %s of the frame's centres); the results before increment %d stand",
+                    increment, id, centre, sbc_frame_geometry_of(dim)->surface, increment);
 }

@@ -1,7 +1,9 @@
 /* The 2D frame's geometry: detection of the frame of a disc packing (its
- * four corners, edges in anticlockwise order, periodic partners), the area
- * vectors of eq. 2 and the reference area. Host centres are [2n] here. */
+ * four corners, edges in anticlockwise order, periodic partners), and the
+ * 2D row of geometry.h: the area vectors of eq. 2, the reference area, the
+ * point-in-polygon test. Host centres are [2n] here. */
 #include "frame_private.h"
+#include "geometry.h"
 
 #include <float.h>
 #include <math.h>
@@ -23,7 +25,7 @@ static int compare_items(const void *a, const void *b)
  *   A_q = R_q/(R_q+R_{q-1}) (X_q - X_{q-1}) x e3 + R_q/(R_q+R_{q+1}) (X_{q+1} - X_q) x e3,
  * with (a1, a2, 0) x e3 = (a2, -a1, 0). V is the area of the quadrilateral of
  * the four corner centres (shoelace formula). */
-void sbc_frame_update_geometry(sbc_frame *f)
+static void area_vectors(sbc_frame *f)
 {
     int q, n = f->n;
     for (q = 0; q < n; ++q) {
@@ -42,6 +44,20 @@ void sbc_frame_update_geometry(sbc_frame *f)
         f->V += 0.5 * (a[0] * b[1] - b[0] * a[1]);
     }
 }
+
+/* a point inside the polygon of the centres fx: crossings of a ray along +x */
+static int inside_polygon(const sbc_frame *f, const double *fx, const double *p)
+{
+    int q, in = 0;
+    for (q = 0; q < f->n; ++q) {
+        const double *a = &fx[3 * q], *b = &fx[3 * ((q + 1) % f->n)];
+        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+            in = !in;
+    }
+    return in;
+}
+
+const sbc_frame_geometry sbc_frame_geometry_2d = {2, "polygon", area_vectors, inside_polygon};
 
 /* Pairs the edge positions [first, first+count) with [other, other+count),
  * which run in the opposite direction (bottom x ascending against top x
@@ -85,7 +101,7 @@ static sbc_status assemble(sbc_frame *f, const int corner_particle[4], edge_item
         pair_edges(f, f->corner[0] + 1, f->corner[2] + 1, count[0]);
     if (count[1] == count[3])
         pair_edges(f, f->corner[1] + 1, f->corner[3] + 1, count[1]);
-    sbc_frame_update_geometry(f);
+    area_vectors(f);
     if (!(f->V > 0.0)) {
         sbc_frame_free(f);
         return sbc_fail(err, SBC_ERR_FRAME, "frame: the corner centres enclose no area");
