@@ -27,20 +27,30 @@ typedef enum sbc_side {
 
 enum { SBC_CORNER_BL = 0, SBC_CORNER_BR, SBC_CORNER_TR, SBC_CORNER_TL };
 
+/* 3D: the faces of the box a frame particle lies on, the bits of its side
+ * (one bit: a face particle, two: an edge, three: a corner). */
+enum { SBC_FACE_XLO = 1, SBC_FACE_XHI = 2, SBC_FACE_YLO = 4, SBC_FACE_YHI = 8, SBC_FACE_ZLO = 16, SBC_FACE_ZHI = 32 };
+
 /* Vectors are stored in SBC_DIM_MAX slots (tensor.h): X_q is X[3q .. 3q+2],
  * its third slot 0 in 2D. The detection functions below are those of the 2D
- * frame (frame_2d.c): their host centres x are [2n]. */
+ * frame (frame_2d.c, host centres x [2n]) but sbc_frame_detect_3d
+ * (frame_3d.c, x [3n]). */
 typedef struct sbc_frame {
-    int dim;        /* 2 or 3 (the detection below builds 2D frames) */
+    int dim;        /* 2 or 3 */
     int n;          /* Q, number of frame particles */
     int *particle;  /* [Q] index of the particle in the host's packing */
-    int *side;      /* [Q] sbc_side of each frame position */
-    int *partner;   /* [Q] frame position of the periodic partner (+/-), -1 for corners */
-    int corner[4];  /* frame positions of the corners BL, BR, TR, TL */
+    int *side;      /* [Q] sbc_side of each frame position (3D: its SBC_FACE_ bits) */
+    int *partner;   /* [Q] frame position of the periodic partner (+/-), -1 for corners (3D: for
+                       face particles, the one on the opposite face; -1 on edges and corners) */
+    int corner[8];  /* frame positions of the corners BL, BR, TR, TL (3D: corner c at the low
+                       or high x, y, z as bits 1, 2, 4 of c say) */
     double *X;      /* [3Q] reference centre positions X_q, m */
     double *R;      /* [Q] radii R_q, m */
     double *A;      /* [3Q] area vectors A_q of eq. 2, m (a length in 2D) */
-    double V;       /* reference volume from the corner centres, m^2 */
+    double V;       /* reference volume from the corner centres, m^2 (3D: enclosed by the
+                       surface through the centres, m^3) */
+    int ncell;      /* 3D: the surface through the centres, ncell quadrilaterals of frame */
+    int *cell;      /* positions [4 ncell], anticlockwise seen from outside; 0 and NULL in 2D */
 } sbc_frame;
 
 /* Detects the frame from the particles' centres: particles whose centre lies
@@ -69,6 +79,19 @@ sbc_status sbc_frame_detect_packing(sbc_frame *frame, const sbc_packing *p, sbc_
  * band is assigned to its nearest edge. */
 sbc_status sbc_frame_from_list(sbc_frame *frame, int count, const int *list,
                                const double *x, const double *r, sbc_error *err);
+
+/* The frame of a sphere packing in a cuboid (3D, frame_3d.c; x [3n], r
+ * [n]): particles whose centre lies within band (m; <= 0: half the smallest
+ * radius) of a face of the bounding box of the centres; one particle at each
+ * of the eight corners. Each face's centres must form a grid (as on a
+ * lattice): its quadrilaterals are the surface, each giving a quarter of its
+ * area vector to each of its four corners (eq. 2 in 3D), so that
+ * sum_q X_q (x) A_q = V I. Face particles are paired with the particle at
+ * the same grid place on the opposite face. Frame order: the corners, the
+ * edge particles, the face particles. Fails with SBC_ERR_FRAME naming the
+ * corner or face at fault. */
+sbc_status sbc_frame_detect_3d(sbc_frame *frame, int n, const double *x, const double *r, double band,
+                               sbc_error *err);
 
 /* Recomputes A_q (eq. 2) and V from frame->X and frame->R. */
 void sbc_frame_update_geometry(sbc_frame *frame);

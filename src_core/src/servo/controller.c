@@ -139,6 +139,11 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc: contact stiffness kn = %g N/m is not >= 0", kn);
         return NULL;
     }
+    if (frame->dim != 2 || settings->dim != 2) {
+        sbc_fail(err, SBC_ERR_INPUT, "servo_bc: a frame of dimension %d under words of dimension %d: this version "
+                 "imposes (D), (P), (T) and mixed conditions on 2D frames only", frame->dim, settings->dim);
+        return NULL;
+    }
     c = calloc(1, sizeof *c);
     if (!c) {
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");

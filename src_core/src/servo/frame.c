@@ -1,5 +1,5 @@
 /* The frame of boundary particles, whatever its dimension: storage, restart
- * layout, gathering centres. Its geometry: frame_2d.c. */
+ * layout, gathering centres. Its geometry: frame_2d.c, frame_3d.c. */
 #include "frame_private.h"
 
 #include "sbc/saved.h"
@@ -38,6 +38,7 @@ void sbc_frame_free(sbc_frame *f)
     free(f->X);
     free(f->R);
     free(f->A);
+    free(f->cell);
     memset(f, 0, sizeof *f);
 }
 
@@ -55,6 +56,14 @@ sbc_status sbc_frame_copy(sbc_frame *dst, const sbc_frame *src, sbc_error *err)
     memcpy(dst->A, src->A, sizeof(double) * SBC_DIM_MAX * q);
     memcpy(dst->corner, src->corner, sizeof dst->corner);
     dst->V = src->V;
+    if (src->ncell > 0) {
+        if (!(dst->cell = malloc(sizeof(int) * 4 * (size_t)src->ncell))) {
+            sbc_frame_free(dst);
+            return sbc_fail(err, SBC_ERR_NOMEM, "frame: out of memory for %d surface cells", src->ncell);
+        }
+        memcpy(dst->cell, src->cell, sizeof(int) * 4 * (size_t)src->ncell);
+        dst->ncell = src->ncell;
+    }
     return SBC_OK;
 }
 

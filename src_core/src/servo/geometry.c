@@ -3,7 +3,7 @@
 
 #include <stddef.h>
 
-static const sbc_frame_geometry *const rows[] = {&sbc_frame_geometry_2d};
+static const sbc_frame_geometry *const rows[] = {&sbc_frame_geometry_2d, &sbc_frame_geometry_3d};
 
 const sbc_frame_geometry *sbc_frame_geometry_of(int dim)
 {

@@ -1,8 +1,8 @@
 /* Private: the frame's geometry that differs in kind between dimensions, one
  * row per dimension (as GSL's step types): the closed surface through the
  * frame's centres, its area vectors (eq. 2) and the test of a point against
- * it (confine.h). frame_2d.c holds the 2D row (a polygon); a 3D row (a
- * polyhedron) joins it in geometry.c's table. */
+ * it (confine.h). frame_2d.c holds the 2D row (a polygon), frame_3d.c the
+ * 3D row (a polyhedron of quadrilaterals). */
 #ifndef SBC_GEOMETRY_H
 #define SBC_GEOMETRY_H
 
@@ -17,7 +17,7 @@ typedef struct sbc_frame_geometry {
     int (*inside)(const sbc_frame *f, const double *fx, const double *p);
 } sbc_frame_geometry;
 
-extern const sbc_frame_geometry sbc_frame_geometry_2d;
+extern const sbc_frame_geometry sbc_frame_geometry_2d, sbc_frame_geometry_3d;
 
 /* The row of dimension dim; NULL for a dimension with none. */
 const sbc_frame_geometry *sbc_frame_geometry_of(int dim);

@@ -1,0 +1,360 @@
+/* The 3D frame's geometry: the frame of a sphere packing in a cuboid
+ * (sbc_frame_detect_3d), the surface through its centres as the
+ * quadrilaterals of the faces' grids, and the 3D row of geometry.h: the
+ * area vectors of eq. 2 in 3D, the enclosed volume, the point-in-polyhedron
+ * test. Host centres are [3n] here. */
+#include "frame_private.h"
+#include "geometry.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const face_name[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+
+static void cross(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* eq. 2 in 3D: a surface quadrilateral (a, b, c, d) has the vector area
+ * S = (X_c - X_a) x (X_d - X_b) / 2 (its area times its normal when planar,
+ * the vector area of the bilinear patch through its corners otherwise), and
+ * gives S / 4 to each corner; on a lattice face d^2 to a face particle, d^2/2
+ * to an edge particle, d^2/4 to a corner, from each face it lies on. V =
+ * sum_q X_q . A_q / 3 (divergence theorem: sum_q X_q (x) A_q = V I, exact
+ * for planar faces). */
+static void area_vectors(sbc_frame *f)
+{
+    int c, q, k;
+    memset(f->A, 0, sizeof(double) * 3 * (size_t)f->n);
+    for (c = 0; c < f->ncell; ++c) {
+        const int *v = &f->cell[4 * c];
+        const double *a = &f->X[3 * v[0]], *b = &f->X[3 * v[1]], *cc = &f->X[3 * v[2]], *d = &f->X[3 * v[3]];
+        const double ac[3] = {cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]}, bd[3] = {d[0] - b[0], d[1] - b[1], d[2] - b[2]};
+        double S[3];
+        cross(ac, bd, S);
+        for (q = 0; q < 4; ++q)
+            for (k = 0; k < 3; ++k)
+                f->A[3 * v[q] + k] += 0.125 * S[k];
+    }
+    f->V = 0.0;
+    for (q = 0; q < f->n; ++q)
+        for (k = 0; k < 3; ++k)
+            f->V += f->X[3 * q + k] * f->A[3 * q + k];
+    f->V /= 3.0;
+}
+
+/* 1 when the ray p + t dir (t > 0) crosses the triangle (a, b, c)
+   (Moeller-Trumbore) */
+static int ray_crosses(const double *p, const double dir[3], const double *a, const double *b, const double *c)
+{
+    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double s[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+    double h[3], g[3], det, u, w, t;
+    cross(dir, e2, h);
+    det = e1[0] * h[0] + e1[1] * h[1] + e1[2] * h[2];
+    if (det == 0.0)
+        return 0;
+    u = (s[0] * h[0] + s[1] * h[1] + s[2] * h[2]) / det;
+    if (u < 0.0 || u > 1.0)
+        return 0;
+    cross(s, e1, g);
+    w = (dir[0] * g[0] + dir[1] * g[1] + dir[2] * g[2]) / det;
+    if (w < 0.0 || u + w > 1.0)
+        return 0;
+    t = (e2[0] * g[0] + e2[1] * g[1] + e2[2] * g[2]) / det;
+    return t > 0.0;
+}
+
+/* a point inside the surface through the centres fx: the parity of the
+ * crossings of a ray in a direction no lattice plane or edge holds with the
+ * two triangles (a, b, c), (a, c, d) of each quadrilateral */
+static int inside_polyhedron(const sbc_frame *f, const double *fx, const double *p)
+{
+    static const double dir[3] = {1.0, 0.5377358490566038, 0.3141592653589793};
+    int c, in = 0;
+    for (c = 0; c < f->ncell; ++c) {
+        const int *v = &f->cell[4 * c];
+        const double *a = &fx[3 * v[0]], *b = &fx[3 * v[1]], *cc = &fx[3 * v[2]], *d = &fx[3 * v[3]];
+        in ^= ray_crosses(p, dir, a, b, cc);
+        in ^= ray_crosses(p, dir, a, cc, d);
+    }
+    return in;
+}
+
+const sbc_frame_geometry sbc_frame_geometry_3d = {3, "polyhedron", area_vectors, inside_polyhedron};
+
+/* ---- detection ---- */
+
+typedef struct item {
+    int particle, side, rank; /* rank: 0 corner, 1 edge, 2 face */
+    const double *x;
+} item;
+
+static int bits(int m) { return (m & 1) + (m >> 1 & 1) + (m >> 2 & 1) + (m >> 3 & 1) + (m >> 4 & 1) + (m >> 5 & 1); }
+
+/* frame order: corners by their index, then edge and face particles by their
+   faces, then z, y, x */
+static int compare_items(const void *pa, const void *pb)
+{
+    const item *a = pa, *b = pb;
+    int k;
+    if (a->rank != b->rank)
+        return a->rank - b->rank;
+    if (a->side != b->side)
+        return a->side - b->side;
+    for (k = 2; k >= 0; --k)
+        if (a->x[k] != b->x[k])
+            return (a->x[k] > b->x[k]) - (a->x[k] < b->x[k]);
+    return a->particle - b->particle;
+}
+
+static int compare_doubles(const void *pa, const void *pb)
+{
+    const double a = *(const double *)pa, b = *(const double *)pb;
+    return (a > b) - (a < b);
+}
+
+/* The distinct values of v [m] within tol of each other: the sorted first
+   value of each cluster into starts; returns their count */
+static int clusters(double *v, int m, double tol, double *starts)
+{
+    int k, count = 0;
+    qsort(v, (size_t)m, sizeof *v, compare_doubles);
+    for (k = 0; k < m; ++k)
+        if (count == 0 || v[k] - starts[count - 1] > tol)
+            starts[count++] = v[k];
+    return count;
+}
+
+/* the cluster of value v among starts [count]: the last start <= v + tol */
+static int cluster_of(const double *starts, int count, double v, double tol)
+{
+    int lo = 0, hi = count - 1;
+    while (lo < hi) {
+        const int mid = (lo + hi + 1) / 2;
+        if (starts[mid] <= v + tol)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return lo;
+}
+
+/* one face's grid: the place (i, j) of each of its particles along its two
+   in-plane axes u, v (cyclic after the face's axis); grid [nu nv] frame
+   positions */
+typedef struct face_grid {
+    int nu, nv;
+    int *grid;
+    double *us, *vs; /* [nu], [nv] the places' coordinates, m */
+} face_grid;
+
+static void grid_free(face_grid *g)
+{
+    free(g->grid);
+    free(g->us);
+    free(g->vs);
+    memset(g, 0, sizeof *g);
+}
+
+static sbc_status face_build(const sbc_frame *f, int face, double tol, face_grid *g, sbc_error *err)
+{
+    const int a = face / 2, u = (a + 1) % 3, v = (a + 2) % 3;
+    int q, m = 0, k;
+    double *cu, *cv;
+    memset(g, 0, sizeof *g);
+    for (q = 0; q < f->n; ++q)
+        m += (f->side[q] >> face) & 1;
+    cu = malloc(sizeof(double) * (size_t)m);
+    cv = malloc(sizeof(double) * (size_t)m);
+    g->us = malloc(sizeof(double) * (size_t)m);
+    g->vs = malloc(sizeof(double) * (size_t)m);
+    if (!cu || !cv || !g->us || !g->vs) {
+        free(cu);
+        free(cv);
+        grid_free(g);
+        return sbc_fail(err, SBC_ERR_NOMEM, "frame: out of memory");
+    }
+    for (q = 0, k = 0; q < f->n; ++q)
+        if ((f->side[q] >> face) & 1) {
+            cu[k] = f->X[3 * q + u];
+            cv[k++] = f->X[3 * q + v];
+        }
+    g->nu = clusters(cu, m, tol, g->us);
+    g->nv = clusters(cv, m, tol, g->vs);
+    free(cu);
+    free(cv);
+    if ((long)g->nu * g->nv != m || g->nu < 2 || g->nv < 2 || !(g->grid = malloc(sizeof(int) * (size_t)m))) {
+        const int nu = g->nu, nv = g->nv;
+        grid_free(g);
+        if ((long)nu * nv != m || nu < 2 || nv < 2)
+            return sbc_fail(err, SBC_ERR_FRAME, "frame: the %d centres of face %s form no grid (%d x %d places along "
+                            "it); sbc_frame_detect_3d needs faces laid out as a lattice's", m, face_name[face], nu, nv);
+        return sbc_fail(err, SBC_ERR_NOMEM, "frame: out of memory");
+    }
+    for (k = 0; k < m; ++k)
+        g->grid[k] = -1;
+    for (q = 0; q < f->n; ++q)
+        if ((f->side[q] >> face) & 1) {
+            const int i = cluster_of(g->us, g->nu, f->X[3 * q + u], tol), j = cluster_of(g->vs, g->nv, f->X[3 * q + v], tol);
+            if (g->grid[i * g->nv + j] >= 0) {
+                const int other = f->particle[g->grid[i * g->nv + j]];
+                grid_free(g);
+                return sbc_fail(err, SBC_ERR_FRAME, "frame: particles %d and %d share a place of the grid of face %s",
+                                other, f->particle[q], face_name[face]);
+            }
+            g->grid[i * g->nv + j] = q;
+        }
+    return SBC_OK;
+}
+
+/* the face's quadrilaterals into cell (from *count on), anticlockwise seen
+   from outside: e_u x e_v = e_a points out of the high face */
+static void face_cells(const face_grid *g, int face, int *cell, int *count)
+{
+    int i, j;
+    for (i = 0; i + 1 < g->nu; ++i)
+        for (j = 0; j + 1 < g->nv; ++j) {
+            int *c = &cell[4 * (*count)++];
+            const int a = g->grid[i * g->nv + j], b = g->grid[(i + 1) * g->nv + j];
+            const int cc = g->grid[(i + 1) * g->nv + j + 1], d = g->grid[i * g->nv + j + 1];
+            c[0] = a;
+            c[1] = face & 1 ? b : d;
+            c[2] = cc;
+            c[3] = face & 1 ? d : b;
+        }
+}
+
+/* face particles of the low face paired with those at the same place of the
+   high face, when both grids have the same places */
+static void pair_faces(sbc_frame *f, const face_grid *lo, const face_grid *hi, double tol)
+{
+    int k;
+    if (lo->nu != hi->nu || lo->nv != hi->nv)
+        return;
+    for (k = 0; k < lo->nu; ++k)
+        if (fabs(lo->us[k] - hi->us[k]) > tol)
+            return;
+    for (k = 0; k < lo->nv; ++k)
+        if (fabs(lo->vs[k] - hi->vs[k]) > tol)
+            return;
+    for (k = 0; k < lo->nu * lo->nv; ++k) {
+        const int a = lo->grid[k], b = hi->grid[k];
+        if (bits(f->side[a]) == 1 && bits(f->side[b]) == 1) {
+            f->partner[a] = b;
+            f->partner[b] = a;
+        }
+    }
+}
+
+/* the particles within band of each face of the box lo, hi: their items
+   (corners checked) into it; returns the count, or -1 with err */
+static int frame_items(int n, const double *x, double band, const double lo[3], const double hi[3], item *it,
+                       int corner_particle[8], sbc_error *err)
+{
+    int p, k, m = 0;
+    for (k = 0; k < 8; ++k)
+        corner_particle[k] = -1;
+    for (p = 0; p < n; ++p) {
+        const double *xp = &x[3 * p];
+        int side = 0;
+        for (k = 0; k < 3; ++k) {
+            side |= (xp[k] - lo[k] <= band) << (2 * k);
+            side |= (hi[k] - xp[k] <= band) << (2 * k + 1);
+        }
+        if (!side)
+            continue;
+        if (bits(side) == 3) {
+            const int c = (side & SBC_FACE_XHI ? 1 : 0) | (side & SBC_FACE_YHI ? 2 : 0) | (side & SBC_FACE_ZHI ? 4 : 0);
+            if (corner_particle[c] >= 0) {
+                sbc_fail(err, SBC_ERR_FRAME, "frame: two particles (%d and %d) sit at the corner (%s, %s, %s)",
+                         corner_particle[c], p, face_name[c & 1], face_name[2 + (c >> 1 & 1)],
+                         face_name[4 + (c >> 2 & 1)]);
+                return -1;
+            }
+            corner_particle[c] = p;
+        }
+        it[m].particle = p;
+        it[m].side = side;
+        it[m].rank = 3 - bits(side);
+        it[m++].x = xp;
+    }
+    for (k = 0; k < 8; ++k)
+        if (corner_particle[k] < 0) {
+            sbc_fail(err, SBC_ERR_FRAME, "frame: no particle at the corner (%s, %s, %s) of the packing",
+                     face_name[k & 1], face_name[2 + (k >> 1 & 1)], face_name[4 + (k >> 2 & 1)]);
+            return -1;
+        }
+    return m;
+}
+
+sbc_status sbc_frame_detect_3d(sbc_frame *f, int n, const double *x, const double *r, double band, sbc_error *err)
+{
+    double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX}, hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX}, rmin = DBL_MAX;
+    int corner_particle[8], p, k, m, q, face, ncell = 0;
+    face_grid grid[6];
+    item *it;
+    sbc_status st = SBC_OK;
+    memset(f, 0, sizeof *f);
+    if (n < 8)
+        return sbc_fail(err, SBC_ERR_FRAME, "frame: %d particles cannot form a 3D frame (need at least 8)", n);
+    for (p = 0; p < n; ++p) {
+        for (k = 0; k < 3; ++k) {
+            lo[k] = fmin(lo[k], x[3 * p + k]);
+            hi[k] = fmax(hi[k], x[3 * p + k]);
+        }
+        rmin = fmin(rmin, r[p]);
+    }
+    if (band <= 0.0)
+        band = 0.5 * rmin;
+    if (!(hi[0] - lo[0] > 2.0 * band && hi[1] - lo[1] > 2.0 * band && hi[2] - lo[2] > 2.0 * band))
+        return sbc_fail(err, SBC_ERR_FRAME, "frame: the packing is too thin (%g x %g x %g m) to have six faces",
+                        hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    if (!(it = malloc(sizeof *it * (size_t)n)))
+        return sbc_fail(err, SBC_ERR_NOMEM, "frame: out of memory");
+    if ((m = frame_items(n, x, band, lo, hi, it, corner_particle, err)) < 0) {
+        free(it);
+        return err->status;
+    }
+    qsort(it, (size_t)m, sizeof *it, compare_items);
+    if ((st = sbc_frame_alloc(f, 3, m, err)) != SBC_OK) {
+        free(it);
+        return st;
+    }
+    for (q = 0; q < m; ++q) {
+        f->particle[q] = it[q].particle;
+        f->side[q] = it[q].side;
+        f->partner[q] = -1;
+        f->R[q] = r[it[q].particle];
+        for (k = 0; k < 3; ++k)
+            f->X[3 * q + k] = it[q].x[k];
+    }
+    free(it);
+    for (k = 0; k < 8; ++k)
+        f->corner[k] = k; /* the corners lead the frame order, by their index */
+    memset(grid, 0, sizeof grid);
+    for (face = 0; face < 6 && st == SBC_OK; ++face)
+        if ((st = face_build(f, face, band, &grid[face], err)) == SBC_OK)
+            ncell += (grid[face].nu - 1) * (grid[face].nv - 1);
+    if (st == SBC_OK && !(f->cell = malloc(sizeof(int) * 4 * (size_t)ncell)))
+        st = sbc_fail(err, SBC_ERR_NOMEM, "frame: out of memory for %d surface cells", ncell);
+    if (st == SBC_OK) {
+        for (face = 0; face < 6; ++face)
+            face_cells(&grid[face], face, f->cell, &f->ncell);
+        for (k = 0; k < 3; ++k)
+            pair_faces(f, &grid[2 * k], &grid[2 * k + 1], band);
+        area_vectors(f);
+        if (!(f->V > 0.0))
+            st = sbc_fail(err, SBC_ERR_FRAME, "frame: the surface through the frame's centres encloses no volume");
+    }
+    for (face = 0; face < 6; ++face)
+        grid_free(&grid[face]);
+    if (st != SBC_OK)
+        sbc_frame_free(f);
+    return st;
+}
