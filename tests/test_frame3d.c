@@ -176,8 +176,40 @@ static void refused(void)
     CHECK(sbc_frame_detect_3d(&f, 5, x, r, 0.0, &err) == SBC_ERR_FRAME && strstr(err.message, "need at least 8"));
 }
 
+/* the 3D frame's restart data: a round trip, and refusals by name */
+static void saved(void)
+{
+    double x[3 * 120], r[120], *state;
+    sbc_frame f, g;
+    sbc_error err;
+    size_t n;
+    const int np = cubic(4, 5, 6, 1e-3, x, r);
+    CHECK(sbc_frame_detect_3d(&f, np, x, r, 0.0, &err) == SBC_OK);
+    n = sbc_frame_state_size(&f);
+    CHECK(n == 2 + 10 * (size_t)f.n + 9 + 1 + 4 * (size_t)f.ncell);
+    state = malloc(sizeof(double) * n);
+    sbc_frame_save(&f, state);
+    CHECK(sbc_frame_load(&g, state, n, &err) == SBC_OK);
+    CHECK(g.dim == 3 && g.n == f.n && g.V == f.V && g.ncell == f.ncell &&
+          memcmp(g.X, f.X, sizeof(double) * 3 * (size_t)f.n) == 0 &&
+          memcmp(g.A, f.A, sizeof(double) * 3 * (size_t)f.n) == 0 &&
+          memcmp(g.side, f.side, sizeof(int) * (size_t)f.n) == 0 &&
+          memcmp(g.partner, f.partner, sizeof(int) * (size_t)f.n) == 0 &&
+          memcmp(g.corner, f.corner, sizeof f.corner) == 0 && memcmp(g.cell, f.cell, sizeof(int) * 4 * (size_t)f.ncell) == 0);
+    sbc_frame_free(&g);
+    CHECK(sbc_frame_load(&g, state, n - 1, &err) == SBC_ERR_INPUT && strstr(err.message, "3D frame of 96 particles"));
+    state[n - 1] = f.n; /* a cell corner past the frame */
+    CHECK(sbc_frame_load(&g, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "cell corner"));
+    sbc_frame_save(&f, state);
+    state[2 + 1] = 0; /* the first corner's side: no face */
+    CHECK(sbc_frame_load(&g, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "side"));
+    free(state);
+    sbc_frame_free(&f);
+}
+
 void test_frame_3d(void)
 {
+    saved();
     lattice(3, 3, 3);
     lattice(4, 5, 6);
     lattice(10, 10, 10);

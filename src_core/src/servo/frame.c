@@ -67,14 +67,25 @@ sbc_status sbc_frame_copy(sbc_frame *dst, const sbc_frame *src, sbc_error *err)
     return SBC_OK;
 }
 
-/* Layout: Q, then per frame position: particle, side, partner, X (dim), R,
- * A (dim); then the four corners and V. A saved frame is read as a 2D one
- * (the layout names no dimension yet). */
-size_t sbc_frame_state_size(const sbc_frame *f) { return 1 + (4 + 2 * (size_t)f->dim) * (size_t)f->n + 5; }
+/* Layout (2D, as 0.2.0 wrote it): Q, then per frame position: particle,
+ * side, partner, X (2), R, A (2); then the four corners and V. 3D: the
+ * marker -3 first, then Q, per position particle, side, partner, X (3), R,
+ * A (3); the eight corners, V, the cell count and the cells [4 ncell]. */
+#define FRAME_3D_MARKER -3.0
+
+static size_t corners_of(int dim) { return dim == 3 ? 8 : 4; }
+
+size_t sbc_frame_state_size(const sbc_frame *f)
+{
+    const size_t head = f->dim == 3 ? 2 : 1, tail = f->dim == 3 ? 1 + 4 * (size_t)f->ncell : 0;
+    return head + (4 + 2 * (size_t)f->dim) * (size_t)f->n + corners_of(f->dim) + 1 + tail;
+}
 
 void sbc_frame_save(const sbc_frame *f, double *out)
 {
     int q, c, k;
+    if (f->dim == 3)
+        *out++ = FRAME_3D_MARKER;
     *out++ = f->n;
     for (q = 0; q < f->n; ++q) {
         *out++ = f->particle[q];
@@ -86,54 +97,94 @@ void sbc_frame_save(const sbc_frame *f, double *out)
         for (k = 0; k < f->dim; ++k)
             *out++ = f->A[3 * q + k];
     }
-    for (c = 0; c < 4; ++c)
+    for (c = 0; c < (int)corners_of(f->dim); ++c)
         *out++ = f->corner[c];
-    *out = f->V;
+    *out++ = f->V;
+    if (f->dim == 3) {
+        *out++ = f->ncell;
+        for (c = 0; c < 4 * f->ncell; ++c)
+            *out++ = f->cell[c];
+    }
+}
+
+/* the invariants the servo indexes by: corners have no partner, a partner's
+   partner is the particle itself, the corner list names corners (an edge
+   particle may lack a partner: (D) needs none) */
+static sbc_status check_loaded(const sbc_frame *f, sbc_error *err)
+{
+    int q, c;
+    for (q = 0; q < f->n; ++q) {
+        const int p = f->partner[q];
+        const int corner = f->dim == 3 ? f->side[q] == (f->side[q] & 0x3f) && (f->side[q] & 3) && (f->side[q] & 12) &&
+                                             (f->side[q] & 48)
+                                       : f->side[q] == SBC_SIDE_CORNER;
+        if ((corner && p >= 0) || (p >= 0 && f->partner[p] != q))
+            return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: frame position %d (side %d) has partner %d, "
+                            "which is not its periodic partner", q, f->side[q], p);
+    }
+    for (c = 0; c < (int)corners_of(f->dim); ++c) {
+        const int side = f->side[f->corner[c]];
+        const int corner = f->dim == 3 ? (side & 3) && (side & 12) && (side & 48) : side == SBC_SIDE_CORNER;
+        if (!corner)
+            return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: corner %d is frame position %d, not a corner", c,
+                            f->corner[c]);
+    }
+    return SBC_OK;
 }
 
 sbc_status sbc_frame_load(sbc_frame *f, const double *in, size_t n, sbc_error *err)
 {
+    static const char *const xn[3] = {"X1", "X2", "X3"}, *const an[3] = {"A1", "A2", "A3"};
     sbc_saved rd;
-    int q, c, nq;
+    int q, c, k, nq, dim = 2, ncell = 0;
+    size_t expect;
     sbc_status st;
+    if (n > 0 && in[0] == FRAME_3D_MARKER) {
+        dim = 3;
+        ++in;
+        --n;
+    }
     sbc_saved_start(&rd, in, n, "frame restart data", err);
-    nq = (int)sbc_saved_int(&rd, "frame particles Q", 4, 100000000L);
+    nq = (int)sbc_saved_int(&rd, "frame particles Q", dim == 3 ? 8 : 4, 100000000L);
     if (rd.st != SBC_OK)
         return rd.st;
-    if (n != 1 + 8 * (size_t)nq + 5)
-        return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: %zu values do not describe a frame of %d particles "
-                        "(expected %zu)", n, nq, 1 + 8 * (size_t)nq + 5);
-    if ((st = sbc_frame_alloc(f, 2, nq, err)) != SBC_OK)
+    expect = 1 + (4 + 2 * (size_t)dim) * (size_t)nq + corners_of(dim) + 1;
+    if (dim == 3 && n > expect) /* the cells follow */
+        ncell = (int)fmin(fmax(in[expect], -1.0), 1e9);
+    if (dim == 3)
+        expect += 1 + 4 * (size_t)(ncell > 0 ? ncell : 0);
+    if (n != expect || ncell < 0)
+        return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: %zu values do not describe a %dD frame of %d particles "
+                        "(expected %zu)", n, dim, nq, expect);
+    if ((st = sbc_frame_alloc(f, dim, nq, err)) != SBC_OK)
         return st;
     for (q = 0; q < nq; ++q) {
         f->particle[q] = (int)sbc_saved_int(&rd, "particle", 0, INT_MAX - 1);
-        f->side[q] = (int)sbc_saved_int(&rd, "side", SBC_SIDE_CORNER, SBC_SIDE_LEFT);
+        f->side[q] = (int)(dim == 3 ? sbc_saved_int(&rd, "side", 1, 63)
+                                    : sbc_saved_int(&rd, "side", SBC_SIDE_CORNER, SBC_SIDE_LEFT));
         f->partner[q] = (int)sbc_saved_int(&rd, "partner", -1, nq - 1);
-        f->X[3 * q] = sbc_saved_real(&rd, "X1");
-        f->X[3 * q + 1] = sbc_saved_real(&rd, "X2");
+        for (k = 0; k < dim; ++k)
+            f->X[3 * q + k] = sbc_saved_real(&rd, xn[k]);
         f->R[q] = sbc_saved_positive(&rd, "R");
-        f->A[3 * q] = sbc_saved_real(&rd, "A1");
-        f->A[3 * q + 1] = sbc_saved_real(&rd, "A2");
+        for (k = 0; k < dim; ++k)
+            f->A[3 * q + k] = sbc_saved_real(&rd, an[k]);
     }
-    for (c = 0; c < 4; ++c)
+    for (c = 0; c < (int)corners_of(dim); ++c)
         f->corner[c] = (int)sbc_saved_int(&rd, "corner", 0, nq - 1);
     f->V = sbc_saved_positive(&rd, "V");
-    if (rd.st != SBC_OK)
-        return rd.st;
-    /* the invariants the servo indexes by: corners have no partner, a
-       partner's partner is the particle itself, the corner list names corners
-       (an edge particle may lack a partner: (D) needs none) */
-    for (q = 0; q < nq; ++q) {
-        const int p = f->partner[q];
-        if ((f->side[q] == SBC_SIDE_CORNER && p >= 0) || (p >= 0 && f->partner[p] != q))
-            return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: frame position %d (side %d) has partner %d, "
-                            "which is not its periodic partner", q, f->side[q], p);
+    if (dim == 3) {
+        f->ncell = (int)sbc_saved_int(&rd, "cell count", 1, 1000000000L);
+        if (rd.st == SBC_OK && !(f->cell = malloc(sizeof(int) * 4 * (size_t)f->ncell))) {
+            sbc_frame_free(f);
+            return sbc_fail(err, SBC_ERR_NOMEM, "frame restart data: out of memory for %d cells", ncell);
+        }
+        for (c = 0; c < 4 * f->ncell && rd.st == SBC_OK; ++c)
+            f->cell[c] = (int)sbc_saved_int(&rd, "cell corner", 0, nq - 1);
     }
-    for (c = 0; c < 4; ++c)
-        if (f->side[f->corner[c]] != SBC_SIDE_CORNER)
-            return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: corner %d is frame position %d, not a corner", c,
-                            f->corner[c]);
-    return SBC_OK;
+    if (rd.st == SBC_OK && (st = check_loaded(f, err)) == SBC_OK)
+        return SBC_OK;
+    sbc_frame_free(f);
+    return rd.st != SBC_OK ? rd.st : st;
 }
 
 void sbc_frame_centres(const sbc_frame *frame, const double *x, double *fx)
