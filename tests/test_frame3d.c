@@ -207,8 +207,38 @@ static void saved(void)
     sbc_frame_free(&f);
 }
 
+/* the words in 3D: nine values of F, held to the packing's dimension */
+static void words(void)
+{
+    static const char *w3[] = {"D", "F", "1", "0.1", "0", "0", "1", "0", "0", "0", "0.99", "increments", "2"};
+    static const char *w2[] = {"D", "F", "0.99", "0", "0", "1"}, *none[] = {"P", "increments", "3"};
+    static const char *bad3[] = {"D", "F", "1", "0", "0", "0", "1", "0", "0", "0", "-1"};
+    static const char *path3[] = {"D", "F", "-0.5", "0", "0", "0", "-0.5", "0", "0", "0", "1"};
+    static const char *mixed[] = {"mixed", "stress", "P22", "-100", "2"};
+    sbc_settings s;
+    sbc_error err;
+    CHECK(sbc_settings_parse(&s, 13, w3, &err) == SBC_OK && s.dim == 3 && s.F[SBC_IJ(0, 1)] == 0.1 &&
+          s.F[SBC_IJ(2, 2)] == 0.99 && s.F[SBC_IJ(1, 1)] == 1.0 && s.increments == 2);
+    CHECK(sbc_settings_check_dimension(&s, 3, &err) == SBC_OK && s.dim == 3);
+    CHECK(sbc_settings_check_dimension(&s, 2, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "9 values give a 3D F, but the packing is 2D (expected 4 values"));
+    CHECK(sbc_settings_parse(&s, 6, w2, &err) == SBC_OK && s.dim == 2);
+    CHECK(sbc_settings_check_dimension(&s, 3, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "4 values give a 2D F, but the packing is 3D (expected 9 values, F11 F12 F13"));
+    /* no deformation in the words: the packing's dimension, F = I */
+    CHECK(sbc_settings_parse(&s, 3, none, &err) == SBC_OK && sbc_settings_check_dimension(&s, 3, &err) == SBC_OK &&
+          s.dim == 3 && s.F[SBC_IJ(2, 2)] == 1.0 && sbc_tensor_det(3, s.F) == 1.0);
+    CHECK(sbc_settings_parse(&s, 11, bad3, &err) == SBC_ERR_INPUT && strstr(err.message, "det F = -1 is not positive"));
+    /* det F of diag(-0.5, -0.5, 1) is 0.25 > 0, but the path from I passes det F = 0 at t = 2/3 */
+    CHECK(sbc_settings_parse(&s, 11, path3, &err) == SBC_ERR_INPUT && strstr(err.message, "linear path"));
+    CHECK(sbc_settings_parse(&s, 5, mixed, &err) == SBC_OK && sbc_settings_check_dimension(&s, 3, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "mixed conditions"));
+    CHECK(sbc_settings_check_dimension(&s, 4, &err) == SBC_ERR_INPUT && strstr(err.message, "dimension 4"));
+}
+
 void test_frame_3d(void)
 {
+    words();
     saved();
     lattice(3, 3, 3);
     lattice(4, 5, 6);

@@ -31,7 +31,9 @@ refuses "a time step beyond the critical step of the lightest atom" 's/^timestep
   "time step 0.002 s exceeds the critical step 0.00114342 s = 2 sqrt(M / (2 kn)) of particle"
 frictional_checks 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 2e3 0 0 0.4 0/'
 outputs_checks
-refuses "a 3d box" 's/^dimension       2/dimension 3/; s/lattice         sq/lattice sc/; /enforce2d/d; s/nve\/sphere disc/nve\/sphere/' \
+refuses "a 2D F in a 3d box" 's/^dimension       2/dimension 3/; s/lattice         sq/lattice sc/; /enforce2d/d; s/nve\/sphere disc/nve\/sphere/' \
+  "keyword 'F': 4 values give a 2D F, but the packing is 3D (expected 9 values"
+refuses "a 3d box (F with nine values)" 's/^dimension       2/dimension 3/; s/lattice         sq/lattice sc/; /enforce2d/d; s/nve\/sphere disc/nve\/sphere/; s/servo_bc D F 1.002 0 0 0.997/servo_bc D F 1.002 0 0 0 0.997 0 0 0 1/' \
   "the box is 3d"
 cat > "$TMP/restart_head.in" <<LMP
 comm_modify     vel yes

@@ -46,7 +46,8 @@ typedef struct sbc_stress_spec {
 
 typedef struct sbc_settings {
     sbc_bc bc;
-    int dim;                 /* 2 (the grammar's F has dim x dim values); 2 */
+    int dim;                 /* the words' dimension: 3 when F has nine values, else 2 (the host holds
+                                it to its packing's: sbc_settings_check_dimension); 2 */
     double F[9];             /* final macroscopic F, 3 x 3 slots (tensor.h); F ramps from I; default I */
     int increments;          /* loading increments i_tot; default 1 */
     sbc_criterion criterion; /* when a relaxation is over (relax.h): force balance (keyword balance) or
@@ -106,6 +107,13 @@ double sbc_settings_preset_accuracy(const char *name);
  * the offending value and what was expected, e.g.
  *   keyword 'relax': tolE value 'abc' is not a number (expected a real > 0) */
 sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *words, sbc_error *err);
+
+/* Holds the words to the dimension dim of the host's packing: words
+ * without a deformation (no F, or F 1 0 0 1) take dim; otherwise F's values
+ * must be dim x dim (4 or 9), and mixed conditions and stresses are 2D. On
+ * error the message says which F the words give and what the packing
+ * expects. */
+sbc_status sbc_settings_check_dimension(sbc_settings *s, int dim, sbc_error *err);
 
 /* The warning a host prints when the words give (D) the servo's keywords
  * (settings.ignored): 1 with the message in out, 0 when there is none. */

@@ -96,7 +96,8 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
         return fail_create(h, &err, msg, cap);
     }
     sbc_split_words(line, w, nw);
-    if (sbc_settings_parse(&h->settings, nw, (const char *const *)w, &err) != SBC_OK) {
+    if (sbc_settings_parse(&h->settings, nw, (const char *const *)w, &err) != SBC_OK ||
+        sbc_settings_check_dimension(&h->settings, 2, &err) != SBC_OK) {
         free(w);
         free(line);
         return fail_create(h, &err, msg, cap);

@@ -591,6 +591,8 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
             return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: a second servo_bc line before a run has used the one of line "
                             "%d (each run takes the servo_bc line before it)", s->servo_line);
         st = sbc_settings_parse(&s->settings, nw - 1, (const char *const *)(w + 1), err);
+        if (st == SBC_OK)
+            st = sbc_settings_check_dimension(&s->settings, 2, err);
         if (st != SBC_OK) {
             snprintf(msg, sizeof msg, "%s", err->message);
             return sbc_fail(err, st, "servo_bc: %s", msg);

@@ -8,7 +8,7 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
     {"F",
      "F11 F12 F21 F22",
      "final macroscopic deformation gradient (full F̄, not F̄ − I); F̄ ramps linearly from I over the "
-         "increments; det F̄ > 0",
+         "increments; det F̄ > 0; nine values F11 … F33, row-major, on a 3D packing",
      "I"},
     {"increments",
      "N ≥ 1",

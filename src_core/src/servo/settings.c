@@ -262,7 +262,14 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             else if (name && first)
                 snprintf(m->accuracy, sizeof m->accuracy, "%s", name);
         } else if (strcmp(key, "F") == 0) {
-            const int d = s->dim;
+            /* nine numbers give a 3D F, row-major; otherwise the 2D one's four
+               (sbc_settings_check_dimension holds them to the host's packing) */
+            int numbers = 0, d;
+            double v;
+            while (numbers < 9 && c.i + numbers < c.n && sbc_parse_real(c.w[c.i + numbers], "F", &v, NULL) == SBC_OK)
+                ++numbers;
+            d = s->dim = numbers == 9 ? 3 : 2;
+            sbc_tensor_identity(d, s->F);
             for (k = 0; k < d * d && st == SBC_OK; ++k) {
                 char name[8];
                 double *Fij = &s->F[SBC_IJ(k / d, k % d)];
@@ -427,6 +434,28 @@ sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *wo
     s->bc = bc;
     sbc_settings_preset(s, m.accuracy);
     return parse_pass(s, nwords, words, 0, &m, err);
+}
+
+sbc_status sbc_settings_check_dimension(sbc_settings *s, int dim, sbc_error *err)
+{
+    const double *F = s->F;
+    if (dim != 2 && dim != 3)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: a packing of dimension %d (expected 2 or 3)", dim);
+    if (s->dim == 2 && dim == 3 && F[0] == 1.0 && F[1] == 0.0 && F[3] == 0.0 && F[4] == 1.0 && s->nstress == 0 &&
+        s->bc != SBC_BC_MIXED) { /* no deformation (no F, or the 2D identity) means none in 3D */
+        s->dim = 3;
+        sbc_tensor_identity(3, s->F);
+    }
+    if (s->dim == dim)
+        return SBC_OK;
+    if (s->dim == 3)
+        return sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': 9 values give a 3D F, but the packing is 2D (expected 4 "
+                        "values, F11 F12 F21 F22)");
+    if (s->bc == SBC_BC_MIXED || s->nstress > 0)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: the packing is 3D; mixed conditions and keyword 'stress' "
+                        "are 2D in this version", s->bc == SBC_BC_MIXED ? "mixed" : "stress");
+    return sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': 4 values give a 2D F, but the packing is 3D (expected 9 values, "
+                    "F11 F12 F13 F21 F22 F23 F31 F32 F33, row-major)");
 }
 
 int sbc_settings_ignored_message(const sbc_settings *s, char *out, size_t cap)
