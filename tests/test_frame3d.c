@@ -8,6 +8,8 @@
 
 #include "sbc/confine.h"
 #include "sbc/controller.h"
+#include "sbc/damping.h"
+#include "sbc/driver.h"
 #include "sbc/frame.h"
 
 #include <math.h>
@@ -143,16 +145,19 @@ static void inside(void)
     CHECK(sbc_confine_check(&f, fx, 2, 7, out[1], v, &err) == SBC_ERR_GEOMETRY &&
           strstr(err.message, "interior particle 7 escaped") && strstr(err.message, "(3.01, 1, 1) m is outside the "
                                                                                   "polyhedron"));
-    /* the 3D frame is refused by the controller until it drives 3D conditions */
+    /* the controller takes a 3D frame under 3D words, and (D) alone */
     {
-        static const char *words[] = {"D", "F", "1", "0", "0", "1"};
+        static const char *words2[] = {"D", "F", "1.01", "0", "0", "1"}, *wordsP[] = {"P"};
         sbc_settings s;
         double mass[64];
         for (k = 0; k < 64; ++k)
             mass[k] = 1.0;
-        CHECK(sbc_settings_parse(&s, 6, words, &err) == SBC_OK);
+        CHECK(sbc_settings_parse(&s, 6, words2, &err) == SBC_OK);
         CHECK(sbc_controller_create(&f, &s, mass, 1e-6, 1e4, &err) == NULL &&
-              strstr(err.message, "a frame of dimension 3") && strstr(err.message, "2D frames only"));
+              strstr(err.message, "a frame of dimension 3 under words of dimension 2"));
+        CHECK(sbc_settings_parse(&s, 1, wordsP, &err) == SBC_OK && sbc_settings_check_dimension(&s, 3, &err) == SBC_OK);
+        CHECK(sbc_controller_create(&f, &s, mass, 1e-6, 1e4, &err) == NULL &&
+              strstr(err.message, "servo_bc P: this version imposes (D) alone on a 3D frame"));
     }
     sbc_frame_free(&f);
 }
@@ -236,8 +241,195 @@ static void words(void)
     CHECK(sbc_settings_check_dimension(&s, 4, &err) == SBC_ERR_INPUT && strstr(err.message, "dimension 4"));
 }
 
+/* a host of the driver for the (D) test: spheres on a simple cubic lattice
+ * with normal springs kn between nearest neighbours (no friction, no
+ * rotation), FIRE or eq. 10 on the interior, the frame where the commands
+ * put it */
+typedef struct springs {
+    int n, npair, Q;
+    int *pair;                  /* [2 npair] */
+    double *x, *v, *f;          /* [3n] */
+    unsigned char *frame;       /* [n] */
+    const sbc_frame *fr;
+    double R, kn, m, dt, alpha;
+    double ep, overlap, count, fsum;
+} springs;
+
+static void springs_forces(springs *h)
+{
+    int p, k;
+    memset(h->f, 0, sizeof(double) * 3 * (size_t)h->n);
+    h->ep = h->overlap = h->count = h->fsum = 0.0;
+    for (p = 0; p < h->npair; ++p) {
+        const int i = h->pair[2 * p], j = h->pair[2 * p + 1];
+        double d[3], L, dn;
+        for (k = 0; k < 3; ++k)
+            d[k] = h->x[3 * j + k] - h->x[3 * i + k];
+        L = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        dn = 2.0 * h->R - L;
+        if (dn <= 0.0)
+            continue;
+        for (k = 0; k < 3; ++k) {
+            h->f[3 * i + k] -= h->kn * dn * d[k] / L;
+            h->f[3 * j + k] += h->kn * dn * d[k] / L;
+        }
+        h->ep += 0.5 * h->kn * dn * dn;
+        h->overlap += dn / h->R;
+        h->count += 1.0;
+        h->fsum += h->kn * dn;
+    }
+}
+
+static void springs_fire_sums(void *u, double *sums)
+{
+    const springs *h = u;
+    const double zero[3] = {0.0, 0.0, 0.0}; /* no rotation */
+    int i;
+    for (i = 0; i < h->n; ++i)
+        if (!h->frame[i])
+            sbc_fire_add(sums, 3, &h->f[3 * i], &h->v[3 * i], zero, zero);
+}
+
+static void springs_interior(void *u, const sbc_fire_mix *mix, int again, double out[2])
+{
+    springs *h = u;
+    double ek = 0.0, net = 0.0;
+    int i, k;
+    (void)again;
+    for (i = 0; i < h->n; ++i) {
+        double *v = &h->v[3 * i], *f = &h->f[3 * i];
+        const double zero[3] = {0.0, 0.0, 0.0};
+        if (h->frame[i])
+            continue;
+        net = fmax(net, f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        for (k = 0; k < 3; ++k) {
+            if (mix)
+                v[k] = sbc_fire_velocity(mix, sbc_fire_factor(mix->push, mix, h->dt / h->m), v[k], f[k]);
+            else
+                f[k] = sbc_damp_local(f[k], v[k], h->alpha);
+            v[k] += h->dt * f[k] / h->m;
+            h->x[3 * i + k] += h->dt * v[k];
+        }
+        if (f[0] != 0.0 || f[1] != 0.0 || f[2] != 0.0)
+            ek += sbc_kinetic_energy(3, h->m, 0.0, v, zero);
+    }
+    out[0] = ek;
+    out[1] = sqrt(net);
+}
+
+static void springs_contacts(void *u, double out[4])
+{
+    const springs *h = u;
+    out[0] = h->ep, out[1] = h->overlap, out[2] = h->count, out[3] = h->fsum;
+}
+
+static void springs_frame(void *u, double *buf)
+{
+    const springs *h = u;
+    int q, k;
+    for (q = 0; q < h->Q; ++q)
+        for (k = 0; k < 3; ++k) {
+            buf[3 * q + k] = h->x[3 * h->fr->particle[q] + k];
+            buf[3 * h->Q + 3 * q + k] = h->f[3 * h->fr->particle[q] + k];
+        }
+    buf[8 * h->Q + 1] = h->n;
+}
+
+/* (D) on a prestressed N^3 lattice (R > d/2) under F = diag(a, b, c) at
+ * `tight`: every chain along axis i carries kn (2R - d F_ii), so
+ * P_ii = -N^2 kn (2R - d F_ii) / ((N - 1)^2 d^2), off the diagonal 0 */
+static void lattice_D(int N)
+{
+    static const char *words[] = {"D", "F", "0.999", "0", "0", "0", "0.998", "0", "0", "0", "0.997",
+                                  "increments", "2", "accuracy", "tight"};
+    const double d = 2e-3, R = 1.02e-3, kn = 1e4;
+    const int n = N * N * N;
+    springs h;
+    sbc_frame f;
+    sbc_settings s;
+    sbc_error err;
+    sbc_controller *c;
+    sbc_driver *drv;
+    sbc_driver_callbacks cb = {0};
+    double *r = malloc(sizeof(double) * (size_t)n), *mass;
+    sbc_event ev = SBC_EVENT_RELAXING;
+    long steps = 0;
+    int i, j, q, rows = 0;
+    double worst = 0.0, hm = 0.0, Pmax = 0.0;
+    memset(&h, 0, sizeof h);
+    h.n = n, h.R = R, h.kn = kn, h.m = 1e-3, h.dt = 1e-5, h.alpha = 0.7;
+    h.x = malloc(sizeof(double) * 3 * (size_t)n);
+    h.v = calloc(3 * (size_t)n, sizeof(double));
+    h.f = calloc(3 * (size_t)n, sizeof(double));
+    h.frame = calloc((size_t)n, 1);
+    h.pair = malloc(sizeof(int) * 6 * (size_t)n);
+    cubic(N, N, N, d, h.x, r);
+    for (i = 0; i < n; ++i) {
+        r[i] = R;
+        for (j = i + 1; j < n; ++j) {
+            const double dx = h.x[3 * j] - h.x[3 * i], dy = h.x[3 * j + 1] - h.x[3 * i + 1], dz = h.x[3 * j + 2] - h.x[3 * i + 2];
+            if (dx * dx + dy * dy + dz * dz < 1.5 * d * d) {
+                h.pair[2 * h.npair] = i;
+                h.pair[2 * h.npair++ + 1] = j;
+            }
+        }
+    }
+    CHECK(sbc_frame_detect_3d(&f, n, h.x, r, 0.0, &err) == SBC_OK);
+    CHECK(sbc_settings_parse(&s, 15, words, &err) == SBC_OK && sbc_settings_check_dimension(&s, 3, &err) == SBC_OK);
+    h.Q = f.n, h.fr = &f;
+    mass = malloc(sizeof(double) * (size_t)f.n);
+    for (q = 0; q < f.n; ++q) {
+        h.frame[f.particle[q]] = 1;
+        mass[q] = h.m;
+    }
+    c = sbc_controller_create(&f, &s, mass, h.dt, kn, &err);
+    CHECK(c != NULL);
+    if (!c) {
+        printf("  %s\n", err.message);
+        return;
+    }
+    cb.user_data = &h, cb.fire_sums = springs_fire_sums, cb.interior = springs_interior;
+    cb.contacts = springs_contacts, cb.frame = springs_frame;
+    drv = sbc_driver_create(c, &s, &cb, &err);
+    while (ev != SBC_EVENT_FINISHED && ev != SBC_EVENT_FAILED && steps < 2000000) {
+        sbc_commands cmd;
+        springs_forces(&h);
+        ev = sbc_driver_step(drv, 0, &err);
+        cmd = sbc_controller_commands(c);
+        for (q = 0; q < f.n; ++q)
+            memcpy(&h.x[3 * f.particle[q]], &cmd.x[3 * q], sizeof(double) * 3);
+        ++steps;
+        if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
+            const sbc_result *row = sbc_controller_result(c);
+            ++rows;
+            for (i = 0; i < 3; ++i)
+                for (j = 0; j < 3; ++j) {
+                    const double Fii = row->F[SBC_IJ(i, i)];
+                    const double expect = i == j ? -N * N * kn * (2.0 * R - d * Fii) / ((N - 1.0) * (N - 1.0) * d * d) : 0.0;
+                    worst = fmax(worst, fabs(row->P[SBC_IJ(i, j)] - expect));
+                    Pmax = fmax(Pmax, fabs(expect));
+                }
+            hm = fmax(hm, fabs(row->hill_mandel));
+        }
+    }
+    if (ev == SBC_EVENT_FAILED)
+        printf("  %s\n", err.message);
+    CHECK(ev == SBC_EVENT_FINISHED && rows == 3);
+    CHECK(worst <= 1e-6 * Pmax && hm <= 1e-6);
+    printf("  frame3d: (D) on a prestressed %d^3 lattice, F = diag(0.999, 0.998, 0.997), tight: %d rows in %ld steps, "
+           "max |P - closed form| = %.1e of max |P| (%.4g N/m^2), |Hill-Mandel| %.1e\n",
+           N, rows, steps, worst / Pmax, Pmax, hm);
+    sbc_driver_free(drv);
+    sbc_controller_free(c);
+    sbc_frame_free(&f);
+    free(mass);
+    free(r);
+    free(h.x), free(h.v), free(h.f), free(h.frame), free(h.pair);
+}
+
 void test_frame_3d(void)
 {
+    lattice_D(4);
     words();
     saved();
     lattice(3, 3, 3);

@@ -139,9 +139,14 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc: contact stiffness kn = %g N/m is not >= 0", kn);
         return NULL;
     }
-    if (frame->dim != 2 || settings->dim != 2) {
-        sbc_fail(err, SBC_ERR_INPUT, "servo_bc: a frame of dimension %d under words of dimension %d: this version "
-                 "imposes (D), (P), (T) and mixed conditions on 2D frames only", frame->dim, settings->dim);
+    if (frame->dim != settings->dim) {
+        sbc_fail(err, SBC_ERR_INPUT, "servo_bc: a frame of dimension %d under words of dimension %d "
+                 "(sbc_settings_check_dimension holds the words to the packing)", frame->dim, settings->dim);
+        return NULL;
+    }
+    if (frame->dim == 3 && settings->bc != SBC_BC_D) {
+        sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: this version imposes (D) alone on a 3D frame ((P), (T) and mixed "
+                 "are 2D)", sbc_bc_name(settings->bc));
         return NULL;
     }
     c = calloc(1, sizeof *c);
