@@ -314,8 +314,8 @@ void FixServoBC::init()
     // restart file are dropped, so that the file equals an uninterrupted run's
     int kept = 0;
     if (comm->me == 0 && settings.file[0] &&
-        (restored ? sbc_csv_resume(&csv, settings.file, finished ? INT_MAX : sbc_controller_increment(ctl), &kept, &err)
-                  : sbc_csv_open(&csv, settings.file, &err)) != SBC_OK)
+        (restored ? sbc_csv_resume(&csv, settings.file, settings.dim, finished ? INT_MAX : sbc_controller_increment(ctl), &kept, &err)
+                  : sbc_csv_open(&csv, settings.file, settings.dim, &err)) != SBC_OK)
       fail_here(err.message);
     if (restored && settings.file[0])
       log("servo_bc: %s continued after its row of increment %d (%d rows kept)\n", settings.file,

@@ -11,7 +11,7 @@ int csv_read(const char *path, double rows[][CSV_COLS], int max)
 {
     FILE *fp = fopen(path, "r");
     char line[4096], header[4096];
-    const int h = sbc_columns_header(header, sizeof header);
+    const int h = sbc_columns_header(2, header, sizeof header);
     int n = 0;
     if (!fp)
         return -1;

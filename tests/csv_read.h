@@ -4,10 +4,10 @@
 
 #include "sbc/columns.h"
 
-#define CSV_COLS SBC_COLUMNS
+#define CSV_COLS SBC_COLUMNS_2D
 
 /* the column called name (columns.h); tests read columns by name */
-#define COL(name) sbc_column_index(name)
+#define COL(name) sbc_column_index(2, name)
 
 /* Reads up to max rows of CSV_COLS numbers after the header; returns the
  * row count, -1 when the file is missing or a field is not a finite number. */

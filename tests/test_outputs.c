@@ -22,6 +22,7 @@ static void thermo_vector(void)
     sbc_result r;
     int k, named = 0;
     memset(&r, 0, sizeof r);
+    r.dim = 2;
     r.increment = 7;
     for (k = 0; k < 9; ++k) {
         r.F[k] = 1.0 + k;
@@ -30,7 +31,7 @@ static void thermo_vector(void)
     }
     r.unbalanced = 1e-5, r.frame_residual = 2e-5, r.hill_mandel = -3e-9;
     for (k = 0; k < SBC_THERMO_COUNT; ++k)
-        named += sbc_thermo_vector[k].kind == SBC_THERMO_COLUMN && sbc_column_index(sbc_thermo_vector[k].column) >= 0;
+        named += sbc_thermo_vector[k].kind == SBC_THERMO_COLUMN && sbc_column_index(2, sbc_thermo_vector[k].column) >= 0;
     CHECK(named == 16);
     CHECK(sbc_thermo_value(NULL, &r, 0, 0) == 7.0);
     /* F11 F12 F21 F22 are slots 0 1 3 4 of the 3 x 3 storage */

@@ -5,7 +5,7 @@ built on it, and so can another host or a script.
 
     import servo_bc_core as core
     core.version()      # '0.3.0'
-    core.columns()      # ('increment', 'F11', ...), the results file's header
+    core.columns()      # ('increment', 'F11', ...), the header of a 2D results file
     lib = core.library()
     h = lib.sbc_host_create(b'D F 0.99 0 0 0.99', n, xy, r, m, 0, None, dt, kn, msg, len(msg))
 
@@ -77,8 +77,8 @@ def _load():
         'sbc_host_damping': (I, [P, pd, pd]),
         'sbc_host_warning': (I, [P, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_version': (ctypes.c_char_p, []),
-        'sbc_column_count': (I, []),
-        'sbc_column_name': (ctypes.c_char_p, [I]),
+        'sbc_column_count': (I, [I]),
+        'sbc_column_name': (ctypes.c_char_p, [I, I]),
         'sbc_bpm_host_create': (P, [ctypes.c_char_p, D, D, D, pd, I, pd, pd, pd, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_bpm_host_bond_count': (I, [P]),
         'sbc_bpm_host_intact': (I, [P]),
@@ -115,10 +115,10 @@ def library():
     return _lib
 
 
-def columns():
-    """The result columns in the results file's order, from the library (columns.h)."""
+def columns(dim=2):
+    """The result columns of a dim-dimensional results file in its order, from the library (columns.h)."""
     lib = library()
-    return tuple(lib.sbc_column_name(k).decode() for k in range(lib.sbc_column_count()))
+    return tuple(lib.sbc_column_name(dim, k).decode() for k in range(lib.sbc_column_count(dim)))
 
 
 def doubles(values):

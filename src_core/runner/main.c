@@ -46,11 +46,13 @@ static void print_columns(void)
 {
     static const char *const written[] = {"count", "17 digits", "6 digits"}; /* by sbc_column_format */
     int k;
-    puts("| column | unit | written as | meaning |");
-    puts("| --- | --- | --- | --- |");
-    for (k = 0; k < SBC_COLUMNS; ++k)
-        printf("| `%s` | %s | %s | %s |\n", sbc_columns[k].name, sbc_columns[k].unit, written[sbc_columns[k].format],
-               sbc_columns[k].description);
+    puts("| column | in | unit | written as | meaning |");
+    puts("| --- | --- | --- | --- | --- |");
+    for (k = 0; k < SBC_COLUMNS; ++k) {
+        const sbc_column *c = &sbc_columns[k];
+        printf("| `%s` | %s | %s | %s | %s |\n", c->name, c->dimensions & SBC_COLUMN_2D ? "2D, 3D" : "3D", c->unit,
+               written[c->format], c->description);
+    }
 }
 
 int main(int argc, char **argv)

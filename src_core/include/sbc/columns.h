@@ -32,25 +32,34 @@ typedef struct sbc_column {
 } sbc_column;
 
 #define SBC_COLUMN_2D (1u << 2)
+#define SBC_COLUMN_3D (1u << 3)
 
-/* The columns, in the file's order. */
-#define SBC_COLUMNS 23
+/* The columns of both dimensions, in the files' order: a 2D file has those
+ * marked 2D (SBC_COLUMNS_2D), a 3D file those marked 3D (F, P and sigma with
+ * nine components each). */
+#define SBC_COLUMNS 38
+#define SBC_COLUMNS_2D 23
 extern const sbc_column sbc_columns[SBC_COLUMNS];
 
-/* The values of r in the columns' order, as doubles (counts exactly). */
-void sbc_column_values(const sbc_result *r, double values[SBC_COLUMNS]);
+/* Column k of a results file of dimension dim (NULL outside). */
+const sbc_column *sbc_column_of(int dim, int k);
+
+/* The values of r in the columns of its dimension (r->dim), as doubles
+ * (counts exactly), into values [SBC_COLUMNS]; returns their count. */
+int sbc_column_values(const sbc_result *r, double *values);
 
 /* For hosts that load the library at run time (the YADE module): the
- * number of columns and the name of column k (NULL outside). */
-int sbc_column_count(void);
-const char *sbc_column_name(int k);
+ * number of columns of dimension dim and the name of column k (NULL
+ * outside). */
+int sbc_column_count(int dim);
+const char *sbc_column_name(int dim, int k);
 
-/* The index of the column called name, or -1. */
-int sbc_column_index(const char *name);
+/* The index of the column called name among those of dimension dim, or -1. */
+int sbc_column_index(int dim, const char *name);
 
-/* The header line of the results file into out [cap]: the names joined by
- * commas, no newline. Returns its length (as snprintf). */
-int sbc_columns_header(char *out, size_t cap);
+/* The header line of a results file of dimension dim into out [cap]: the
+ * names joined by commas, no newline. Returns its length (as snprintf). */
+int sbc_columns_header(int dim, char *out, size_t cap);
 
 /* The thermo vector of the LAMMPS and LIGGGHTS fixes, f_ID[1] ..
  * f_ID[SBC_THERMO_COUNT]: result columns of the last converged increment by

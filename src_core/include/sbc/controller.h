@@ -54,6 +54,7 @@ typedef struct sbc_commands {
 
 /* One converged increment: the CSV row (results.h), with the accuracy measures. */
 typedef struct sbc_result {
+    int dim;              /* the frame's dimension: which columns the row has (columns.h) */
     int increment;
     double F[9];          /* eq. 15, -; tensors in 3 x 3 slots (tensor.h) */
     double P[9];          /* eq. 23, N/m */

@@ -113,8 +113,9 @@ const double *sbc_host_command_x(const sbc_host *h);
 const double *sbc_host_command_theta(const sbc_host *h);
 const unsigned char *sbc_host_command_free(const sbc_host *h);
 
-/* The last accepted increment as SBC_HOST_ROW doubles, in the columns of
- * columns.h (sbc_column_name gives their names). */
+/* The last accepted increment in the columns of its dimension (columns.h:
+ * sbc_column_count(dim) of the SBC_HOST_ROW doubles; sbc_column_name gives
+ * their names). */
 #define SBC_HOST_ROW SBC_COLUMNS
 void sbc_host_result(const sbc_host *h, double *row);
 

@@ -22,8 +22,9 @@ typedef struct sbc_csv {
     char path[SBC_NAME_LEN];
 } sbc_csv;
 
-/* Opens path for writing and writes the header. */
-sbc_status sbc_csv_open(sbc_csv *csv, const char *path, sbc_error *err);
+/* Opens path for writing and writes the header of a dim-dimensional run
+ * (columns.h). */
+sbc_status sbc_csv_open(sbc_csv *csv, const char *path, int dim, sbc_error *err);
 
 /* A run continued from a restart whose increment in progress is `next`:
  * opens path, keeps the header and the rows of increments before `next`,
@@ -31,7 +32,7 @@ sbc_status sbc_csv_open(sbc_csv *csv, const char *path, sbc_error *err);
  * that the continued file equals an uninterrupted run's. A missing or empty
  * file is begun anew with the header; *kept (may be NULL) is the number of
  * rows kept. */
-sbc_status sbc_csv_resume(sbc_csv *csv, const char *path, int next, int *kept, sbc_error *err);
+sbc_status sbc_csv_resume(sbc_csv *csv, const char *path, int dim, int next, int *kept, sbc_error *err);
 
 /* Writes one row with 17 significant digits; refuses a non-finite value. */
 sbc_status sbc_csv_write(sbc_csv *csv, const sbc_result *r, sbc_error *err);

@@ -165,7 +165,7 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
     h->n = n;
     if (h->settings.seal && seal_start(h, n, r, kn, &err))
         return fail_create(h, &err, msg, cap);
-    if (h->settings.file[0] && sbc_csv_open(&h->csv, h->settings.file, &err) != SBC_OK)
+    if (h->settings.file[0] && sbc_csv_open(&h->csv, h->settings.file, h->settings.dim, &err) != SBC_OK)
         return fail_create(h, &err, msg, cap);
     return h;
 }

@@ -43,26 +43,26 @@ static sbc_status put(sbc_csv *csv, const char *text, size_t n, int increment, s
     return SBC_OK;
 }
 
-static sbc_status begin(sbc_csv *csv, const char *path, FILE *fp, sbc_error *err)
+static sbc_status begin(sbc_csv *csv, const char *path, int dim, FILE *fp, sbc_error *err)
 {
     char line[SBC_COLUMNS * 32];
-    const int n = sbc_columns_header(line, sizeof line - 1);
+    const int n = sbc_columns_header(dim, line, sizeof line - 1);
     csv->fp = fp;
     snprintf(csv->path, sizeof csv->path, "%s", path);
     line[n] = '\n';
     return put(csv, line, (size_t)n + 1, -1, err);
 }
 
-sbc_status sbc_csv_open(sbc_csv *csv, const char *path, sbc_error *err)
+sbc_status sbc_csv_open(sbc_csv *csv, const char *path, int dim, sbc_error *err)
 {
     FILE *fp = sbc_output_open(path, SBC_OUTPUT_RESULTS, what, err);
     csv->fp = NULL;
     if (!fp)
         return err->status;
-    return begin(csv, path, fp, err);
+    return begin(csv, path, dim, fp, err);
 }
 
-sbc_status sbc_csv_resume(sbc_csv *csv, const char *path, int next, int *kept, sbc_error *err)
+sbc_status sbc_csv_resume(sbc_csv *csv, const char *path, int dim, int next, int *kept, sbc_error *err)
 {
     FILE *fp = sbc_output_update(path, SBC_OUTPUT_RESULTS, what, err);
     char line[4096];
@@ -92,7 +92,7 @@ sbc_status sbc_csv_resume(sbc_csv *csv, const char *path, int next, int *kept, s
     csv->fp = fp;
     snprintf(csv->path, sizeof csv->path, "%s", path);
     if (first) /* empty or new */
-        return begin(csv, path, fp, err);
+        return begin(csv, path, dim, fp, err);
     if (fflush(fp) != 0 || ftruncate(fileno(fp), (off_t)keep) != 0 || fseek(fp, keep, SEEK_SET) != 0)
         return sbc_fail(err, SBC_ERR_IO, "results file '%s': cannot cut it back to increment %d (%s)", path, next - 1,
                         strerror(errno));
@@ -105,16 +105,16 @@ sbc_status sbc_csv_write(sbc_csv *csv, const sbc_result *r, sbc_error *err)
     static const char *const formats[] = {"%.0f", "%.17g", "%.6g"}; /* by sbc_column_format */
     double v[SBC_COLUMNS];
     char row[2048];
+    const int count = sbc_column_values(r, v);
     int k, n = 0;
-    sbc_column_values(r, v);
-    for (k = 0; k < SBC_COLUMNS; ++k)
+    for (k = 0; k < count; ++k)
         if (!isfinite(v[k]))
             return sbc_fail(err, SBC_ERR_NUMERIC, "results file '%s': increment %d has %s = %g; the row is not "
-                            "written and the run stops", csv->path, r->increment, sbc_columns[k].name, v[k]);
-    for (k = 0; k < SBC_COLUMNS && n >= 0 && (size_t)n < sizeof row; ++k) {
+                            "written and the run stops", csv->path, r->increment, sbc_column_name(r->dim, k), v[k]);
+    for (k = 0; k < count && n >= 0 && (size_t)n < sizeof row; ++k) {
         if (k)
             row[n++] = ',';
-        n += snprintf(row + n, sizeof row - (size_t)n, formats[sbc_columns[k].format], v[k]);
+        n += snprintf(row + n, sizeof row - (size_t)n, formats[sbc_column_of(r->dim, k)->format], v[k]);
     }
     if (n >= 0 && (size_t)n + 1 < sizeof row)
         row[n++] = '\n';

@@ -420,7 +420,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         run_free(&r);
         return st;
     }
-    if (s->settings.file[0] && !s->check && (st = sbc_csv_open(&r.csv, s->settings.file, err)) != SBC_OK) {
+    if (s->settings.file[0] && !s->check && (st = sbc_csv_open(&r.csv, s->settings.file, 2, err)) != SBC_OK) {
         run_free(&r);
         return st;
     }

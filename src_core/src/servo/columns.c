@@ -5,43 +5,75 @@
 #include <string.h>
 
 #define D2 SBC_COLUMN_2D
+#define D3 SBC_COLUMN_3D
+#define BOTH (SBC_COLUMN_2D | SBC_COLUMN_3D)
 #define AT(member, k) (offsetof(sbc_result, member) + (k) * sizeof(double))
-#define COUNT(name, member, type, unit, what) {name, unit, D2, SBC_COLUMN_COUNT, what, offsetof(sbc_result, member), type}
-#define VALUE(name, off, unit, what) {name, unit, D2, SBC_COLUMN_VALUE, what, off, 'd'}
-#define MEASURE(name, member, unit, what) {name, unit, D2, SBC_COLUMN_MEASURE, what, offsetof(sbc_result, member), 'd'}
+#define COUNT(name, member, type, unit, what) {name, unit, BOTH, SBC_COLUMN_COUNT, what, offsetof(sbc_result, member), type}
+#define VALUE(name, dims, off, unit, what) {name, unit, dims, SBC_COLUMN_VALUE, what, off, 'd'}
+#define MEASURE(name, member, unit, what) {name, unit, BOTH, SBC_COLUMN_MEASURE, what, offsetof(sbc_result, member), 'd'}
+#define STRESS_UNIT "N/m (2D), N/m^2 (3D)"
 
 const sbc_column sbc_columns[SBC_COLUMNS] = {
     COUNT("increment", increment, 'i', "-", "the converged increment, 0 for the initial state"),
-    VALUE("F11", AT(F, SBC_IJ(0, 0)), "-", "macroscopic deformation gradient F, eq. 15, from the frame's positions"),
-    VALUE("F12", AT(F, SBC_IJ(0, 1)), "-", "F, eq. 15"),
-    VALUE("F21", AT(F, SBC_IJ(1, 0)), "-", "F, eq. 15"),
-    VALUE("F22", AT(F, SBC_IJ(1, 1)), "-", "F, eq. 15"),
-    VALUE("P11", AT(P, SBC_IJ(0, 0)), "N/m", "first Piola-Kirchhoff stress P, eq. 23, from the frame's forces"),
-    VALUE("P12", AT(P, SBC_IJ(0, 1)), "N/m", "P, eq. 23"),
-    VALUE("P21", AT(P, SBC_IJ(1, 0)), "N/m", "P, eq. 23"),
-    VALUE("P22", AT(P, SBC_IJ(1, 1)), "N/m", "P, eq. 23"),
-    VALUE("sigma11", AT(sigma, SBC_IJ(0, 0)), "N/m", "Cauchy stress, eq. 31"),
-    VALUE("sigma12", AT(sigma, SBC_IJ(0, 1)), "N/m", "Cauchy stress, eq. 31"),
-    VALUE("sigma21", AT(sigma, SBC_IJ(1, 0)), "N/m", "Cauchy stress, eq. 31"),
-    VALUE("sigma22", AT(sigma, SBC_IJ(1, 1)), "N/m", "Cauchy stress, eq. 31"),
-    VALUE("overlap_mean", AT(overlap_mean, 0), "-", "mean overlap over the mean radius of the contacts, eq. 39"),
-    VALUE("rotation_mean", AT(rotation_mean, 0), "rad", "mean absolute rotation of the particles, eq. 41"),
+    VALUE("F11", BOTH, AT(F, SBC_IJ(0, 0)), "-", "macroscopic deformation gradient F, eq. 15, from the frame's positions"),
+    VALUE("F12", BOTH, AT(F, SBC_IJ(0, 1)), "-", "F, eq. 15"),
+    VALUE("F13", D3, AT(F, SBC_IJ(0, 2)), "-", "F, eq. 15"),
+    VALUE("F21", BOTH, AT(F, SBC_IJ(1, 0)), "-", "F, eq. 15"),
+    VALUE("F22", BOTH, AT(F, SBC_IJ(1, 1)), "-", "F, eq. 15"),
+    VALUE("F23", D3, AT(F, SBC_IJ(1, 2)), "-", "F, eq. 15"),
+    VALUE("F31", D3, AT(F, SBC_IJ(2, 0)), "-", "F, eq. 15"),
+    VALUE("F32", D3, AT(F, SBC_IJ(2, 1)), "-", "F, eq. 15"),
+    VALUE("F33", D3, AT(F, SBC_IJ(2, 2)), "-", "F, eq. 15"),
+    VALUE("P11", BOTH, AT(P, SBC_IJ(0, 0)), STRESS_UNIT, "first Piola-Kirchhoff stress P, eq. 23, from the frame's forces"),
+    VALUE("P12", BOTH, AT(P, SBC_IJ(0, 1)), STRESS_UNIT, "P, eq. 23"),
+    VALUE("P13", D3, AT(P, SBC_IJ(0, 2)), STRESS_UNIT, "P, eq. 23"),
+    VALUE("P21", BOTH, AT(P, SBC_IJ(1, 0)), STRESS_UNIT, "P, eq. 23"),
+    VALUE("P22", BOTH, AT(P, SBC_IJ(1, 1)), STRESS_UNIT, "P, eq. 23"),
+    VALUE("P23", D3, AT(P, SBC_IJ(1, 2)), STRESS_UNIT, "P, eq. 23"),
+    VALUE("P31", D3, AT(P, SBC_IJ(2, 0)), STRESS_UNIT, "P, eq. 23"),
+    VALUE("P32", D3, AT(P, SBC_IJ(2, 1)), STRESS_UNIT, "P, eq. 23"),
+    VALUE("P33", D3, AT(P, SBC_IJ(2, 2)), STRESS_UNIT, "P, eq. 23"),
+    VALUE("sigma11", BOTH, AT(sigma, SBC_IJ(0, 0)), STRESS_UNIT, "Cauchy stress, eq. 31"),
+    VALUE("sigma12", BOTH, AT(sigma, SBC_IJ(0, 1)), STRESS_UNIT, "Cauchy stress, eq. 31"),
+    VALUE("sigma13", D3, AT(sigma, SBC_IJ(0, 2)), STRESS_UNIT, "Cauchy stress, eq. 31"),
+    VALUE("sigma21", BOTH, AT(sigma, SBC_IJ(1, 0)), STRESS_UNIT, "Cauchy stress, eq. 31"),
+    VALUE("sigma22", BOTH, AT(sigma, SBC_IJ(1, 1)), STRESS_UNIT, "Cauchy stress, eq. 31"),
+    VALUE("sigma23", D3, AT(sigma, SBC_IJ(1, 2)), STRESS_UNIT, "Cauchy stress, eq. 31"),
+    VALUE("sigma31", D3, AT(sigma, SBC_IJ(2, 0)), STRESS_UNIT, "Cauchy stress, eq. 31"),
+    VALUE("sigma32", D3, AT(sigma, SBC_IJ(2, 1)), STRESS_UNIT, "Cauchy stress, eq. 31"),
+    VALUE("sigma33", D3, AT(sigma, SBC_IJ(2, 2)), STRESS_UNIT, "Cauchy stress, eq. 31"),
+    VALUE("overlap_mean", BOTH, AT(overlap_mean, 0), "-", "mean overlap over the mean radius of the contacts, eq. 39"),
+    VALUE("rotation_mean", BOTH, AT(rotation_mean, 0), "rad", "mean absolute rotation of the particles, eq. 41"),
     COUNT("iterations", iterations, 'i', "-", "servo iterations of the increment, 0 for D"),
     COUNT("relax_steps", relax_steps, 'l', "-", "host (DEM) steps of the increment"),
-    VALUE("r_force", AT(r_force, 0), "-", "final force residual norm of the servo, eq. 37 (relative with tol_relative)"),
-    VALUE("r_moment", AT(r_moment, 0), "-", "final moment residual norm, (P) and mixed"),
-    VALUE("r_deformation", AT(r_deformation, 0), "-", "final deformation residual norm, (T) and mixed"),
+    VALUE("r_force", BOTH, AT(r_force, 0), "-", "final force residual norm of the servo, eq. 37 (relative with tol_relative)"),
+    VALUE("r_moment", BOTH, AT(r_moment, 0), "-", "final moment residual norm, (P) and mixed"),
+    VALUE("r_deformation", BOTH, AT(r_deformation, 0), "-", "final deformation residual norm, (T) and mixed"),
     MEASURE("unbalanced", unbalanced, "-", "largest net force on an interior particle over the mean contact force"),
     MEASURE("frame_residual", frame_residual, "-", "the frame's force residual relative to its forces, 0 for D"),
     MEASURE("hill_mandel", hill_mandel, "-", "residual of eq. 30 relative to the work scale"),
 };
 
-void sbc_column_values(const sbc_result *r, double values[SBC_COLUMNS])
+static unsigned in_dim(int dim) { return dim == 2 || dim == 3 ? 1u << dim : 0u; }
+
+const sbc_column *sbc_column_of(int dim, int k)
+{
+    int j, seen = 0;
+    for (j = 0; j < SBC_COLUMNS; ++j)
+        if (sbc_columns[j].dimensions & in_dim(dim) && seen++ == k)
+            return &sbc_columns[j];
+    return NULL;
+}
+
+int sbc_column_values(const sbc_result *r, double *values)
 {
     const char *base = (const char *)r;
-    int k;
-    for (k = 0; k < SBC_COLUMNS; ++k) {
-        const sbc_column *c = &sbc_columns[k];
+    const unsigned bit = in_dim(r->dim);
+    int j, k = 0;
+    for (j = 0; j < SBC_COLUMNS; ++j) {
+        const sbc_column *c = &sbc_columns[j];
+        if (!(c->dimensions & bit))
+            continue;
         if (c->type == 'i') {
             int v;
             memcpy(&v, base + c->offset, sizeof v);
@@ -53,31 +85,47 @@ void sbc_column_values(const sbc_result *r, double values[SBC_COLUMNS])
         } else {
             memcpy(&values[k], base + c->offset, sizeof values[k]);
         }
+        ++k;
     }
+    return k;
 }
 
-int sbc_column_count(void) { return SBC_COLUMNS; }
-
-const char *sbc_column_name(int k) { return k >= 0 && k < SBC_COLUMNS ? sbc_columns[k].name : NULL; }
-
-int sbc_column_index(const char *name)
+int sbc_column_count(int dim)
 {
-    int k;
-    for (k = 0; name && k < SBC_COLUMNS; ++k)
-        if (strcmp(sbc_columns[k].name, name) == 0)
-            return k;
+    int j, n = 0;
+    for (j = 0; j < SBC_COLUMNS; ++j)
+        n += (sbc_columns[j].dimensions & in_dim(dim)) != 0;
+    return n;
+}
+
+const char *sbc_column_name(int dim, int k)
+{
+    const sbc_column *c = sbc_column_of(dim, k);
+    return c ? c->name : NULL;
+}
+
+int sbc_column_index(int dim, const char *name)
+{
+    int j, k = 0;
+    for (j = 0; name && j < SBC_COLUMNS; ++j)
+        if (sbc_columns[j].dimensions & in_dim(dim)) {
+            if (strcmp(sbc_columns[j].name, name) == 0)
+                return k;
+            ++k;
+        }
     return -1;
 }
 
-int sbc_columns_header(char *out, size_t cap)
+int sbc_columns_header(int dim, char *out, size_t cap)
 {
     size_t used = 0;
     int k;
-    for (k = 0; k < SBC_COLUMNS; ++k) {
+    const sbc_column *c;
+    for (k = 0; (c = sbc_column_of(dim, k)) != NULL; ++k) {
         const char *sep = k ? "," : "";
         if (used < cap)
-            snprintf(out + used, cap - used, "%s%s", sep, sbc_columns[k].name);
-        used += strlen(sep) + strlen(sbc_columns[k].name);
+            snprintf(out + used, cap - used, "%s%s", sep, c->name);
+        used += strlen(sep) + strlen(c->name);
     }
     return (int)used;
 }
@@ -101,8 +149,9 @@ double sbc_thermo_value(const sbc_controller *c, const sbc_result *last, int fin
         return 0.0;
     t = &sbc_thermo_vector[k];
     if (t->kind == SBC_THERMO_COLUMN) {
+        const int at = sbc_column_index(last->dim, t->column);
         sbc_column_values(last, values);
-        return values[sbc_column_index(t->column)];
+        return at >= 0 ? values[at] : 0.0;
     }
     if (t->kind == SBC_THERMO_FINISHED)
         return finished;

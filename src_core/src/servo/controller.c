@@ -161,6 +161,7 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
                  (int)settings->update);
         return NULL;
     }
+    c->result.dim = frame->dim;
     c->dt = dt;
     c->kn = kn;
     c->total = sbc_settings_total_increments(settings);
@@ -324,6 +325,7 @@ static sbc_status measure(sbc_controller *c, const sbc_snapshot *snap, sbc_error
     sbc_result *r = &c->result;
     sbc_error why;
     double scale;
+    r->dim = f->dim;
     r->increment = c->increment;
     sbc_homogenize_F(f, snap->x, r->F);
     sbc_homogenize_P(f, c->a, r->P);
