@@ -336,15 +336,16 @@ static void springs_frame(void *u, double *buf)
     buf[8 * h->Q + 1] = h->n;
 }
 
-/* (D) on a prestressed N^3 lattice (R > d/2) under F = diag(a, b, c) at
- * `tight`: every chain along axis i carries kn (2R - d F_ii), so
- * P_ii = -N^2 kn (2R - d F_ii) / ((N - 1)^2 d^2), off the diagonal 0 */
-static void lattice_D(int N)
+/* (D) on a prestressed N^3 spring lattice (d 2 mm, R 1.02 mm, kn 1e4 N/m)
+ * under F (3 x 3 slots) in `increments` increments at preset accuracy,
+ * through the host driver: the converged rows into rows [8]; returns their
+ * count (-1 when the run failed, with the message printed) and the steps */
+static int run_D(int N, const double F[9], int increments, const char *accuracy, sbc_result rows[8], long *steps)
 {
-    static const char *words[] = {"D", "F", "0.999", "0", "0", "0", "0.998", "0", "0", "0", "0.997",
-                                  "increments", "2", "accuracy", "tight"};
     const double d = 2e-3, R = 1.02e-3, kn = 1e4;
     const int n = N * N * N;
+    char values[9][32], count[16];
+    const char *words[15];
     springs h;
     sbc_frame f;
     sbc_settings s;
@@ -354,9 +355,14 @@ static void lattice_D(int N)
     sbc_driver_callbacks cb = {0};
     double *r = malloc(sizeof(double) * (size_t)n), *mass;
     sbc_event ev = SBC_EVENT_RELAXING;
-    long steps = 0;
-    int i, j, q, rows = 0;
-    double worst = 0.0, hm = 0.0, Pmax = 0.0;
+    int i, j, q, nrows = 0;
+    words[0] = "D", words[1] = "F";
+    for (i = 0; i < 9; ++i) {
+        snprintf(values[i], sizeof values[i], "%.17g", F[i]);
+        words[2 + i] = values[i];
+    }
+    snprintf(count, sizeof count, "%d", increments);
+    words[11] = "increments", words[12] = count, words[13] = "accuracy", words[14] = accuracy;
     memset(&h, 0, sizeof h);
     h.n = n, h.R = R, h.kn = kn, h.m = 1e-3, h.dt = 1e-5, h.alpha = 0.7;
     h.x = malloc(sizeof(double) * 3 * (size_t)n);
@@ -385,47 +391,97 @@ static void lattice_D(int N)
     }
     c = sbc_controller_create(&f, &s, mass, h.dt, kn, &err);
     CHECK(c != NULL);
-    if (!c) {
-        printf("  %s\n", err.message);
-        return;
-    }
     cb.user_data = &h, cb.fire_sums = springs_fire_sums, cb.interior = springs_interior;
     cb.contacts = springs_contacts, cb.frame = springs_frame;
-    drv = sbc_driver_create(c, &s, &cb, &err);
-    while (ev != SBC_EVENT_FINISHED && ev != SBC_EVENT_FAILED && steps < 2000000) {
+    drv = c ? sbc_driver_create(c, &s, &cb, &err) : NULL;
+    for (*steps = 0; drv && ev != SBC_EVENT_FINISHED && ev != SBC_EVENT_FAILED && *steps < 2000000; ++*steps) {
         sbc_commands cmd;
         springs_forces(&h);
         ev = sbc_driver_step(drv, 0, &err);
         cmd = sbc_controller_commands(c);
         for (q = 0; q < f.n; ++q)
             memcpy(&h.x[3 * f.particle[q]], &cmd.x[3 * q], sizeof(double) * 3);
-        ++steps;
-        if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
-            const sbc_result *row = sbc_controller_result(c);
-            ++rows;
-            for (i = 0; i < 3; ++i)
-                for (j = 0; j < 3; ++j) {
-                    const double Fii = row->F[SBC_IJ(i, i)];
-                    const double expect = i == j ? -N * N * kn * (2.0 * R - d * Fii) / ((N - 1.0) * (N - 1.0) * d * d) : 0.0;
-                    worst = fmax(worst, fabs(row->P[SBC_IJ(i, j)] - expect));
-                    Pmax = fmax(Pmax, fabs(expect));
-                }
-            hm = fmax(hm, fabs(row->hill_mandel));
-        }
+        if ((ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) && nrows < 8)
+            rows[nrows++] = *sbc_controller_result(c);
     }
-    if (ev == SBC_EVENT_FAILED)
+    if (ev != SBC_EVENT_FINISHED) {
         printf("  %s\n", err.message);
-    CHECK(ev == SBC_EVENT_FINISHED && rows == 3);
-    CHECK(worst <= 1e-6 * Pmax && hm <= 1e-6);
-    printf("  frame3d: (D) on a prestressed %d^3 lattice, F = diag(0.999, 0.998, 0.997), tight: %d rows in %ld steps, "
-           "max |P - closed form| = %.1e of max |P| (%.4g N/m^2), |Hill-Mandel| %.1e\n",
-           N, rows, steps, worst / Pmax, Pmax, hm);
+        nrows = -1;
+    }
     sbc_driver_free(drv);
     sbc_controller_free(c);
     sbc_frame_free(&f);
     free(mass);
     free(r);
     free(h.x), free(h.v), free(h.f), free(h.frame), free(h.pair);
+    return nrows;
+}
+
+/* (D) under F = diag(0.999, 0.998, 0.997) at `tight`: every chain along axis
+ * i carries kn (2R - d F_ii), so P_ii = -N^2 kn (2R - d F_ii) / ((N - 1)^2
+ * d^2), off the diagonal 0 */
+static void lattice_D(int N)
+{
+    const double d = 2e-3, R = 1.02e-3, kn = 1e4, F[9] = {0.999, 0, 0, 0, 0.998, 0, 0, 0, 0.997};
+    sbc_result rows[8];
+    long steps;
+    const int nrows = run_D(N, F, 2, "tight", rows, &steps);
+    double worst = 0.0, hm = 0.0, Pmax = 0.0;
+    int k, i, j;
+    CHECK(nrows == 3);
+    for (k = 0; k < nrows; ++k) {
+        for (i = 0; i < 3; ++i)
+            for (j = 0; j < 3; ++j) {
+                const double Fii = rows[k].F[SBC_IJ(i, i)];
+                const double expect = i == j ? -N * N * kn * (2.0 * R - d * Fii) / ((N - 1.0) * (N - 1.0) * d * d) : 0.0;
+                worst = fmax(worst, fabs(rows[k].P[SBC_IJ(i, j)] - expect));
+                Pmax = fmax(Pmax, fabs(expect));
+            }
+        hm = fmax(hm, fabs(rows[k].hill_mandel));
+    }
+    CHECK(worst <= 1e-6 * Pmax && hm <= 1e-6);
+    printf("  frame3d: (D) on a prestressed %d^3 lattice, F = diag(0.999, 0.998, 0.997), tight: %d rows in %ld steps, "
+           "max |P - closed form| = %.1e of max |P| (%.4g N/m^2), |Hill-Mandel| %.1e\n",
+           N, nrows, steps, worst / Pmax, Pmax, hm);
+}
+
+/* objectivity: (D) under F = Q diag(0.999, 0.998, 0.997), Q a rotation (20
+ * degrees about z after 10 about x), at the default preset gives Q P(diag)
+ * to 1e-4 of max |P| */
+static void objectivity(int N)
+{
+    const double D[9] = {0.999, 0, 0, 0, 0.998, 0, 0, 0, 0.997}, a = 20.0 * 3.14159265358979323846 / 180.0, b = 10.0 * 3.14159265358979323846 / 180.0;
+    const double Rz[9] = {cos(a), -sin(a), 0, sin(a), cos(a), 0, 0, 0, 1}, Rx[9] = {1, 0, 0, 0, cos(b), -sin(b), 0, sin(b), cos(b)};
+    double Qr[9], F[9], QP[9], worst = 0.0, Pmax = 0.0;
+    sbc_result diag[8], turned[8];
+    long s1, s2;
+    int i, j, k, n1, n2;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) {
+            Qr[3 * i + j] = 0.0;
+            for (k = 0; k < 3; ++k)
+                Qr[3 * i + j] += Rz[3 * i + k] * Rx[3 * k + j];
+        }
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j)
+            F[3 * i + j] = Qr[3 * i + j] * D[3 * j + j];
+    n1 = run_D(N, D, 1, "balanced", diag, &s1);
+    n2 = run_D(N, F, 4, "balanced", turned, &s2);
+    CHECK(n1 == 2 && n2 == 5);
+    if (n1 != 2 || n2 != 5)
+        return;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) {
+            QP[3 * i + j] = 0.0;
+            for (k = 0; k < 3; ++k)
+                QP[3 * i + j] += Qr[3 * i + k] * diag[1].P[3 * k + j];
+            Pmax = fmax(Pmax, fabs(diag[1].P[3 * i + j]));
+        }
+    for (k = 0; k < 9; ++k)
+        worst = fmax(worst, fabs(turned[4].P[k] - QP[k]));
+    CHECK(worst <= 1e-4 * Pmax);
+    printf("  frame3d: objectivity, (D) under Q diag(0.999, 0.998, 0.997) (Q: 20 deg about z after 10 about x), "
+           "balanced: max |P - Q P(diag)| = %.1e of max |P| (%ld and %ld steps)\n", worst / Pmax, s1, s2);
 }
 
 /* the results file's columns in 3D (columns.h): nine components of F, P
@@ -459,6 +515,7 @@ void test_frame_3d(void)
 {
     columns();
     lattice_D(4);
+    objectivity(4);
     words();
     saved();
     lattice(3, 3, 3);
