@@ -59,7 +59,12 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   if (std::strcmp(update->unit_style, "si") != 0)
     fail(std::string("requires units si (its outputs are in m, N/m and s; this script has units ") +
          update->unit_style + ")");
-  if (domain->dimension != 2) fail("this version imposes 2d boundary conditions; the box is 3d (use dimension 2)");
+  dim = domain->dimension;
+  if (dim == 3 && settings.bc != SBC_BC_D)
+    fail(std::string("this version imposes (D) alone in a 3d box (") + sbc_bc_name(settings.bc) +
+         " is 2d: use dimension 2)");
+  if (dim == 3 && (settings.seal || settings.frame_group[0]))
+    fail(std::string("keyword '") + (settings.seal ? "seal" : "frame") + "' is 2d in this version; the box is 3d");
   {
     char note[SBC_ERROR_LEN];
     if (comm->me == 0 && sbc_settings_ignored_message(&settings, note, sizeof note))
@@ -132,7 +137,7 @@ void FixServoBC::detect_frame()
   std::vector<double> mine;
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit)
-      mine.insert(mine.end(), {(double) atom->tag[i], atom->x[i][0], atom->x[i][1], atom->radius[i],
+      mine.insert(mine.end(), {(double) atom->tag[i], atom->x[i][0], atom->x[i][1], atom->x[i][2], atom->radius[i],
                                atom->rmass[i], (mask[i] & frame_group_bit) ? 1.0 : 0.0});
   int nmine = (int) mine.size(), nprocs = comm->nprocs;
   std::vector<int> counts(nprocs), displs(nprocs, 0);
@@ -141,24 +146,25 @@ void FixServoBC::detect_frame()
   int ntot = displs[nprocs - 1] + counts[nprocs - 1];
   std::vector<double> all(ntot);
   MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
-  int n = ntot / 6;
+  const int per = 7;    // tag, x, y, z, radius, mass, listed
+  int n = ntot / per;
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return all[6 * a] < all[6 * b]; });
-  std::vector<double> xy(2 * n), r(n), m(n);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return all[per * a] < all[per * b]; });
+  std::vector<double> x(dim * n), r(n), m(n);
   std::vector<int> listed;
   for (int k = 0; k < n; k++) {
-    const double *a = &all[6 * order[k]];
-    xy[2 * k] = a[1];
-    xy[2 * k + 1] = a[2];
-    r[k] = a[3];
-    m[k] = a[4];
-    if (a[5] != 0.0) listed.push_back(k);
+    const double *a = &all[per * order[k]];
+    for (int c = 0; c < dim; c++) x[dim * k + c] = a[1 + c];
+    r[k] = a[4];
+    m[k] = a[5];
+    if (a[6] != 0.0) listed.push_back(k);
   }
   sbc_error err;
-  sbc_status st = settings.frame_group[0]
-      ? sbc_frame_from_list(&frame, (int) listed.size(), listed.data(), xy.data(), r.data(), &err)
-      : sbc_frame_detect(&frame, n, xy.data(), r.data(), 0.0, &err);
+  sbc_status st = dim == 3 ? sbc_frame_detect_3d(&frame, n, x.data(), r.data(), 0.0, &err)
+      : settings.frame_group[0]
+      ? sbc_frame_from_list(&frame, (int) listed.size(), listed.data(), x.data(), r.data(), &err)
+      : sbc_frame_detect(&frame, n, x.data(), r.data(), 0.0, &err);
   if (st != SBC_OK) fail(err.message);
 
   const int Q = frame.n;
@@ -166,7 +172,7 @@ void FixServoBC::detect_frame()
   frame_mass.resize(Q);
   std::unordered_map<tagint, int> is_frame;
   for (int q = 0; q < Q; q++) {
-    frame_tag[q] = (tagint) all[6 * order[frame.particle[q]]];
+    frame_tag[q] = (tagint) all[per * order[frame.particle[q]]];
     frame_mass[q] = m[frame.particle[q]];
     is_frame[frame_tag[q]] = q;
   }
@@ -363,11 +369,11 @@ void FixServoBC::initial_integrate(int)
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & frame_bit)) continue;
     int q = slot[atom->tag[i]];
-    v[i][0] = (cmd.x[3 * q] - x[i][0]) / dt;
-    v[i][1] = (cmd.x[3 * q + 1] - x[i][1]) / dt;
-    v[i][2] = 0.0;
-    x[i][0] = cmd.x[3 * q];
-    x[i][1] = cmd.x[3 * q + 1];
+    for (int c = 0; c < 3; c++) {    // 2d: the third slot is 0
+      v[i][c] = c < dim ? (cmd.x[3 * q + c] - x[i][c]) / dt : 0.0;
+      if (c < dim) x[i][c] = cmd.x[3 * q + c];
+    }
+    if (dim == 3) omega[i][0] = omega[i][1] = 0.0;    // (D): the frame's orientation is held
     if (cmd.free_rotation[q]) {    // (T): free rotation with the damping of eq. 10
       const double w = omega[i][2], m = settings.damping ? sbc_damp_local(torque[i][2], w, settings.beta) : torque[i][2];
       omega[i][2] = w + dt * m / (servo_bc_host::inertia * atom->rmass[i] * atom->radius[i] * atom->radius[i]);
@@ -437,7 +443,8 @@ void FixServoBC::fire_pass(double *local)
   for (int k = 0; k < SBC_FIRE_SUMS; k++) local[k] = 0.0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & interior_bit)) continue;
-    sbc_fire_add(local, 2, atom->f[i], atom->v[i], &atom->torque[i][2], &atom->omega[i][2]);
+    const int z = dim == 3 ? 0 : 2;    // the rotations' first component (2d: z alone)
+    sbc_fire_add(local, dim, atom->f[i], atom->v[i], &atom->torque[i][z], &atom->omega[i][z]);
   }
 }
 
@@ -456,36 +463,37 @@ void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2
   const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
   const bool local = settings.damping == SBC_DAMPING_LOCAL;
   const double alpha = local ? settings.alpha : 0.0, beta = local ? settings.beta : 0.0;
-  const double inertia = servo_bc_host::inertia, turn = again ? 0.0 : dt;
+  // I = inertia m r^2: the integrator's disc (2d) or sphere (3d, 2/5)
+  const double inertia = dim == 3 ? 0.4 : servo_bc_host::inertia, turn = again ? 0.0 : dt;
+  const int z = dim == 3 ? 0 : 2, nrot = SBC_ROTATIONS(dim);    // the rotations: z alone in 2d
   double ek = 0.0, net = 0.0;
   out[0] = out[1] = 0.0;
   if (nlocal == 0) return;    // the per-atom arrays may not exist yet
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & interior_bit)) continue;
-    double *fi = &f[3 * i], *ti = &torque[3 * i];
+    double *fi = &f[3 * i], *ti = &torque[3 * i + z], *vi = &v[3 * i], *wi = &omega[3 * i + z];
     const double m = rmass[i], I = inertia * m * radius[i] * radius[i], inv = dt / (m * I);
+    double v0[3], w0[3], vk[3], wk[3], f2 = 0.0;
+    int loaded = 0;
     if (mix) {
       const double push = sbc_fire_factor(mix->push, mix, dt / m), spin = sbc_fire_factor(mix->spin, mix, dt / I);
-      v[3 * i] = sbc_fire_velocity(mix, push, v[3 * i], fi[0]);
-      v[3 * i + 1] = sbc_fire_velocity(mix, push, v[3 * i + 1], fi[1]);
-      omega[3 * i + 2] = sbc_fire_velocity(mix, spin, omega[3 * i + 2], ti[2]);
+      for (int c = 0; c < dim; c++) vi[c] = sbc_fire_velocity(mix, push, vi[c], fi[c]);
+      for (int c = 0; c < nrot; c++) wi[c] = sbc_fire_velocity(mix, spin, wi[c], ti[c]);
     }
-    const double vx0 = v[3 * i], vy0 = v[3 * i + 1], w0 = omega[3 * i + 2];
-    net = std::max(net, fi[0] * fi[0] + fi[1] * fi[1]);
+    for (int c = 0; c < dim; c++) v0[c] = vi[c], f2 += fi[c] * fi[c];
+    for (int c = 0; c < nrot; c++) w0[c] = wi[c];
+    net = std::max(net, f2);
     // eq. 10, with the half-step velocities (no damping at v = 0)
-    fi[0] = sbc_damp_local(fi[0], vx0, alpha);
-    fi[1] = sbc_damp_local(fi[1], vy0, alpha);
-    ti[2] = sbc_damp_local(ti[2], w0, beta);
+    for (int c = 0; c < dim; c++) fi[c] = sbc_damp_local(fi[c], v0[c], alpha);
+    for (int c = 0; c < nrot; c++) ti[c] = sbc_damp_local(ti[c], w0[c], beta);
     // Ek and the rotation with the velocities after this step's kick
     // (v^(n+1/2) = v^(n-1/2) + dt f/m), as the embedded engine measures them;
     // one division: 1/m = I/(m I), 1/I = m/(m I)
-    const double vx = vx0 + fi[0] * I * inv, vy = vy0 + fi[1] * I * inv, w = w0 + ti[2] * m * inv;
-    per_atom[i][1] += turn * w;
+    for (int c = 0; c < dim; c++) vk[c] = v0[c] + fi[c] * I * inv, loaded |= fi[c] != 0.0;
+    for (int c = 0; c < nrot; c++) wk[c] = w0[c] + ti[c] * m * inv, loaded |= ti[c] != 0.0;
+    per_atom[i][1] += turn * wk[nrot - 1];    // the rotation about z
     // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
-    if (fi[0] != 0.0 || fi[1] != 0.0 || ti[2] != 0.0) {
-      const double vk[2] = {vx, vy};
-      ek += sbc_kinetic_energy(2, m, I, vk, &w);
-    }
+    if (loaded) ek += sbc_kinetic_energy(dim, m, I, vk, wk);
   }
   out[0] = ek;
   out[1] = std::sqrt(net);
@@ -523,6 +531,7 @@ void FixServoBC::contact_pass(double out[4])
       if (j >= nlocal && !newton && tag[j] < tag[i]) continue;
       double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], rs = radius[i] + radius[j];
       double d2 = dx * dx + dy * dy;
+      if (dim == 3) d2 += (x[j][2] - x[i][2]) * (x[j][2] - x[i][2]);
       if (d2 >= rs * rs) continue;
       double dn = rs - std::sqrt(d2);
       double s2 = 0.0;
@@ -554,10 +563,10 @@ void FixServoBC::frame_pass(double *buf)
     if (!(mask[i] & groupbit)) continue;
     if (mask[i] & frame_bit) {
       int q = slot[atom->tag[i]];
-      buf[3 * q] = x[i][0];
-      buf[3 * q + 1] = x[i][1];
-      buf[3 * Q + 3 * q] = f[i][0];
-      buf[3 * Q + 3 * q + 1] = f[i][1];
+      for (int c = 0; c < dim; c++) {
+        buf[3 * q + c] = x[i][c];
+        buf[3 * Q + 3 * q + c] = f[i][c];
+      }
       buf[6 * Q + q] = torque[i][2];
       buf[7 * Q + q] = per_atom[i][1];
     }

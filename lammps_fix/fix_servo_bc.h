@@ -78,6 +78,7 @@ class FixServoBC : public Fix {
   std::unordered_map<tagint, int> slot;  // atom ID -> frame position, built with the frame
   double **per_atom;               // per atom: frame flag (1 frame, 0 other), accumulated rotation (rad)
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
+  int dim = 2;                       // the box's dimension (domain->dimension)
   servo_bc_host::ContactLaw law;   // kn, kt, shear history of the pair style
   FixServoBCBonds *contacts;       // fix servo_bc/bonds cohesive, which owns the contacts instead (or null)
   sbc_csv csv;

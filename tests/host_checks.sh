@@ -19,6 +19,33 @@ run_deck() {
   fi
 }
 
+# cubic_form NP: the 3d deck $DECK (the prestressed 4 x 4 x 4 simple cubic
+# lattice, d = 2 mm, R = 1.02 mm, kn 1e4 N/m, frictionless, (D) under F =
+# diag(0.999, 0.998, 0.997) at accuracy tight) on NP ranks against the closed
+# form of docs/frame3d.md: P_ii = -N^2 kn (2R - d F_ii) / ((N - 1)^2 d^2),
+# P_ij = 0 (i != j); every row within 1e-6 of max |P|, |hill_mandel| <= 1e-6
+cubic_form() {
+  local out
+  run_deck "$1" "$DECK" "$TMP/cubic$1.csv" "$TMP/cubic$1.log"
+  out=$(awk -F, "$COLUMNS_AWK"'NR > 1 {
+      n++
+      for (i = 1; i <= 3; i++) for (j = 1; j <= 3; j++) {
+        e = i == j ? -16 * 1e4 * (2.04e-3 - 2e-3 * $col("F" i i)) / (9 * 4e-6) : 0
+        p = e < 0 ? -e : e; if (p > pmax) pmax = p
+        d = $col("P" i j) - e; if (d < 0) d = -d; if (d > worst) worst = d
+      }
+      h = $col("hill_mandel"); if (h < 0) h = -h; if (h > hm) hm = h
+    }
+    END { printf "%d %.3g %.3g %.6g", n, worst / pmax, hm, pmax }' "$TMP/cubic$1.csv" 2>/dev/null)
+  set -- "$1" $out
+  if [ "${2:-0}" = 3 ] && awk -v w="$3" -v h="$4" 'BEGIN { exit !(w <= 1e-6 && h <= 1e-6) }'; then
+    ok "3d (D), 4^3 prestressed lattice, $1 rank(s): 3 rows, max |P - closed form| = $3 of max |P| ($5 N/m^2), |hill_mandel| <= $4"
+  else
+    no "3d (D) on $1 rank(s): rows ${2:-0} of 3, max |P - closed form| ${3:-?} of max |P| (limit 1e-6), hill_mandel ${4:-?}"
+    grep -m2 "ERROR\|servo_bc:" "$TMP/cubic$1.log"
+  fi
+}
+
 # deck_with SED-EXPRESSION OUT: the lattice deck edited
 deck_with() { sed "$1" "$DECK" > "$2"; }
 

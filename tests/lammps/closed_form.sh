@@ -33,8 +33,8 @@ frictional_checks 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_
 outputs_checks
 refuses "a 2D F in a 3d box" 's/^dimension       2/dimension 3/; s/lattice         sq/lattice sc/; /enforce2d/d; s/nve\/sphere disc/nve\/sphere/' \
   "keyword 'F': 4 values give a 2D F, but the packing is 3D (expected 9 values"
-refuses "a 3d box (F with nine values)" 's/^dimension       2/dimension 3/; s/lattice         sq/lattice sc/; /enforce2d/d; s/nve\/sphere disc/nve\/sphere/; s/servo_bc D F 1.002 0 0 0.997/servo_bc D F 1.002 0 0 0 0.997 0 0 0 1/' \
-  "the box is 3d"
+refuses "a 3d box of one layer (F with nine values)" 's/^dimension       2/dimension 3/; s/lattice         sq/lattice sc/; /enforce2d/d; s/nve\/sphere disc/nve\/sphere/; s/servo_bc D F 1.002 0 0 0.997/servo_bc D F 1.002 0 0 0 0.997 0 0 0 1/' \
+  "frame: the packing is too thin (0.008 x 0.008 x 0 m) to have six faces"
 cat > "$TMP/restart_head.in" <<LMP
 comm_modify     vel yes
 neighbor        0.000255 bin
