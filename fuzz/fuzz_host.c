@@ -95,7 +95,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         ++n;
     }
     msg[0] = '\0';
-    h = sbc_host_create(text, n, xy, r, m, 0, NULL, 1e-6, 1e4, msg, sizeof msg);
+    h = sbc_host_create(text, 2, n, xy, r, m, 0, NULL, 1e-6, 1e4, msg, sizeof msg);
     if (h) {
         drive(h, n);
         sbc_host_free(h);

@@ -47,9 +47,9 @@ n = 25
 r = core.doubles([1.02e-3] * n)
 m = core.doubles([2e3 * 3.141592653589793 * 1.02e-3 ** 2] * n)
 msg = ctypes.create_string_buffer(512)
-h = lib.sbc_host_create(b'Q F 1 0 0 1', n, core.doubles(xy), r, m, 0, None, 1e-5, 1e4, msg, 512)
+h = lib.sbc_host_create(b'Q F 1 0 0 1', 2, n, core.doubles(xy), r, m, 0, None, 1e-5, 1e4, msg, 512)
 check(not h and b"'Q'" in msg.value, 'bad words refused with the core\'s message: %s' % msg.value.decode())
-h = lib.sbc_host_create(b'P F 1 0.01 0 1 increments 2', n, core.doubles(xy), r, m, 0, None, 1e-5, 1e4, msg, 512)
+h = lib.sbc_host_create(b'P F 1 0.01 0 1 increments 2', 2, n, core.doubles(xy), r, m, 0, None, 1e-5, 1e4, msg, 512)
 check(bool(h) and lib.sbc_host_frame_size(h) == 16, 'a host handle on the 5 x 5 lattice: a frame of %d discs'
       % (lib.sbc_host_frame_size(h) if h else -1))
 if h:

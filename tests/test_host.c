@@ -118,7 +118,7 @@ static int lazy_rows(double rows[][CSV_COLS], const char *csv, double *measured,
     for (k = 0; k < p.n; ++k)
         mass[k] = 2e3 * 3.14159265358979323846 * p.r[k] * p.r[k];
     snprintf(words, sizeof words, WORDS " file %s", csv);
-    h = sbc_host_create(words, p.n, p.x, p.r, mass, 0, NULL, 1e-5, 1e4, msg, sizeof msg);
+    h = sbc_host_create(words, 2, p.n, p.x, p.r, mass, 0, NULL, 1e-5, 1e4, msg, sizeof msg);
     CHECK(h != NULL);
     def.n = p.n;
     def.x = p.x;
@@ -239,7 +239,7 @@ static void refused_on(const char *words, int nlist, const int *list, int field,
         p.r[7] = value;
     else if (field == 2)
         mass[7] = value;
-    h = sbc_host_create(words, p.n, p.x, p.r, mass, nlist, list, dt, 1e4, msg, sizeof msg);
+    h = sbc_host_create(words, 2, p.n, p.x, p.r, mass, nlist, list, dt, 1e4, msg, sizeof msg);
     CHECK(h == NULL && strstr(msg, expect) != NULL);
     if (h || !strstr(msg, expect))
         printf("  '%s', field %d = %g, dt %g: got '%s'\n", words, field, value, dt, msg);
@@ -307,7 +307,7 @@ static void warnings(void)
         mass[k] = 2e3 * 3.14159265358979323846 * 1.02e-3 * 1.02e-3;
     for (i = 0; i < (int)(sizeof cases / sizeof cases[0]); ++i) {
         char msg[1024] = "";
-        sbc_host *h = sbc_host_create(cases[i].words, p.n, p.x, p.r, mass, 0, NULL, cases[i].dt, 1e4, msg, sizeof msg);
+        sbc_host *h = sbc_host_create(cases[i].words, 2, p.n, p.x, p.r, mass, 0, NULL, cases[i].dt, 1e4, msg, sizeof msg);
         int warned;
         CHECK(h != NULL);
         if (!h)

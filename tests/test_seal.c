@@ -338,7 +338,7 @@ static void host_handle(void)
             ++n;
         }
     for (sealed = 0; sealed < 2; ++sealed) {
-        sbc_host *h = sbc_host_create(sealed ? "D F 1 0 0 0.99 seal yes" : "D F 1 0 0 0.99", n, xy, rad, mass, 0, list,
+        sbc_host *h = sbc_host_create(sealed ? "D F 1 0 0 0.99 seal yes" : "D F 1 0 0 0.99", 2, n, xy, rad, mass, 0, list,
                                       1e-5, kn, msg, sizeof msg);
         CHECK(h != NULL);
         if (!h)

@@ -264,18 +264,20 @@ class ServoBC(object):
         self.kn = float(kn)
         self._started = self._reported = time.time()
         n = len(self.bodies)
-        xy, r, m = [], [], []
+        x, r, m = [], [], []
         _check_bodies(self.bodies, 'servo_bc')
+        # discs (load_packing: blockedDOFs 'zXY') are 2D; free spheres 3D
+        self.dim = 2 if all('z' in O.bodies[i].state.blockedDOFs for i in self.bodies) else 3
         for i in self.bodies:
             b = O.bodies[i]
-            xy += [b.state.pos[0], b.state.pos[1]]
+            x += [b.state.pos[k] for k in range(self.dim)]
             r.append(b.shape.radius)
             m.append(b.state.mass)
         frame_list = self._frame_list(words)
         msg = ctypes.create_string_buffer(512)
         lst = (ctypes.c_int * max(1, len(frame_list)))(*frame_list)
-        self._h = lib.sbc_host_create(words.encode(), n, _doubles(xy), _doubles(r), _doubles(m), len(frame_list),
-                                      lst, self.dt, self.kn, msg, 512)
+        self._h = lib.sbc_host_create(words.encode(), self.dim, n, _doubles(x), _doubles(r), _doubles(m),
+                                      len(frame_list), lst, self.dt, self.kn, msg, 512)
         if not self._h:
             text = msg.value.decode()
             raise ServoBCError(text if text.startswith('servo_bc') else 'servo_bc: ' + text)
@@ -302,7 +304,7 @@ class ServoBC(object):
         self._law_functor = None
         self._states = [O.bodies[i].state for i in self.frame]
         self._moving = False
-        self._columns = _columns()
+        self._columns = _columns(self.dim)
         self._fc_mean = 0.0       # the last measured mean |contact force|, N
         # keyword seal (seal.h): the walls' forces, computed by the core each step
         self._seal = lib.sbc_host_sealed(self._h) == 1
@@ -310,8 +312,8 @@ class ServoBC(object):
         self._seal_xy = (ctypes.c_double * (2 * n))()
         self._seal_f = (ctypes.c_double * (2 * n))()
         self._seal_energy = ctypes.c_double(0.0)
-        print('servo_bc %s: %s on %d bodies, frame of %d, kn %g N/m' % (version(), words.split()[0], n, self.Q,
-                                                                          self.kn), flush=True)
+        print('servo_bc %s: %s on %d bodies (%dD), frame of %d, kn %g N/m' % (version(), words.split()[0], n, self.dim,
+                                                                                self.Q, self.kn), flush=True)
         warning = ctypes.create_string_buffer(2048)
         if lib.sbc_host_warning(self._h, warning, 2048):
             for line in warning.value.decode().splitlines():
@@ -360,7 +362,8 @@ class ServoBC(object):
         return [k for k, i in enumerate(self.bodies) if O.bodies[i].groupMask & mask]
 
     def __del__(self):
-        _free('sbc_host_free', getattr(self, '_h', None))
+        if _free is not None:    # None once the interpreter tears the module down
+            _free('sbc_host_free', getattr(self, '_h', None))
         self._h = None
 
     # -- one step -----------------------------------------------------------
@@ -383,7 +386,10 @@ class ServoBC(object):
         for i in self._rattlers:
             if self._contact_free(i):
                 s = O.bodies[i].state
-                ek -= 0.5 * (s.mass * s.vel.squaredNorm() + s.inertia[2] * s.angVel[2] ** 2)
+                if self.dim == 3:
+                    ek -= 0.5 * (s.mass * s.vel.squaredNorm() + sum(s.inertia[k] * s.angVel[k] ** 2 for k in range(3)))
+                else:
+                    ek -= 0.5 * (s.mass * s.vel.squaredNorm() + s.inertia[2] * s.angVel[2] ** 2)
         return max(ek, 0.0)
 
     def _law(self):
@@ -400,11 +406,11 @@ class ServoBC(object):
     @staticmethod
     def _moves(i):
         s = O.bodies[i].state
-        return s.vel.squaredNorm() > 0.0 or s.angVel[2] != 0.0
+        return s.vel.squaredNorm() > 0.0 or s.angVel.squaredNorm() != 0.0
 
     @staticmethod
     def _contact_free(i):
-        return O.forces.f(i).squaredNorm() == 0.0 and O.forces.t(i)[2] == 0.0
+        return O.forces.f(i).squaredNorm() == 0.0 and O.forces.t(i).squaredNorm() == 0.0
 
     def _potential_energy(self):
         """Ep (eq. 12): sum over contacts of Fn^2/2kn + Fs^2/2ks. The law's own sum (C++)
@@ -447,6 +453,8 @@ class ServoBC(object):
             u = utils.unbalancedForce(True)
             if math.isfinite(u):
                 return u * fc_mean
+        if self.dim == 3:
+            return math.sqrt(max([v.squaredNorm() for v in map(O.forces.f, self.interior)] or [0.0]))
         return math.sqrt(max([v[0] * v[0] + v[1] * v[1] for v in map(O.forces.f, self.interior)] or [0.0]))
 
     def step(self):
@@ -472,6 +480,15 @@ class ServoBC(object):
             self._interior_mass = [(st.mass, st.inertia[2]) for st in self._interior_states]
         states = self._interior_states
         fs = list(map(forces.f, self.interior))
+        if self.dim == 3:
+            ts, vs, ws = list(map(forces.t, self.interior)), [st.vel for st in states], [st.angVel for st in states]
+            sums[0] = sum(f.dot(v) + t.dot(w) for f, t, v, w in zip(fs, ts, vs, ws))
+            sums[1] = sum(v.squaredNorm() for v in vs)
+            sums[2] = sum(f.squaredNorm() for f in fs)
+            sums[3] = sum(w.squaredNorm() for w in ws)
+            sums[4] = sum(t.squaredNorm() for t in ts)
+            self._fire_seen = (fs, ts, vs, ws)
+            return
         ts = [t[2] for t in map(forces.t, self.interior)]
         vs = [st.vel for st in states]
         ws = [st.angVel[2] for st in states]
@@ -493,6 +510,10 @@ class ServoBC(object):
         half = 0.5 * self.dt * stop
         for st, (mass, inertia), f, t, v, w in zip(self._interior_states, self._interior_mass, fs, ts, vs, ws):
             q = push - half / mass
+            if self.dim == 3:
+                st.vel = v * keep + f * q
+                st.angVel = w * keep + t * (spin - half / inertia)
+                continue
             st.vel = (keep * v[0] + q * f[0], keep * v[1] + q * f[1], 0.0)
             st.angVel = (0.0, 0.0, keep * w + (spin - half / inertia) * t)
         if self._free_any and self._fire_beta > 0.0:
@@ -618,7 +639,8 @@ class ServoBC(object):
         inv = 1.0 / self.dt
         for q, s in enumerate(self._states):
             pos = s.pos
-            s.vel = ((cx[3 * q] - pos[0]) * inv, (cx[3 * q + 1] - pos[1]) * inv, 0.0)
+            s.vel = ((cx[3 * q] - pos[0]) * inv, (cx[3 * q + 1] - pos[1]) * inv,
+                     (cx[3 * q + 2] - pos[2]) * inv if self.dim == 3 else 0.0)
             if not free[q]:
                 s.angVel = (0.0, 0.0, (ct[q] - self.theta[q]) * inv)
                 self.theta[q] = ct[q]
@@ -700,7 +722,8 @@ class Bonds(_BondedBodies):
         _bonded_engines[self.engine.label] = self
 
     def __del__(self):
-        _free('sbc_bpm_free', getattr(self, '_h', None))
+        if _free is not None:    # None once the interpreter tears the module down
+            _free('sbc_bpm_free', getattr(self, '_h', None))
         self._h = None
 
     def critical_dt(self):
@@ -784,7 +807,8 @@ class Cohesive(_BondedBodies):
         _bonded_engines[self.engine.label] = self
 
     def __del__(self):
-        _free('sbc_cohesive_host_free', getattr(self, '_h', None))
+        if _free is not None:    # None once the interpreter tears the module down
+            _free('sbc_cohesive_host_free', getattr(self, '_h', None))
         self._h = None
 
     def bond_count(self):

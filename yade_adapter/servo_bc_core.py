@@ -7,7 +7,7 @@ built on it, and so can another host or a script.
     core.version()      # '0.3.0'
     core.columns()      # ('increment', 'F11', ...), the header of a 2D results file
     lib = core.library()
-    h = lib.sbc_host_create(b'D F 0.99 0 0 0.99', n, xy, r, m, 0, None, dt, kn, msg, len(msg))
+    h = lib.sbc_host_create(b'D F 0.99 0 0 0.99', 2, n, xy, r, m, 0, None, dt, kn, msg, len(msg))
 
 The library is found at $SERVO_BC_LIB, beside this file, or in ../build/.
 """
@@ -62,7 +62,7 @@ def _load():
     D, I, P = ctypes.c_double, ctypes.c_int, ctypes.c_void_p
     pd, pi = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_int)
     sig = {
-        'sbc_host_create': (P, [ctypes.c_char_p, I, pd, pd, pd, I, pi, D, D, ctypes.c_char_p, ctypes.c_size_t]),
+        'sbc_host_create': (P, [ctypes.c_char_p, I, I, pd, pd, pd, I, pi, D, D, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_host_free': (None, [P]),
         'sbc_host_frame_size': (I, [P]),
         'sbc_host_frame_particles': (pi, [P]),

@@ -8,20 +8,12 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), '..', '..', 'yade_adapter'))
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))    # checks.py
 import servo_bc  # noqa: E402
+from checks import check, summary  # noqa: E402
 
 packing = sys.argv[1]
-passed = failed = 0
 
-
-def check(ok, label):
-    global passed, failed
-    if ok:
-        passed += 1
-        print('yade %s' % label)
-    else:
-        failed += 1
-        print('FAIL yade %s' % label)
 
 
 def closed_form(bc, extra):
@@ -217,5 +209,4 @@ check(len(version.split('.')) == 3 and all(p.isdigit() for p in version.split('.
       'servo_bc.__version__ %s' % version)
 print('yade version: %s' % version)
 
-print('%d passed, %d failed' % (passed, failed))
-sys.exit(1 if failed else 0)
+sys.exit(summary())

@@ -23,15 +23,17 @@ extern "C" {
 typedef struct sbc_host sbc_host;
 
 /* words: the servo_bc words, BC first ("P F 1 0.1 0 1 increments 10 ...").
- * n particles with centres xy [2n] (m), radii r [n] (m), masses m [n] (kg).
- * The frame: when the words name one (`frame NAME`), the host resolves NAME
- * to the indices list [nlist] (any order; the core orders them); otherwise
- * list must be empty and the frame is detected from the centres. dt: the
- * host's time step (s), kn the normal stiffness of its contact law (N/m; 0 if
- * unknown, see sbc_controller_create). Returns NULL on failure with the message in msg (cap
- * bytes, which may be 0). */
-sbc_host *sbc_host_create(const char *words, int n, const double *xy, const double *r, const double *m, int nlist,
-                          const int *list, double dt, double kn, char *msg, size_t cap);
+ * dim: the packing's dimension (2: discs, 3: spheres; settings.h,
+ * sbc_settings_check_dimension). n particles with centres x [dim n] (m),
+ * radii r [n] (m), masses m [n] (kg). The frame: when the words name one
+ * (`frame NAME`, 2D), the host resolves NAME to the indices list [nlist]
+ * (any order; the core orders them); otherwise list must be empty and the
+ * frame is detected from the centres (3D: sbc_frame_detect_3d). dt: the
+ * host's time step (s), kn the normal stiffness of its contact law (N/m; 0
+ * if unknown, see sbc_controller_create). Returns NULL on failure with the
+ * message in msg (cap bytes, which may be 0). */
+sbc_host *sbc_host_create(const char *words, int dim, int n, const double *x, const double *r, const double *m,
+                          int nlist, const int *list, double dt, double kn, char *msg, size_t cap);
 void sbc_host_free(sbc_host *h);
 
 /* A warning about the words (sbc_settings_ignored_message) and the time
@@ -44,7 +46,8 @@ int sbc_host_warning(const sbc_host *h, char *msg, size_t cap);
  * 10 (0 for none; with FIRE they damp the free frame rotations of (T)). */
 int sbc_host_damping(const sbc_host *h, double *alpha, double *beta);
 
-/* keyword seal (seal.h): sbc_host_sealed is 1 when the words ask for it.
+/* keyword seal (seal.h, 2D: refused on a 3D packing): sbc_host_sealed is 1
+ * when the words ask for it.
  * sbc_host_seal: the walls' forces on the creation's particles at centres xy
  * [2n] (m), the frame's at the commanded centres, into force [2n] (N,
  * overwritten; the walls' reactions on frame particles included): add them

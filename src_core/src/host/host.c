@@ -69,8 +69,8 @@ static sbc_host *fail_create(sbc_host *h, const sbc_error *err, char *msg, size_
     return NULL;
 }
 
-sbc_host *sbc_host_create(const char *words, int n, const double *xy, const double *r, const double *m, int nlist,
-                          const int *list, double dt, double kn, char *msg, size_t cap)
+sbc_host *sbc_host_create(const char *words, int dim, int n, const double *x, const double *r, const double *m,
+                          int nlist, const int *list, double dt, double kn, char *msg, size_t cap)
 {
     sbc_host *h = calloc(1, sizeof *h);
     sbc_error err;
@@ -97,7 +97,7 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
     }
     sbc_split_words(line, w, nw);
     if (sbc_settings_parse(&h->settings, nw, (const char *const *)w, &err) != SBC_OK ||
-        sbc_settings_check_dimension(&h->settings, 2, &err) != SBC_OK) {
+        sbc_settings_check_dimension(&h->settings, dim, &err) != SBC_OK) {
         free(w);
         free(line);
         return fail_create(h, &err, msg, cap);
@@ -108,19 +108,29 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
         sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: %d particles given; a frame needs at least 4", n);
         return fail_create(h, &err, msg, cap);
     }
-    if (!xy || !r || !m || (nlist > 0 && !list)) {
+    if (h->settings.seal && dim == 3) {
+        sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: keyword 'seal' is 2D in this version; the packing is 3D");
+        return fail_create(h, &err, msg, cap);
+    }
+    if (!x || !r || !m || (nlist > 0 && !list)) {
         sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: the centres, radii, masses or frame list are missing (NULL)");
         return fail_create(h, &err, msg, cap);
     }
     {
         int k, lightest = 0;
         for (k = 0; k < n; ++k) {
-            if (!isfinite(xy[2 * k]) || !isfinite(xy[2 * k + 1]) || !(r[k] > 0.0) || !isfinite(r[k]) ||
+            const double *xk = &x[dim * k];
+            if (!isfinite(xk[0]) || !isfinite(xk[1]) || !isfinite(xk[dim - 1]) || !(r[k] > 0.0) || !isfinite(r[k]) ||
                 !(m[k] > 0.0) || !isfinite(m[k])) {
+                char centre[96];
+                if (dim == 3)
+                    snprintf(centre, sizeof centre, "(%g, %g, %g)", xk[0], xk[1], xk[2]);
+                else
+                    snprintf(centre, sizeof centre, "(%g, %g)", xk[0], xk[1]);
                 sbc_fail(&err, SBC_ERR_INPUT,
-                         "servo_bc: particle %d: centre (%g, %g) m, radius %g m, mass %g kg (expected a finite centre, "
+                         "servo_bc: particle %d: centre %s m, radius %g m, mass %g kg (expected a finite centre, "
                          "radius > 0 and mass > 0)",
-                         k, xy[2 * k], xy[2 * k + 1], r[k], m[k]);
+                         k, centre, r[k], m[k]);
                 return fail_create(h, &err, msg, cap);
             }
             if (m[k] < m[lightest])
@@ -131,7 +141,7 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
             return fail_create(h, &err, msg, cap);
         }
         if (sbc_time_step_check(dt, kn, m[lightest], lightest, h->settings.max_relax_steps, &err) != SBC_OK ||
-            sbc_packing_distinct(n, xy, r, &err) != SBC_OK)
+            (dim == 2 && sbc_packing_distinct(n, x, r, &err) != SBC_OK))
             return fail_create(h, &err, msg, cap);
         if (!sbc_time_step_note_mass(&h->settings, dt, kn, m[lightest], h->step_note, sizeof h->step_note))
             h->step_note[0] = '\0';
@@ -149,8 +159,14 @@ sbc_host *sbc_host_create(const char *words, int n, const double *xy, const doub
             sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: keyword 'frame': particle index %d is not in [0, %d)", list[q], n);
             return fail_create(h, &err, msg, cap);
         }
-    if ((nlist > 0 ? sbc_frame_from_list(&h->frame, nlist, list, xy, r, &err)
-                   : sbc_frame_detect(&h->frame, n, xy, r, 0.0, &err)) != SBC_OK)
+    if (dim == 3 && nlist > 0) {
+        sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: keyword 'frame' is 2D in this version; the packing is 3D (its frame "
+                 "is detected)");
+        return fail_create(h, &err, msg, cap);
+    }
+    if ((dim == 3 ? sbc_frame_detect_3d(&h->frame, n, x, r, 0.0, &err)
+         : nlist > 0 ? sbc_frame_from_list(&h->frame, nlist, list, x, r, &err)
+                     : sbc_frame_detect(&h->frame, n, x, r, 0.0, &err)) != SBC_OK)
         return fail_create(h, &err, msg, cap);
     if (!(frame_mass = malloc(sizeof *frame_mass * (size_t)h->frame.n))) {
         sbc_fail(&err, SBC_ERR_NOMEM, "servo_bc: out of memory");
