@@ -41,7 +41,7 @@ sbc_status sbc_csv_write(sbc_csv *csv, const sbc_result *r, sbc_error *err);
  * newline), into out [cap]:
  *   servo_bc P: increment 3/10 F12 +0.00300 sigma11 -2.396300e+02 sigma12 +1.234500e+01 N/m
  *   steps 1234 iterations 5 unbalanced 3.2e-06 HM 1.1e-12
- * total: the path's increments (sbc_settings_total_increments). Returns its
+ * (N/m^2 in 3D). total: the path's increments (sbc_settings_total_increments). Returns its
  * length (as snprintf). */
 int sbc_result_line(const sbc_result *r, sbc_bc bc, int total, char *out, size_t cap);
 

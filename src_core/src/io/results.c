@@ -134,8 +134,9 @@ void sbc_csv_close(sbc_csv *csv)
 int sbc_result_line(const sbc_result *r, sbc_bc bc, int total, char *out, size_t cap)
 {
     return snprintf(out, cap,
-                    "servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e N/m steps %ld iterations %d "
+                    "servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e %s steps %ld iterations %d "
                     "unbalanced %.2g HM %.1e",
                     sbc_bc_name(bc), r->increment, total, r->F[SBC_IJ(0, 1)], r->sigma[SBC_IJ(0, 0)],
-                    r->sigma[SBC_IJ(0, 1)], r->relax_steps, r->iterations, r->unbalanced, r->hill_mandel);
+                    r->sigma[SBC_IJ(0, 1)], r->dim == 3 ? "N/m^2" : "N/m", r->relax_steps, r->iterations,
+                    r->unbalanced, r->hill_mandel);
 }
