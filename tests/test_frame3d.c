@@ -64,7 +64,7 @@ static void lattice(int n1, int n2, int n3)
     sbc_frame f;
     sbc_error err;
     double worst_a = 0.0;
-    int q, k, c, bad_pair = 0, faces = 0, paired = 0, bad_corner = 0;
+    int q, k, c, bad_pair = 0, bad_image = 0, images = 0, faces = 0, paired = 0, bad_corner = 0;
     cubic(n1, n2, n3, d, x, r);
     CHECK(sbc_frame_detect_3d(&f, n, x, r, 0.0, &err) == SBC_OK);
     if (f.n == 0) {
@@ -88,6 +88,14 @@ static void lattice(int n1, int n2, int n3)
             const double expect = f.side[q] >> (2 * k) & 1 ? -share : f.side[q] >> (2 * k + 1) & 1 ? share : 0.0;
             worst_a = fmax(worst_a, fabs(f.A[3 * q + k] - expect) / (d * d));
         }
+        for (k = 0; k < 3; ++k) { /* the image across axis k: the same place, |dX_k| = L_k, on faces of k only */
+            const int p = f.image[3 * q + k], on = f.side[q] >> (2 * k) & 3;
+            int j, same = p >= 0;
+            for (j = 0; j < 3 && p >= 0; ++j)
+                same &= j == k ? fabs(f.X[3 * p + j] - f.X[3 * q + j]) == L[j] : f.X[3 * p + j] == f.X[3 * q + j];
+            bad_image |= on ? !same || f.image[3 * p + k] != q : p != -1;
+            images += p >= 0;
+        }
         if (count_bits(f.side[q]) == 1) {
             const int p = f.partner[q];
             ++faces;
@@ -102,6 +110,8 @@ static void lattice(int n1, int n2, int n3)
         } else
             bad_pair |= f.partner[q] != -1;
     }
+    /* every particle has one image per face it lies on: 2 N_a N_b places per axis pair of faces */
+    CHECK(!bad_image && images == 2 * (n1 * n2 + n2 * n3 + n1 * n3));
     CHECK(worst_a < 1e-13 && !bad_pair && paired == faces && faces == 2 * ((n1 - 2) * (n2 - 2) + (n2 - 2) * (n3 - 2) +
                                                                    (n1 - 2) * (n3 - 2)));
     CHECK(fabs(f.V - L[0] * L[1] * L[2]) <= 1e-14 * f.V && identity_error(&f) < 1e-14);
@@ -192,7 +202,7 @@ static void saved(void)
     const int np = cubic(4, 5, 6, 1e-3, x, r);
     CHECK(sbc_frame_detect_3d(&f, np, x, r, 0.0, &err) == SBC_OK);
     n = sbc_frame_state_size(&f);
-    CHECK(n == 2 + 10 * (size_t)f.n + 9 + 1 + 4 * (size_t)f.ncell);
+    CHECK(n == 2 + 10 * (size_t)f.n + 9 + 1 + 4 * (size_t)f.ncell + 3 * (size_t)f.n);
     state = malloc(sizeof(double) * n);
     sbc_frame_save(&f, state);
     CHECK(sbc_frame_load(&g, state, n, &err) == SBC_OK);
@@ -201,11 +211,15 @@ static void saved(void)
           memcmp(g.A, f.A, sizeof(double) * 3 * (size_t)f.n) == 0 &&
           memcmp(g.side, f.side, sizeof(int) * (size_t)f.n) == 0 &&
           memcmp(g.partner, f.partner, sizeof(int) * (size_t)f.n) == 0 &&
-          memcmp(g.corner, f.corner, sizeof f.corner) == 0 && memcmp(g.cell, f.cell, sizeof(int) * 4 * (size_t)f.ncell) == 0);
+          memcmp(g.corner, f.corner, sizeof f.corner) == 0 && memcmp(g.cell, f.cell, sizeof(int) * 4 * (size_t)f.ncell) == 0 &&
+          memcmp(g.image, f.image, sizeof(int) * 3 * (size_t)f.n) == 0);
     sbc_frame_free(&g);
     CHECK(sbc_frame_load(&g, state, n - 1, &err) == SBC_ERR_INPUT && strstr(err.message, "3D frame of 96 particles"));
-    state[n - 1] = f.n; /* a cell corner past the frame */
+    state[n - 1 - 3 * (size_t)f.n] = f.n; /* a cell corner past the frame */
     CHECK(sbc_frame_load(&g, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "cell corner"));
+    sbc_frame_save(&f, state);
+    state[n - 3 * (size_t)f.n] = f.image[1]; /* corner 0's image across x: corner 0's image across y */
+    CHECK(sbc_frame_load(&g, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "image"));
     sbc_frame_save(&f, state);
     state[2 + 1] = 0; /* the first corner's side: no face */
     CHECK(sbc_frame_load(&g, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "side"));

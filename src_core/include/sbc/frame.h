@@ -51,6 +51,9 @@ typedef struct sbc_frame {
                        surface through the centres, m^3) */
     int ncell;      /* 3D: the surface through the centres, ncell quadrilaterals of frame */
     int *cell;      /* positions [4 ncell], anticlockwise seen from outside; 0 and NULL in 2D */
+    int *image;     /* 3D: [3Q] the frame position of q's periodic image across axis a (the same
+                       place on the opposite face of a) at 3q + a, -1 where q lies on no face of a
+                       or the opposite faces' places differ; NULL in 2D */
 } sbc_frame;
 
 /* Detects the frame from the particles' centres: particles whose centre lies
@@ -86,8 +89,9 @@ sbc_status sbc_frame_from_list(sbc_frame *frame, int count, const int *list,
  * of the eight corners. Each face's centres must form a grid (as on a
  * lattice): its quadrilaterals are the surface, each giving a quarter of its
  * area vector to each of its four corners (eq. 2 in 3D), so that
- * sum_q X_q (x) A_q = V I. Face particles are paired with the particle at
- * the same grid place on the opposite face. Frame order: the corners, the
+ * sum_q X_q (x) A_q = V I. Every particle on a face has its periodic image
+ * at the same grid place of the opposite face (image; partner for face
+ * particles). Frame order: the corners, the
  * edge particles, the face particles. Fails with SBC_ERR_FRAME naming the
  * corner or face at fault. */
 sbc_status sbc_frame_detect_3d(sbc_frame *frame, int n, const double *x, const double *r, double band,

@@ -39,6 +39,7 @@ void sbc_frame_free(sbc_frame *f)
     free(f->R);
     free(f->A);
     free(f->cell);
+    free(f->image);
     memset(f, 0, sizeof *f);
 }
 
@@ -64,20 +65,28 @@ sbc_status sbc_frame_copy(sbc_frame *dst, const sbc_frame *src, sbc_error *err)
         memcpy(dst->cell, src->cell, sizeof(int) * 4 * (size_t)src->ncell);
         dst->ncell = src->ncell;
     }
+    if (src->image) {
+        if (!(dst->image = malloc(sizeof(int) * 3 * q))) {
+            sbc_frame_free(dst);
+            return sbc_fail(err, SBC_ERR_NOMEM, "frame: out of memory for the images of %d particles", src->n);
+        }
+        memcpy(dst->image, src->image, sizeof(int) * 3 * q);
+    }
     return SBC_OK;
 }
 
 /* Layout (2D, as 0.2.0 wrote it): Q, then per frame position: particle,
  * side, partner, X (2), R, A (2); then the four corners and V. 3D: the
  * marker -3 first, then Q, per position particle, side, partner, X (3), R,
- * A (3); the eight corners, V, the cell count and the cells [4 ncell]. */
+ * A (3); the eight corners, V, the cell count, the cells [4 ncell] and the
+ * images [3Q]. */
 #define FRAME_3D_MARKER -3.0
 
 static size_t corners_of(int dim) { return dim == 3 ? 8 : 4; }
 
 size_t sbc_frame_state_size(const sbc_frame *f)
 {
-    const size_t head = f->dim == 3 ? 2 : 1, tail = f->dim == 3 ? 1 + 4 * (size_t)f->ncell : 0;
+    const size_t head = f->dim == 3 ? 2 : 1, tail = f->dim == 3 ? 1 + 4 * (size_t)f->ncell + 3 * (size_t)f->n : 0;
     return head + (4 + 2 * (size_t)f->dim) * (size_t)f->n + corners_of(f->dim) + 1 + tail;
 }
 
@@ -104,6 +113,8 @@ void sbc_frame_save(const sbc_frame *f, double *out)
         *out++ = f->ncell;
         for (c = 0; c < 4 * f->ncell; ++c)
             *out++ = f->cell[c];
+        for (c = 0; c < 3 * f->n; ++c)
+            *out++ = f->image[c];
     }
 }
 
@@ -121,6 +132,12 @@ static sbc_status check_loaded(const sbc_frame *f, sbc_error *err)
         if ((corner && p >= 0) || (p >= 0 && f->partner[p] != q))
             return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: frame position %d (side %d) has partner %d, "
                             "which is not its periodic partner", q, f->side[q], p);
+    }
+    for (q = 0; f->image && q < 3 * f->n; ++q) {
+        const int p = f->image[q];
+        if (p >= 0 && f->image[3 * p + q % 3] != q / 3)
+            return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: frame position %d has image %d across axis %d, "
+                            "whose image is not it", q / 3, p, q % 3);
     }
     for (c = 0; c < (int)corners_of(f->dim); ++c) {
         const int side = f->side[f->corner[c]];
@@ -152,7 +169,7 @@ sbc_status sbc_frame_load(sbc_frame *f, const double *in, size_t n, sbc_error *e
     if (dim == 3 && n > expect) /* the cells follow */
         ncell = (int)fmin(fmax(in[expect], -1.0), 1e9);
     if (dim == 3)
-        expect += 1 + 4 * (size_t)(ncell > 0 ? ncell : 0);
+        expect += 1 + 4 * (size_t)(ncell > 0 ? ncell : 0) + 3 * (size_t)nq;
     if (n != expect || ncell < 0)
         return sbc_fail(err, SBC_ERR_INPUT, "frame restart data: %zu values do not describe a %dD frame of %d particles "
                         "(expected %zu)", n, dim, nq, expect);
@@ -180,6 +197,12 @@ sbc_status sbc_frame_load(sbc_frame *f, const double *in, size_t n, sbc_error *e
         }
         for (c = 0; c < 4 * f->ncell && rd.st == SBC_OK; ++c)
             f->cell[c] = (int)sbc_saved_int(&rd, "cell corner", 0, nq - 1);
+        if (rd.st == SBC_OK && !(f->image = malloc(sizeof(int) * 3 * (size_t)nq))) {
+            sbc_frame_free(f);
+            return sbc_fail(err, SBC_ERR_NOMEM, "frame restart data: out of memory for %d images", nq);
+        }
+        for (c = 0; c < 3 * nq && rd.st == SBC_OK; ++c)
+            f->image[c] = (int)sbc_saved_int(&rd, "image", -1, nq - 1);
     }
     if (rd.st == SBC_OK && (st = check_loaded(f, err)) == SBC_OK)
         return SBC_OK;

@@ -230,9 +230,10 @@ static void face_cells(const face_grid *g, int face, int *cell, int *count)
         }
 }
 
-/* face particles of the low face paired with those at the same place of the
-   high face, when both grids have the same places */
-static void pair_faces(sbc_frame *f, const face_grid *lo, const face_grid *hi, double tol)
+/* the images across axis a: each place of the low face and the same place
+   of the high face, when both grids have the same places; face particles'
+   partner is their one image */
+static void pair_faces(sbc_frame *f, int a, const face_grid *lo, const face_grid *hi, double tol)
 {
     int k;
     if (lo->nu != hi->nu || lo->nv != hi->nv)
@@ -244,10 +245,12 @@ static void pair_faces(sbc_frame *f, const face_grid *lo, const face_grid *hi, d
         if (fabs(lo->vs[k] - hi->vs[k]) > tol)
             return;
     for (k = 0; k < lo->nu * lo->nv; ++k) {
-        const int a = lo->grid[k], b = hi->grid[k];
-        if (bits(f->side[a]) == 1 && bits(f->side[b]) == 1) {
-            f->partner[a] = b;
-            f->partner[b] = a;
+        const int p = lo->grid[k], q = hi->grid[k];
+        f->image[3 * p + a] = q;
+        f->image[3 * q + a] = p;
+        if (bits(f->side[p]) == 1 && bits(f->side[q]) == 1) {
+            f->partner[p] = q;
+            f->partner[q] = p;
         }
     }
 }
@@ -341,13 +344,16 @@ sbc_status sbc_frame_detect_3d(sbc_frame *f, int n, const double *x, const doubl
     for (face = 0; face < 6 && st == SBC_OK; ++face)
         if ((st = face_build(f, face, band, &grid[face], err)) == SBC_OK)
             ncell += (grid[face].nu - 1) * (grid[face].nv - 1);
-    if (st == SBC_OK && !(f->cell = malloc(sizeof(int) * 4 * (size_t)ncell)))
+    if (st == SBC_OK && (!(f->cell = malloc(sizeof(int) * 4 * (size_t)ncell)) ||
+                         !(f->image = malloc(sizeof(int) * 3 * (size_t)f->n))))
         st = sbc_fail(err, SBC_ERR_NOMEM, "frame: out of memory for %d surface cells", ncell);
     if (st == SBC_OK) {
         for (face = 0; face < 6; ++face)
             face_cells(&grid[face], face, f->cell, &f->ncell);
+        for (q = 0; q < 3 * f->n; ++q)
+            f->image[q] = -1;
         for (k = 0; k < 3; ++k)
-            pair_faces(f, &grid[2 * k], &grid[2 * k + 1], band);
+            pair_faces(f, k, &grid[2 * k], &grid[2 * k + 1], band);
         area_vectors(f);
         if (!(f->V > 0.0))
             st = sbc_fail(err, SBC_ERR_FRAME, "frame: the surface through the frame's centres encloses no volume");
