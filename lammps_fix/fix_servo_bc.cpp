@@ -587,10 +587,12 @@ int FixServoBC::confined(const double *fx, int increment, char *message, size_t 
   long bad = LONG_MAX, first;
   char mine_text[SBC_ERROR_LEN] = "";
   sbc_error err;
+  sbc_confine prepared;
+  sbc_confine_prepare(&prepared, &frame, fx);
   for (int i = 0; i < nlocal; i++) {
     const long id = (long) atom->tag[i];
     if (!(mask[i] & interior_bit) || id >= bad) continue;
-    if (sbc_confine_check(&frame, fx, increment, id, x[i], v[i], &err) != SBC_OK) {
+    if (sbc_confine_check(&prepared, increment, id, x[i], v[i], &err) != SBC_OK) {
       bad = id;
       std::snprintf(mine_text, sizeof mine_text, "%s", err.message);
     }

@@ -12,6 +12,7 @@
 #include "sbc/damping.h"
 #include "sbc/driver.h"
 #include "sbc/frame.h"
+#include "servo/geometry.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -139,6 +140,7 @@ static void inside(void)
 {
     const double d = 1.0;
     double x[3 * 64], r[64], fx[3 * 64], v[3] = {0.0, 0.0, 0.0};
+    sbc_confine c;
     static const double in[][3] = {{1.5, 1.5, 1.5}, {0.01, 0.01, 0.01}, {2.99, 1.0, 2.0}, {1.0, 1.0, 1.0}};
     static const double out[][3] = {{-0.01, 1.5, 1.5}, {3.01, 1.0, 1.0}, {1.0, 1.0, 3.5}, {4.0, 4.0, 4.0}};
     sbc_frame f;
@@ -148,12 +150,32 @@ static void inside(void)
     CHECK(sbc_frame_detect_3d(&f, 64, x, r, 0.0, &err) == SBC_OK);
     for (k = 0; k < f.n; ++k)
         memcpy(&fx[3 * k], &f.X[3 * k], sizeof(double) * 3);
+    sbc_confine_prepare(&c, &f, fx);
+    CHECK(c.inner == 1 && c.in_lo[0] == 0.0 && c.in_hi[2] == 3.0); /* the open box (0, 3)^3 */
     for (k = 0; k < 4; ++k) {
-        ok_in &= sbc_confine_inside(&f, fx, in[k]);
-        ok_out &= !sbc_confine_inside(&f, fx, out[k]);
+        ok_in &= sbc_confine_inside(&c, in[k]);
+        ok_out &= !sbc_confine_inside(&c, out[k]);
     }
     CHECK(ok_in && ok_out);
-    CHECK(sbc_confine_check(&f, fx, 2, 7, out[1], v, &err) == SBC_ERR_GEOMETRY &&
+    /* the prepared boxes decide as the full test does, on a sheared frame too: a grid of points through it */
+    for (k = 0; k < f.n; ++k)
+        fx[3 * k] += 0.4 * f.X[3 * k + 2] - 0.2 * f.X[3 * k + 1];
+    sbc_confine_prepare(&c, &f, fx);
+    {
+        int i, j, l, same = 1, inside_count = 0;
+        for (i = -2; i <= 22; ++i)
+            for (j = -2; j <= 17; ++j)
+                for (l = -2; l <= 17; ++l) {
+                    const double p[3] = {0.21 * i - 1.0, 0.2 * j + 0.013, 0.2 * l + 0.007};
+                    const int fast = sbc_confine_inside(&c, p), full = sbc_frame_geometry_of(3)->inside(&f, fx, p);
+                    same &= fast == full;
+                    inside_count += full;
+                }
+        CHECK(same && inside_count > 1000);
+    }
+    memcpy(fx, f.X, sizeof(double) * 3 * (size_t)f.n);
+    sbc_confine_prepare(&c, &f, fx);
+    CHECK(sbc_confine_check(&c, 2, 7, out[1], v, &err) == SBC_ERR_GEOMETRY &&
           strstr(err.message, "interior particle 7 escaped") && strstr(err.message, "(3.01, 1, 1) m is outside the "
                                                                                   "polyhedron"));
     /* the controller takes a 3D frame under 3D words, and (D) alone */

@@ -21,21 +21,37 @@ extern "C" {
 /* Steps between two checks during a relaxation. */
 #define SBC_CONFINE_EVERY 10000
 
+/* The frame's centres fx [3Q] (m, frame order) prepared for the tests of
+ * one check over many particles (borrowed: f and fx must outlive it). In 3D
+ * the preparation finds the box of the centres (outside it, outside) and an
+ * open box no face of the surface meets, inside or outside as its centre is:
+ * most particles are decided in O(1), the others by the full test. */
+typedef struct sbc_confine {
+    const sbc_frame *frame;
+    const double *fx;
+    double lo[SBC_DIM_MAX], hi[SBC_DIM_MAX];       /* the box of the centres, m */
+    double in_lo[SBC_DIM_MAX], in_hi[SBC_DIM_MAX]; /* 3D: the open box no face meets, m */
+    int inner;                                      /* 3D: -1 no such box, else 1 inside, 0 outside */
+} sbc_confine;
+
+/* O(Q) in 2D and 3D (one full test in 3D). */
+void sbc_confine_prepare(sbc_confine *c, const sbc_frame *f, const double *fx);
+
 /* 1 when p [dim] (m) lies inside the closed surface through the frame's
- * centres fx [3Q] (m, frame order; in 2D their polygon, by the even-odd
- * rule), else 0. O(Q). */
-int sbc_confine_inside(const sbc_frame *f, const double *fx, const double *p);
+ * centres (in 2D their polygon, by the even-odd rule; in 3D the polyhedron of
+ * the surface's cells, by a ray's crossings), else 0. O(Q) in 2D; in 3D O(1)
+ * in the prepared boxes, O(Q) near the surface. */
+int sbc_confine_inside(const sbc_confine *c, const double *p);
 
 /* One interior particle, numbered id by the host (for the message), at x
- * [dim] (m) with velocity v [dim] (m/s), against the frame f whose centres are now
- * fx [3Q] (m, frame order). increment: the increment under way, whose
- * results are not kept when the check fails. Returns SBC_OK, or fails with
+ * [dim] (m) with velocity v [dim] (m/s), against the frame's centres as
+ * prepared in c. increment: the increment under way, whose results are not
+ * kept when the check fails. Returns SBC_OK, or fails with
  *   SBC_ERR_NUMERIC   a non-finite position, or a moving particle more than
  *                     the frame's width beyond it (the packing blew up);
- *   SBC_ERR_GEOMETRY  a particle that slipped out through a gap.
- * O(Q). */
-sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment, long id, const double *x,
-                             const double *v, sbc_error *err);
+ *   SBC_ERR_GEOMETRY  a particle that slipped out through a gap. */
+sbc_status sbc_confine_check(const sbc_confine *c, int increment, long id, const double *x, const double *v,
+                             sbc_error *err);
 
 #ifdef __cplusplus
 }

@@ -297,11 +297,13 @@ static int drive_confined(void *u, const double *fx, int increment, char *messag
 {
     sbc_host *h = u;
     const int n = h->n - h->frame.n;
+    sbc_confine c;
     sbc_error err;
     int k;
     h->cb.interior_state(h->cb.user_data, h->ids, h->ix, h->iv);
+    sbc_confine_prepare(&c, &h->frame, fx);
     for (k = 0; k < n; ++k)
-        if (sbc_confine_check(&h->frame, fx, increment, h->ids[k], &h->ix[3 * k], &h->iv[3 * k], &err) != SBC_OK) {
+        if (sbc_confine_check(&c, increment, h->ids[k], &h->ix[3 * k], &h->iv[3 * k], &err) != SBC_OK) {
             snprintf(message, cap, "%s", err.message);
             return err.status;
         }

@@ -16,12 +16,14 @@
  * out [n] (zeroed when there is no frame); their count */
 static int outside_frame(const sbc_engine_view *w, const sbc_frame *frame, double *fx, unsigned char *out)
 {
+    sbc_confine c;
     int k, count = 0;
     for (k = 0; k < w->n; ++k) out[k] = 0;
     if (!frame) return 0;
     sbc_frame_centres(frame, w->x, fx);
+    sbc_confine_prepare(&c, frame, fx);
     for (k = 0; k < w->n; ++k)
-        if (!w->kinematic[k] && !sbc_confine_inside(frame, fx, &w->x[2 * k])) count += out[k] = 1;
+        if (!w->kinematic[k] && !sbc_confine_inside(&c, &w->x[2 * k])) count += out[k] = 1;
     return count;
 }
 

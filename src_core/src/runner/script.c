@@ -125,14 +125,16 @@ static sbc_status check_confined(const sbc_frame *frame, const sbc_engine *engin
                                  sbc_error *err)
 {
     sbc_engine_view w = sbc_engine_get_view(engine);
+    sbc_confine c;
     int k;
     sbc_status st;
     sbc_frame_centres(frame, w.x, fx);
+    sbc_confine_prepare(&c, frame, fx);
     for (k = 0; k < w.n; ++k)
         if (!isfinite(w.x[2 * k]) || !isfinite(w.x[2 * k + 1]))
-            return sbc_confine_check(frame, fx, increment, k, &w.x[2 * k], &w.v[2 * k], err);
+            return sbc_confine_check(&c, increment, k, &w.x[2 * k], &w.v[2 * k], err);
     for (k = 0; k < w.n; ++k)
-        if (!w.kinematic[k] && (st = sbc_confine_check(frame, fx, increment, k, &w.x[2 * k], &w.v[2 * k], err)) != SBC_OK)
+        if (!w.kinematic[k] && (st = sbc_confine_check(&c, increment, k, &w.x[2 * k], &w.v[2 * k], err)) != SBC_OK)
             return st;
     return SBC_OK;
 }

@@ -5,14 +5,66 @@
 #include <math.h>
 #include <stdio.h>
 
-int sbc_confine_inside(const sbc_frame *f, const double *fx, const double *p)
+void sbc_confine_prepare(sbc_confine *c, const sbc_frame *f, const double *fx)
 {
-    return sbc_frame_geometry_of(f->dim)->inside(f, fx, p);
+    const int dim = f->dim;
+    int q, k;
+    c->frame = f;
+    c->fx = fx;
+    c->inner = -1;
+    for (k = 0; k < SBC_DIM_MAX; ++k) {
+        c->lo[k] = c->in_lo[k] = HUGE_VAL;
+        c->hi[k] = c->in_hi[k] = -HUGE_VAL;
+    }
+    for (q = 0; q < f->n; ++q)
+        for (k = 0; k < dim; ++k) {
+            c->lo[k] = fmin(c->lo[k], fx[3 * q + k]);
+            c->hi[k] = fmax(c->hi[k], fx[3 * q + k]);
+        }
+    if (dim != 3)
+        return; /* 2D: the polygon test alone, as it always was */
+    /* the centres on face lo (hi) of axis k lie below in_lo[k] (above
+       in_hi[k]), and with them their face's cells: no cell meets the open box
+       between, which is connected, hence all inside or all outside */
+    for (k = 0; k < 3; ++k)
+        c->in_lo[k] = -HUGE_VAL, c->in_hi[k] = HUGE_VAL;
+    for (q = 0; q < f->n; ++q)
+        for (k = 0; k < 3; ++k) {
+            if (f->side[q] >> (2 * k) & 1)
+                c->in_lo[k] = fmax(c->in_lo[k], fx[3 * q + k]);
+            if (f->side[q] >> (2 * k + 1) & 1)
+                c->in_hi[k] = fmin(c->in_hi[k], fx[3 * q + k]);
+        }
+    if (c->in_lo[0] < c->in_hi[0] && c->in_lo[1] < c->in_hi[1] && c->in_lo[2] < c->in_hi[2]) {
+        double mid[3];
+        for (k = 0; k < 3; ++k)
+            mid[k] = 0.5 * (c->in_lo[k] + c->in_hi[k]);
+        c->inner = sbc_frame_geometry_of(3)->inside(f, fx, mid);
+    }
 }
 
-sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment, long id, const double *x,
-                             const double *v, sbc_error *err)
+int sbc_confine_inside(const sbc_confine *c, const double *p)
 {
+    const sbc_frame *f = c->frame;
+    if (f->dim == 3) {
+        int k, out = 0, in = c->inner >= 0;
+        for (k = 0; k < 3; ++k) {
+            out |= p[k] < c->lo[k] || p[k] > c->hi[k];
+            in &= p[k] > c->in_lo[k] && p[k] < c->in_hi[k];
+        }
+        if (out)
+            return 0;
+        if (in)
+            return c->inner;
+    }
+    return sbc_frame_geometry_of(f->dim)->inside(f, c->fx, p);
+}
+
+sbc_status sbc_confine_check(const sbc_confine *cf, int increment, long id, const double *x, const double *v,
+                             sbc_error *err)
+{
+    const sbc_frame *f = cf->frame;
+    const double *fx = cf->fx;
     const int dim = f->dim;
     double lo[SBC_DIM_MAX], hi[SBC_DIM_MAX], size = 0.0, far = 0.0;
     char centre[3 * 32];
@@ -24,7 +76,7 @@ sbc_status sbc_confine_check(const sbc_frame *f, const double *fx, int increment
                         "servo_bc: increment %d: particle %ld has a non-finite position (the packing blew up; lower "
                         "the time step or take smaller increments); the results before increment %d stand",
                         increment, id, increment);
-    if (sbc_confine_inside(f, fx, x))
+    if (sbc_confine_inside(cf, x))
         return SBC_OK;
     for (c = 0; c < dim; ++c) {
         lo[c] = HUGE_VAL, hi[c] = -HUGE_VAL;
