@@ -3,6 +3,7 @@
 #include "tests.h"
 
 #include "sbc/confine.h"
+#include "servo/geometry.h"
 #include "sbc/frame.h"
 #include "sbc/packing.h"
 
@@ -141,7 +142,7 @@ static void confinement(void)
     CHECK(sbc_packing_lattice_square(&p, 5, 5, 2e-3, 1.02e-3, &err) == SBC_OK);
     CHECK(sbc_frame_detect(&f, p.n, p.x, p.r, 0.0, &err) == SBC_OK && f.n == 16);
     memcpy(fx, f.X, sizeof fx);
-    sbc_confine_prepare(&c, &f, fx); /* fx borrowed: the moves below show in c */
+    sbc_confine_prepare(&c, &f, fx);
     sbc_confine_prepare(&ref, &f, f.X);
     {
         const double centre[2] = {4e-3, 4e-3}, gap[2] = {3e-3, -0.4e-3}, far[2] = {4e-3, -0.02};
@@ -155,6 +156,18 @@ static void confinement(void)
         CHECK(sbc_confine_check(&c, 3, 12, far, still, &err) == SBC_ERR_GEOMETRY); /* at rest: escaped */
         for (q = 0; q < f.n; ++q) /* the frame sheared by 1 mm at the top: (0.4 mm, 7.6 mm) is now left of its left edge */
             fx[3 * q] += 1e-3 * f.X[3 * q + 1] / 8e-3;
+        sbc_confine_prepare(&c, &f, fx); /* moved centres: prepared again */
+        { /* the prepared boxes decide as the full polygon test does, on a grid through the sheared frame */
+            int i, j, same = 1, inside = 0;
+            for (i = -5; i <= 55; ++i)
+                for (j = -5; j <= 45; ++j) {
+                    const double pt[2] = {0.2e-3 * i + 0.013e-3, 0.2e-3 * j + 0.007e-3};
+                    const int full = sbc_frame_geometry_of(2)->inside(&f, fx, pt);
+                    same &= sbc_confine_inside(&c, pt) == full;
+                    inside += full;
+                }
+            CHECK(same && c.inner == 1 && inside > 1000);
+        }
         {
             const double corner[2] = {0.4e-3, 7.6e-3};
             CHECK(sbc_confine_check(&ref, 0, 1, corner, still, &err) == SBC_OK);

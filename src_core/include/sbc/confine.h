@@ -22,25 +22,26 @@ extern "C" {
 #define SBC_CONFINE_EVERY 10000
 
 /* The frame's centres fx [3Q] (m, frame order) prepared for the tests of
- * one check over many particles (borrowed: f and fx must outlive it). In 3D
- * the preparation finds the box of the centres (outside it, outside) and an
- * open box no face of the surface meets, inside or outside as its centre is:
- * most particles are decided in O(1), the others by the full test. */
+ * one check over many particles (borrowed: f and fx must outlive it): the
+ * box of the centres (outside it, outside) and the open box bounded by the
+ * innermost centre of each side, which no segment or cell of the surface
+ * meets, inside or outside as its centre is. Most particles are decided in
+ * O(1), the others by the full test. */
 typedef struct sbc_confine {
     const sbc_frame *frame;
     const double *fx;
     double lo[SBC_DIM_MAX], hi[SBC_DIM_MAX];       /* the box of the centres, m */
-    double in_lo[SBC_DIM_MAX], in_hi[SBC_DIM_MAX]; /* 3D: the open box no face meets, m */
-    int inner;                                      /* 3D: -1 no such box, else 1 inside, 0 outside */
+    double in_lo[SBC_DIM_MAX], in_hi[SBC_DIM_MAX]; /* the open box no side meets, m */
+    int inner;                                      /* -1 no such box, else 1 inside, 0 outside */
 } sbc_confine;
 
-/* O(Q) in 2D and 3D (one full test in 3D). */
+/* O(Q): one pass and one full test. */
 void sbc_confine_prepare(sbc_confine *c, const sbc_frame *f, const double *fx);
 
 /* 1 when p [dim] (m) lies inside the closed surface through the frame's
  * centres (in 2D their polygon, by the even-odd rule; in 3D the polyhedron of
- * the surface's cells, by a ray's crossings), else 0. O(Q) in 2D; in 3D O(1)
- * in the prepared boxes, O(Q) near the surface. */
+ * the surface's cells, by a ray's crossings), else 0. O(1) in the prepared
+ * boxes, O(Q) near the surface. */
 int sbc_confine_inside(const sbc_confine *c, const double *p);
 
 /* One interior particle, numbered id by the host (for the message), at x

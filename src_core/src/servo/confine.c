@@ -21,42 +21,49 @@ void sbc_confine_prepare(sbc_confine *c, const sbc_frame *f, const double *fx)
             c->lo[k] = fmin(c->lo[k], fx[3 * q + k]);
             c->hi[k] = fmax(c->hi[k], fx[3 * q + k]);
         }
-    if (dim != 3)
-        return; /* 2D: the polygon test alone, as it always was */
-    /* the centres on face lo (hi) of axis k lie below in_lo[k] (above
-       in_hi[k]), and with them their face's cells: no cell meets the open box
+    /* the centres on face (edge) lo of axis k lie below in_lo[k], those on
+       hi above in_hi[k], and with them the surface's cells (the polygon's
+       segments, which join centres of one edge): none meets the open box
        between, which is connected, hence all inside or all outside */
-    for (k = 0; k < 3; ++k)
+    for (k = 0; k < dim; ++k)
         c->in_lo[k] = -HUGE_VAL, c->in_hi[k] = HUGE_VAL;
-    for (q = 0; q < f->n; ++q)
-        for (k = 0; k < 3; ++k) {
-            if (f->side[q] >> (2 * k) & 1)
+    for (q = 0; q < f->n; ++q) {
+        int on = f->side[q];
+        if (dim == 2) /* the 2D sides (frame.h) as face bits: left, right, bottom, top */
+            on = on == SBC_SIDE_LEFT ? 1 : on == SBC_SIDE_RIGHT ? 2 : on == SBC_SIDE_BOTTOM ? 4 : on == SBC_SIDE_TOP ? 8
+               : q == f->corner[SBC_CORNER_BL] ? 5 : q == f->corner[SBC_CORNER_BR] ? 6
+               : q == f->corner[SBC_CORNER_TR] ? 10 : 9;
+        for (k = 0; k < dim; ++k) {
+            if (on >> (2 * k) & 1)
                 c->in_lo[k] = fmax(c->in_lo[k], fx[3 * q + k]);
-            if (f->side[q] >> (2 * k + 1) & 1)
+            if (on >> (2 * k + 1) & 1)
                 c->in_hi[k] = fmin(c->in_hi[k], fx[3 * q + k]);
         }
-    if (c->in_lo[0] < c->in_hi[0] && c->in_lo[1] < c->in_hi[1] && c->in_lo[2] < c->in_hi[2]) {
-        double mid[3];
-        for (k = 0; k < 3; ++k)
+    }
+    {
+        double mid[SBC_DIM_MAX] = {0.0, 0.0, 0.0};
+        int open = 1;
+        for (k = 0; k < dim; ++k) {
+            open &= c->in_lo[k] < c->in_hi[k];
             mid[k] = 0.5 * (c->in_lo[k] + c->in_hi[k]);
-        c->inner = sbc_frame_geometry_of(3)->inside(f, fx, mid);
+        }
+        if (open)
+            c->inner = sbc_frame_geometry_of(dim)->inside(f, fx, mid);
     }
 }
 
 int sbc_confine_inside(const sbc_confine *c, const double *p)
 {
     const sbc_frame *f = c->frame;
-    if (f->dim == 3) {
-        int k, out = 0, in = c->inner >= 0;
-        for (k = 0; k < 3; ++k) {
-            out |= p[k] < c->lo[k] || p[k] > c->hi[k];
-            in &= p[k] > c->in_lo[k] && p[k] < c->in_hi[k];
-        }
-        if (out)
-            return 0;
-        if (in)
-            return c->inner;
+    int k, out = 0, in = c->inner >= 0;
+    for (k = 0; k < f->dim; ++k) {
+        out |= p[k] < c->lo[k] || p[k] > c->hi[k];
+        in &= p[k] > c->in_lo[k] && p[k] < c->in_hi[k];
     }
+    if (out)
+        return 0;
+    if (in)
+        return c->inner;
     return sbc_frame_geometry_of(f->dim)->inside(f, c->fx, p);
 }
 
