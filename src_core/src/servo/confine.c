@@ -70,12 +70,11 @@ int sbc_confine_inside(const sbc_confine *c, const double *p)
 sbc_status sbc_confine_check(const sbc_confine *cf, int increment, long id, const double *x, const double *v,
                              sbc_error *err)
 {
-    const sbc_frame *f = cf->frame;
-    const double *fx = cf->fx;
-    const int dim = f->dim;
-    double lo[SBC_DIM_MAX], hi[SBC_DIM_MAX], size = 0.0, far = 0.0;
+    const int dim = cf->frame->dim;
+    const double *lo = cf->lo, *hi = cf->hi; /* the box of the centres, prepared */
+    double size = 0.0, far = 0.0;
     char centre[3 * 32];
-    int q, c, moving = 0, finite = 1;
+    int c, moving = 0, finite = 1;
     for (c = 0; c < dim; ++c)
         finite &= isfinite(x[c]) != 0;
     if (!finite)
@@ -86,11 +85,6 @@ sbc_status sbc_confine_check(const sbc_confine *cf, int increment, long id, cons
     if (sbc_confine_inside(cf, x))
         return SBC_OK;
     for (c = 0; c < dim; ++c) {
-        lo[c] = HUGE_VAL, hi[c] = -HUGE_VAL;
-        for (q = 0; q < f->n; ++q) {
-            lo[c] = fmin(lo[c], fx[3 * q + c]);
-            hi[c] = fmax(hi[c], fx[3 * q + c]);
-        }
         size = fmax(size, hi[c] - lo[c]);
         far = fmax(far, fmax(lo[c] - x[c], x[c] - hi[c]));
         moving |= v[c] != 0.0;
