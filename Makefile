@@ -169,7 +169,7 @@ check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_d
 	bash tests/lammps/closed_form.sh $(B)/lmp_servo $(B)/plugin_driver $(B)/servo_bc_plugin.so
 	bash tests/lammps/bonds.sh $(B)/lmp_servo
 	bash tests/lammps/restart_repro.sh $(B)/lmp_servo
-	bash tests/lammps/cubic_D.sh $(B)/lmp_servo
+	bash tests/lammps/cubic.sh $(B)/lmp_servo
 
 # LIGGGHTS adapter: the LAMMPS fix source compiled against LIGGGHTS 3.8
 # (lammps_fix/fix_servo_bc.cpp with -DSERVO_BC_LIGGGHTS; the differences are in
@@ -189,7 +189,7 @@ $(B)/liggghts_servo: $(LIG_SRC) $(B)/libservo_bc.a /usr/include/liggghts/pair_gr
 
 check-liggghts: $(B)/liggghts_servo $(B)/servo-bc
 	bash tests/liggghts/closed_form.sh $(B)/liggghts_servo $(B)/servo-bc
-	bash tests/liggghts/cubic_D.sh $(B)/liggghts_servo
+	bash tests/liggghts/cubic.sh $(B)/liggghts_servo
 	bash tests/lammps/bonds.sh $(B)/liggghts_servo liggghts
 
 # every engine on the same case (through the compare command), and the mixed

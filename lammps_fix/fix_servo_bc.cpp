@@ -60,9 +60,8 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
     fail(std::string("requires units si (its outputs are in m, N/m and s; this script has units ") +
          update->unit_style + ")");
   dim = domain->dimension;
-  if (dim == 3 && settings.bc != SBC_BC_D)
-    fail(std::string("this version imposes (D) alone in a 3d box (") + sbc_bc_name(settings.bc) +
-         " is 2d: use dimension 2)");
+  nrot = SBC_ROTATIONS(dim);
+  zrot = 3 - nrot;
   if (dim == 3 && (settings.seal || settings.frame_group[0]))
     fail(std::string("keyword '") + (settings.seal ? "seal" : "frame") + "' is 2d in this version; the box is 3d");
   {
@@ -79,15 +78,17 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   restart_peratom = 1;
 
-  // per-atom outputs for dumps (f_ID[1] frame flag, f_ID[2] accumulated rotation, rad)
+  // per-atom outputs for dumps (f_ID[1] frame flag, f_ID[2] accumulated rotation about z, rad;
+  // in 3d f_ID[2..4] the accumulated rotation vector)
   peratom_flag = 1;
-  size_peratom_cols = 2;
+  size_peratom_cols = 1 + nrot;
   peratom_freq = 1;
 
   grow_arrays(atom->nmax);
   atom->add_callback(CALLBACK_GROW);
   atom->add_callback(CALLBACK_RESTART);
-  for (int i = 0; i < atom->nlocal; i++) per_atom[i][0] = per_atom[i][1] = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int c = 0; c <= nrot; c++) per_atom[i][c] = 0.0;
   // a results file past the file size limit is a write error with a message,
   // not a process killed by SIGXFSZ without one
   if (settings.file[0]) std::signal(SIGXFSZ, SIG_IGN);
@@ -373,14 +374,17 @@ void FixServoBC::initial_integrate(int)
       v[i][c] = c < dim ? (cmd.x[3 * q + c] - x[i][c]) / dt : 0.0;
       if (c < dim) x[i][c] = cmd.x[3 * q + c];
     }
-    if (dim == 3) omega[i][0] = omega[i][1] = 0.0;    // (D): the frame's orientation is held
-    if (cmd.free_rotation[q]) {    // (T): free rotation with the damping of eq. 10
-      const double w = omega[i][2], m = settings.damping ? sbc_damp_local(torque[i][2], w, settings.beta) : torque[i][2];
-      omega[i][2] = w + dt * m / (servo_bc_host::inertia * atom->rmass[i] * atom->radius[i] * atom->radius[i]);
-      per_atom[i][1] += dt * omega[i][2];
-    } else {
-      omega[i][2] = (cmd.theta[q] - per_atom[i][1]) / dt;
-      per_atom[i][1] = cmd.theta[q];
+    const double I = (dim == 3 ? 0.4 : servo_bc_host::inertia) * atom->rmass[i] * atom->radius[i] * atom->radius[i];
+    for (int c = 0; c < nrot; c++) {
+      double &w = omega[i][zrot + c], &turned = per_atom[i][1 + c];
+      if (cmd.free_rotation[q]) {    // (T): free rotation with the damping of eq. 10
+        const double t = torque[i][zrot + c], m = settings.damping ? sbc_damp_local(t, w, settings.beta) : t;
+        w = w + dt * m / I;
+        turned += dt * w;
+      } else {
+        w = (cmd.theta[nrot * q + c] - turned) / dt;
+        turned = cmd.theta[nrot * q + c];
+      }
     }
   }
 }
@@ -443,8 +447,7 @@ void FixServoBC::fire_pass(double *local)
   for (int k = 0; k < SBC_FIRE_SUMS; k++) local[k] = 0.0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & interior_bit)) continue;
-    const int z = dim == 3 ? 0 : 2;    // the rotations' first component (2d: z alone)
-    sbc_fire_add(local, dim, atom->f[i], atom->v[i], &atom->torque[i][z], &atom->omega[i][z]);
+    sbc_fire_add(local, dim, atom->f[i], atom->v[i], &atom->torque[i][zrot], &atom->omega[i][zrot]);
   }
 }
 
@@ -465,7 +468,7 @@ void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2
   const double alpha = local ? settings.alpha : 0.0, beta = local ? settings.beta : 0.0;
   // I = inertia m r^2: the integrator's disc (2d) or sphere (3d, 2/5)
   const double inertia = dim == 3 ? 0.4 : servo_bc_host::inertia, turn = again ? 0.0 : dt;
-  const int z = dim == 3 ? 0 : 2, nrot = SBC_ROTATIONS(dim);    // the rotations: z alone in 2d
+  const int z = zrot;
   double ek = 0.0, net = 0.0;
   out[0] = out[1] = 0.0;
   if (nlocal == 0) return;    // the per-atom arrays may not exist yet
@@ -491,7 +494,7 @@ void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2
     // one division: 1/m = I/(m I), 1/I = m/(m I)
     for (int c = 0; c < dim; c++) vk[c] = v0[c] + fi[c] * I * inv, loaded |= fi[c] != 0.0;
     for (int c = 0; c < nrot; c++) wk[c] = w0[c] + ti[c] * m * inv, loaded |= ti[c] != 0.0;
-    per_atom[i][1] += turn * wk[nrot - 1];    // the rotation about z
+    for (int c = 0; c < nrot; c++) per_atom[i][1 + c] += turn * wk[c];
     // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
     if (loaded) ek += sbc_kinetic_energy(dim, m, I, vk, wk);
   }
@@ -567,15 +570,19 @@ void FixServoBC::frame_pass(double *buf)
         buf[3 * q + c] = x[i][c];
         buf[3 * Q + 3 * q + c] = f[i][c];
       }
-      buf[6 * Q + q] = torque[i][2];
-      buf[7 * Q + q] = per_atom[i][1];
+      for (int c = 0; c < nrot; c++) {
+        buf[SBC_DRIVER_TORQUE(dim, Q) + nrot * q + c] = torque[i][zrot + c];
+        buf[SBC_DRIVER_THETA(dim, Q) + nrot * q + c] = per_atom[i][1 + c];
+      }
     }
-    rot += std::fabs(per_atom[i][1]);
+    rot += nrot == 1 ? std::fabs(per_atom[i][1]) : std::sqrt(per_atom[i][1] * per_atom[i][1] +
+                                                             per_atom[i][2] * per_atom[i][2] +
+                                                             per_atom[i][3] * per_atom[i][3]);
     npart += 1.0;
   }
   for (int k = 0; k < 3 * Q && seal_on; k++) buf[3 * Q + k] += seal_reaction[k];
-  buf[8 * Q] = rot;
-  buf[8 * Q + 1] = npart;
+  buf[SBC_DRIVER_SUMS(dim, Q)] = rot;
+  buf[SBC_DRIVER_SUMS(dim, Q) + 1] = npart;
 }
 
 /* confine.h on the owned interior atoms against the frame's present centres
@@ -709,12 +716,12 @@ void FixServoBC::restart(char *raw)
   make_buffers();
 }
 
-/* per-atom restart data: the accumulated rotation */
+/* per-atom restart data: the accumulated rotation (nrot components) */
 int FixServoBC::pack_restart(int i, double *out)
 {
-  out[0] = 2;
-  out[1] = per_atom[i][1];
-  return 2;
+  out[0] = 1 + nrot;
+  for (int c = 0; c < nrot; c++) out[1 + c] = per_atom[i][1 + c];
+  return 1 + nrot;
 }
 
 void FixServoBC::unpack_restart(int nlocal, int nth)
@@ -723,43 +730,41 @@ void FixServoBC::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   m++;
-  per_atom[nlocal][1] = extra[nlocal][m];
+  for (int c = 0; c < nrot; c++) per_atom[nlocal][1 + c] = extra[nlocal][m + c];
 }
 
 int FixServoBC::size_restart(int)
 {
-  return 2;
+  return 1 + nrot;
 }
 
 int FixServoBC::maxsize_restart()
 {
-  return 2;
+  return 1 + nrot;
 }
 
+/* per_atom: the frame flag and the accumulated rotation (nrot components) */
 void FixServoBC::grow_arrays(int nmax)
 {
-  memory->grow(per_atom, nmax, 2, "servo_bc:per_atom");
+  memory->grow(per_atom, nmax, 1 + nrot, "servo_bc:per_atom");
   array_atom = per_atom;
 }
 
 void FixServoBC::copy_arrays(int i, int j, int)
 {
-  per_atom[j][0] = per_atom[i][0];
-  per_atom[j][1] = per_atom[i][1];
+  for (int c = 0; c <= nrot; c++) per_atom[j][c] = per_atom[i][c];
 }
 
 int FixServoBC::pack_exchange(int i, double *out)
 {
-  out[0] = per_atom[i][0];
-  out[1] = per_atom[i][1];
-  return 2;
+  for (int c = 0; c <= nrot; c++) out[c] = per_atom[i][c];
+  return 1 + nrot;
 }
 
 int FixServoBC::unpack_exchange(int nlocal, double *in)
 {
-  per_atom[nlocal][0] = in[0];
-  per_atom[nlocal][1] = in[1];
-  return 2;
+  for (int c = 0; c <= nrot; c++) per_atom[nlocal][c] = in[c];
+  return 1 + nrot;
 }
 
 /* every error of this fix: "Fix servo_bc: " and the message, on all ranks

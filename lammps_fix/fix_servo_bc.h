@@ -79,6 +79,8 @@ class FixServoBC : public Fix {
   double **per_atom;               // per atom: frame flag (1 frame, 0 other), accumulated rotation (rad)
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
   int dim = 2;                       // the box's dimension (domain->dimension)
+  int nrot = 1;                      // SBC_ROTATIONS(dim): rotation components (z alone in 2d)
+  int zrot = 2;                      // the first of them in omega and torque (0 in 3d)
   servo_bc_host::ContactLaw law;   // kn, kt, shear history of the pair style
   FixServoBCBonds *contacts;       // fix servo_bc/bonds cohesive, which owns the contacts instead (or null)
   sbc_csv csv;

@@ -56,7 +56,7 @@ static double net_force(void *u, const double *sums)
 static void frame(void *u, double *buf)
 {
     const rig *g = u;
-    sbc_driver_frame_from_snapshot(&g->snap, g->Q, buf);
+    sbc_driver_frame_from_snapshot(&g->snap, 2, g->Q, buf);
 }
 
 static void reduce(void *u, const double *in, double *out, int n, sbc_reduce_op op)

@@ -178,9 +178,10 @@ static void inside(void)
     CHECK(sbc_confine_check(&c, 2, 7, out[1], v, &err) == SBC_ERR_GEOMETRY &&
           strstr(err.message, "interior particle 7 escaped") && strstr(err.message, "(3.01, 1, 1) m is outside the "
                                                                                   "polyhedron"));
-    /* the controller takes a 3D frame under 3D words, and (D) alone */
+    /* the controller takes a 3D frame under 3D words, not mixed, and (P) where every family is whole */
     {
-        static const char *words2[] = {"D", "F", "1.01", "0", "0", "1"}, *wordsP[] = {"P"};
+        static const char *words2[] = {"D", "F", "1.01", "0", "0", "1"}, *wordsP[] = {"P"}, *wordsM[] = {"mixed", "stress", "P22", "-100", "2"};
+        int member[8], saved, a = 0;
         sbc_settings s;
         double mass[64];
         for (k = 0; k < 64; ++k)
@@ -189,8 +190,21 @@ static void inside(void)
         CHECK(sbc_controller_create(&f, &s, mass, 1e-6, 1e4, &err) == NULL &&
               strstr(err.message, "a frame of dimension 3 under words of dimension 2"));
         CHECK(sbc_settings_parse(&s, 1, wordsP, &err) == SBC_OK && sbc_settings_check_dimension(&s, 3, &err) == SBC_OK);
+        CHECK(sbc_frame_family(&f, f.corner[0], member) == 8 && member[7] == f.corner[7] &&
+              sbc_frame_family(&f, f.corner[7], member) == 0);
+        while (a < 2 && f.image[3 * (f.n - 1) + a] < 0)
+            ++a;
+        saved = f.image[3 * (f.n - 1) + a];
+        f.image[3 * (f.n - 1) + a] = -1; /* the last face particle loses its image */
+        CHECK(sbc_frame_family(&f, f.n - 1, member) == -1);
         CHECK(sbc_controller_create(&f, &s, mass, 1e-6, 1e4, &err) == NULL &&
-              strstr(err.message, "servo_bc P: this version imposes (D) alone on a 3D frame"));
+              strstr(err.message, "servo_bc P: frame particle 55 (packing index") &&
+              strstr(err.message, "has no periodic image on an opposite face"));
+        f.image[3 * (f.n - 1) + a] = saved;
+        CHECK(sbc_settings_parse(&s, 5, wordsM, &err) == SBC_OK);
+        s.dim = 3; /* past sbc_settings_check_dimension, which refuses it too */
+        CHECK(sbc_controller_create(&f, &s, mass, 1e-6, 1e4, &err) == NULL &&
+              strstr(err.message, "servo_bc mixed: this version imposes (D), (P) and (T) on a 3D frame"));
     }
     sbc_frame_free(&f);
 }
@@ -278,17 +292,21 @@ static void words(void)
     CHECK(sbc_settings_check_dimension(&s, 4, &err) == SBC_ERR_INPUT && strstr(err.message, "dimension 4"));
 }
 
-/* a host of the driver for the (D) test: spheres on a simple cubic lattice
- * with normal springs kn between nearest neighbours (no friction, no
+/* a host of the driver for the lattice tests: spheres on a simple cubic
+ * lattice with normal springs kn between nearest neighbours and, when kt >
+ * 0, tangential springs kt on the part of their relative displacement from
+ * the lattice normal to the line of centres (elastic: no sliding, no
  * rotation), FIRE or eq. 10 on the interior, the frame where the commands
- * put it */
+ * put it. Central springs alone leave a simple cubic lattice without shear
+ * stiffness, and with a prestress in compression its shear modes are
+ * unstable; the tangential springs give it one. */
 typedef struct springs {
     int n, npair, Q;
     int *pair;                  /* [2 npair] */
-    double *x, *v, *f;          /* [3n] */
+    double *x, *x0, *v, *f;     /* [3n] */
     unsigned char *frame;       /* [n] */
     const sbc_frame *fr;
-    double R, kn, m, dt, alpha;
+    double R, kn, kt, m, dt, alpha;
     double ep, overlap, count, fsum;
 } springs;
 
@@ -299,7 +317,7 @@ static void springs_forces(springs *h)
     h->ep = h->overlap = h->count = h->fsum = 0.0;
     for (p = 0; p < h->npair; ++p) {
         const int i = h->pair[2 * p], j = h->pair[2 * p + 1];
-        double d[3], L, dn;
+        double d[3], u[3], L, dn, un = 0.0, s2 = 0.0;
         for (k = 0; k < 3; ++k)
             d[k] = h->x[3 * j + k] - h->x[3 * i + k];
         L = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
@@ -307,13 +325,19 @@ static void springs_forces(springs *h)
         if (dn <= 0.0)
             continue;
         for (k = 0; k < 3; ++k) {
-            h->f[3 * i + k] -= h->kn * dn * d[k] / L;
-            h->f[3 * j + k] += h->kn * dn * d[k] / L;
+            u[k] = d[k] - (h->x0[3 * j + k] - h->x0[3 * i + k]);
+            un += u[k] * d[k] / L;
         }
-        h->ep += 0.5 * h->kn * dn * dn;
+        for (k = 0; k < 3; ++k) {
+            const double s = u[k] - un * d[k] / L; /* tangential relative displacement, m */
+            h->f[3 * i + k] += -h->kn * dn * d[k] / L + h->kt * s;
+            h->f[3 * j + k] -= -h->kn * dn * d[k] / L + h->kt * s;
+            s2 += s * s;
+        }
+        h->ep += 0.5 * h->kn * dn * dn + 0.5 * h->kt * s2;
         h->overlap += dn / h->R;
         h->count += 1.0;
-        h->fsum += h->kn * dn;
+        h->fsum += sqrt(h->kn * dn * h->kn * dn + h->kt * h->kt * s2);
     }
 }
 
@@ -369,16 +393,21 @@ static void springs_frame(void *u, double *buf)
             buf[3 * q + k] = h->x[3 * h->fr->particle[q] + k];
             buf[3 * h->Q + 3 * q + k] = h->f[3 * h->fr->particle[q] + k];
         }
-    buf[8 * h->Q + 1] = h->n;
+    buf[SBC_DRIVER_SUMS(3, h->Q) + 1] = h->n;
 }
 
-/* (D) on a prestressed N^3 spring lattice (d 2 mm, R 1.02 mm, kn 1e4 N/m)
+/* The boundary condition bc ("D", "P", "T") on an N^3 spring lattice (d 2
+ * mm, radius R: 1.02 mm prestressed, 1 mm touching; kn 1e4 N/m, kt N/m)
  * under F (3 x 3 slots) in `increments` increments at preset accuracy,
  * through the host driver: the converged rows into rows [8]; returns their
- * count (-1 when the run failed, with the message printed) and the steps */
-static int run_D(int N, const double F[9], int increments, const char *accuracy, sbc_result rows[8], long *steps)
+ * count (-1 when the run failed, with the message printed) and the steps.
+ * split > 0: after that many steps the controller's state and FIRE's are
+ * saved, controller and driver freed, and new ones made from the saved
+ * state go on (a restart). */
+static int run_cubic(const char *bc, int N, double R, double kt, const double F[9], int increments,
+                     const char *accuracy, long split, sbc_result rows[8], long *steps)
 {
-    const double d = 2e-3, R = 1.02e-3, kn = 1e4;
+    const double d = 2e-3, kn = 1e4;
     const int n = N * N * N;
     char values[9][32], count[16];
     const char *words[15];
@@ -392,7 +421,7 @@ static int run_D(int N, const double F[9], int increments, const char *accuracy,
     double *r = malloc(sizeof(double) * (size_t)n), *mass;
     sbc_event ev = SBC_EVENT_RELAXING;
     int i, j, q, nrows = 0;
-    words[0] = "D", words[1] = "F";
+    words[0] = bc, words[1] = "F";
     for (i = 0; i < 9; ++i) {
         snprintf(values[i], sizeof values[i], "%.17g", F[i]);
         words[2 + i] = values[i];
@@ -400,13 +429,15 @@ static int run_D(int N, const double F[9], int increments, const char *accuracy,
     snprintf(count, sizeof count, "%d", increments);
     words[11] = "increments", words[12] = count, words[13] = "accuracy", words[14] = accuracy;
     memset(&h, 0, sizeof h);
-    h.n = n, h.R = R, h.kn = kn, h.m = 1e-3, h.dt = 1e-5, h.alpha = 0.7;
+    h.n = n, h.R = R, h.kn = kn, h.kt = kt, h.m = 1e-3, h.dt = 1e-5, h.alpha = 0.7;
     h.x = malloc(sizeof(double) * 3 * (size_t)n);
+    h.x0 = malloc(sizeof(double) * 3 * (size_t)n);
     h.v = calloc(3 * (size_t)n, sizeof(double));
     h.f = calloc(3 * (size_t)n, sizeof(double));
     h.frame = calloc((size_t)n, 1);
     h.pair = malloc(sizeof(int) * 6 * (size_t)n);
     cubic(N, N, N, d, h.x, r);
+    memcpy(h.x0, h.x, sizeof(double) * 3 * (size_t)n);
     for (i = 0; i < n; ++i) {
         r[i] = R;
         for (j = i + 1; j < n; ++j) {
@@ -439,6 +470,20 @@ static int run_D(int N, const double F[9], int increments, const char *accuracy,
             memcpy(&h.x[3 * f.particle[q]], &cmd.x[3 * q], sizeof(double) * 3);
         if ((ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) && nrows < 8)
             rows[nrows++] = *sbc_controller_result(c);
+        if (*steps + 1 == split && ev != SBC_EVENT_FINISHED && ev != SBC_EVENT_FAILED) {
+            const size_t size = sbc_controller_state_size(c);
+            double *state = malloc(sizeof(double) * size);
+            const sbc_fire_state fire = *sbc_driver_fire(drv);
+            sbc_controller_save(c, state);
+            sbc_driver_free(drv);
+            sbc_controller_free(c);
+            c = sbc_controller_create(&f, &s, mass, h.dt, kn, &err);
+            CHECK(c && sbc_controller_load(c, state, size, &err) == SBC_OK);
+            drv = c ? sbc_driver_create(c, &s, &cb, &err) : NULL;
+            if (drv)
+                *sbc_driver_fire(drv) = fire;
+            free(state);
+        }
     }
     if (ev != SBC_EVENT_FINISHED) {
         printf("  %s\n", err.message);
@@ -449,19 +494,22 @@ static int run_D(int N, const double F[9], int increments, const char *accuracy,
     sbc_frame_free(&f);
     free(mass);
     free(r);
-    free(h.x), free(h.v), free(h.f), free(h.frame), free(h.pair);
+    free(h.x), free(h.x0), free(h.v), free(h.f), free(h.frame), free(h.pair);
     return nrows;
 }
 
-/* (D) under F = diag(0.999, 0.998, 0.997) at `tight`: every chain along axis
- * i carries kn (2R - d F_ii), so P_ii = -N^2 kn (2R - d F_ii) / ((N - 1)^2
- * d^2), off the diagonal 0 */
-static void lattice_D(int N)
+/* (D) or (P) on the lattice with tangential springs kt = kn / 2 under F =
+ * diag(0.999, 0.998, 0.997) at `tight`: the affine state stretches no
+ * tangential spring, and every chain along axis i carries kn (2R - d F_ii),
+ * so P_ii = -N^2 kn (2R - d F_ii) / ((N - 1)^2 d^2), off the diagonal 0;
+ * under (P) the affine state is periodic (each family's forces cancel) and
+ * in equilibrium, so the same */
+static void lattice_prestressed(const char *bc, int N)
 {
     const double d = 2e-3, R = 1.02e-3, kn = 1e4, F[9] = {0.999, 0, 0, 0, 0.998, 0, 0, 0, 0.997};
     sbc_result rows[8];
     long steps;
-    const int nrows = run_D(N, F, 2, "tight", rows, &steps);
+    const int nrows = run_cubic(bc, N, R, 0.5 * kn, F, 2, "tight", 0, rows, &steps);
     double worst = 0.0, hm = 0.0, Pmax = 0.0;
     int k, i, j;
     CHECK(nrows == 3);
@@ -476,16 +524,71 @@ static void lattice_D(int N)
         hm = fmax(hm, fabs(rows[k].hill_mandel));
     }
     CHECK(worst <= 1e-6 * Pmax && hm <= 1e-6);
-    printf("  frame3d: (D) on a prestressed %d^3 lattice, F = diag(0.999, 0.998, 0.997), tight: %d rows in %ld steps, "
+    printf("  frame3d: (%s) on a prestressed %d^3 lattice, F = diag(0.999, 0.998, 0.997), tight: %d rows in %ld steps, "
            "max |P - closed form| = %.1e of max |P| (%.4g N/m^2), |Hill-Mandel| %.1e\n",
-           N, nrows, steps, worst / Pmax, Pmax, hm);
+           bc, N, nrows, steps, worst / Pmax, Pmax, hm);
 }
 
-/* objectivity: (D) under F = Q diag(0.999, 0.998, 0.997), Q a rotation (20
- * degrees about z after 10 about x), at the default preset gives Q P(diag)
- * to 1e-4 of max |P| */
-static void objectivity(int N)
+/* (T) on a touching frictionless N^3 lattice under F = diag(1 - e1, 1 - e2,
+ * 1) at `tight`: the frame's tractions are P A_q, so the chain along axis i
+ * that ends at a node of area A_c carries P_ii A_c and shortens by (N - 1)
+ * P_ii A_c / kn; eq. 15 gives F_ii = 1 + (N - 1) P_ii sum_c A_c^2 / (kn L^3)
+ * with sum_c A_c^2 = d^4 ((N - 2)^2 + (N - 2) + 1/4) = d^4 (N - 3/2)^2 over
+ * a face, L = (N - 1) d: P_ii = -kn e_i (N - 1)^2 / (d (N - 3/2)^2), P33 = 0
+ * and off the diagonal 0. Chains of unequal force shift against their
+ * neighbours, which tilts the lateral contacts: a second-order effect, of
+ * relative size ~e. */
+static void lattice_T(int N, double e1, double e2)
 {
+    const double d = 2e-3, R = 1e-3, kn = 1e4, F[9] = {1.0 - e1, 0, 0, 0, 1.0 - e2, 0, 0, 0, 1.0};
+    const double e[3] = {e1, e2, 0.0};
+    sbc_result rows[8];
+    long steps;
+    const int nrows = run_cubic("T", N, R, 0.0, F, 2, "tight", 0, rows, &steps);
+    double worst = 0.0, hm = 0.0, Pmax = 0.0, Pclosed[3];
+    int k, i, j;
+    CHECK(nrows == 3);
+    for (i = 0; i < 3; ++i)
+        Pclosed[i] = -kn * e[i] * (N - 1.0) * (N - 1.0) / (d * (N - 1.5) * (N - 1.5));
+    if (nrows != 3)
+        return;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) {
+            const double expect = i == j ? Pclosed[i] : 0.0;
+            worst = fmax(worst, fabs(rows[2].P[SBC_IJ(i, j)] - expect));
+            Pmax = fmax(Pmax, fabs(expect));
+        }
+    for (k = 0; k < nrows; ++k)
+        hm = fmax(hm, fabs(rows[k].hill_mandel));
+    CHECK(worst <= 1e-5 * Pmax && hm <= 1e-6);
+    printf("  frame3d: (T) on a touching frictionless %d^3 lattice, F = diag(1 - %g, 1 - %g, 1), tight: %ld steps, "
+           "%d iterations, max |P - closed form| = %.1e of max |P| (%.4g N/m^2), |Hill-Mandel| %.1e\n",
+           N, e1, e2, steps, rows[2].iterations, worst / Pmax, Pmax, hm);
+}
+
+/* restart in 3D: (P) and (T) runs split within an increment's servo
+ * iterations and continued by a new controller and driver from the saved
+ * state give the rows of the whole run, bit for bit */
+static void restart_split(const char *bc, double R, double kt, const double F[9], long split)
+{
+    sbc_result whole[8], parts[8];
+    long s1, s2;
+    const int n1 = run_cubic(bc, 4, R, kt, F, 2, "tight", 0, whole, &s1);
+    const int n2 = run_cubic(bc, 4, R, kt, F, 2, "tight", split, parts, &s2);
+    int k, same = n1 == 3 && n2 == 3 && s1 == s2;
+    for (k = 0; same && k < n1; ++k)
+        same = memcmp(whole[k].P, parts[k].P, sizeof whole[k].P) == 0 &&
+               memcmp(whole[k].F, parts[k].F, sizeof whole[k].F) == 0 && whole[k].iterations == parts[k].iterations;
+    CHECK(split < s1 && same);
+    printf("  frame3d: (%s) restarted at step %ld of %ld: the %d rows bit for bit\n", bc, split, s1, n2);
+}
+
+/* objectivity: (D) or (P) on the frictionless prestressed lattice under F =
+ * Q diag(0.999, 0.998, 0.997), Q a rotation (20 degrees about z after 10
+ * about x), at `balanced` gives Q P(diag) to 1e-4 of max |P| */
+static void objectivity(const char *bc, int N)
+{
+    const double R = 1.02e-3;
     const double D[9] = {0.999, 0, 0, 0, 0.998, 0, 0, 0, 0.997}, a = 20.0 * 3.14159265358979323846 / 180.0, b = 10.0 * 3.14159265358979323846 / 180.0;
     const double Rz[9] = {cos(a), -sin(a), 0, sin(a), cos(a), 0, 0, 0, 1}, Rx[9] = {1, 0, 0, 0, cos(b), -sin(b), 0, sin(b), cos(b)};
     double Qr[9], F[9], QP[9], worst = 0.0, Pmax = 0.0;
@@ -501,8 +604,8 @@ static void objectivity(int N)
     for (i = 0; i < 3; ++i)
         for (j = 0; j < 3; ++j)
             F[3 * i + j] = Qr[3 * i + j] * D[3 * j + j];
-    n1 = run_D(N, D, 1, "balanced", diag, &s1);
-    n2 = run_D(N, F, 4, "balanced", turned, &s2);
+    n1 = run_cubic(bc, N, R, 0.0, D, 1, "balanced", 0, diag, &s1);
+    n2 = run_cubic(bc, N, R, 0.0, F, 4, "balanced", 0, turned, &s2);
     CHECK(n1 == 2 && n2 == 5);
     if (n1 != 2 || n2 != 5)
         return;
@@ -516,8 +619,8 @@ static void objectivity(int N)
     for (k = 0; k < 9; ++k)
         worst = fmax(worst, fabs(turned[4].P[k] - QP[k]));
     CHECK(worst <= 1e-4 * Pmax);
-    printf("  frame3d: objectivity, (D) under Q diag(0.999, 0.998, 0.997) (Q: 20 deg about z after 10 about x), "
-           "balanced: max |P - Q P(diag)| = %.1e of max |P| (%ld and %ld steps)\n", worst / Pmax, s1, s2);
+    printf("  frame3d: objectivity, (%s) under Q diag(0.999, 0.998, 0.997) (Q: 20 deg about z after 10 about x), "
+           "balanced: max |P - Q P(diag)| = %.1e of max |P| (%ld and %ld steps)\n", bc, worst / Pmax, s1, s2);
 }
 
 /* the results file's columns in 3D (columns.h): nine components of F, P
@@ -550,8 +653,17 @@ static void columns(void)
 void test_frame_3d(void)
 {
     columns();
-    lattice_D(4);
-    objectivity(4);
+    lattice_prestressed("D", 4);
+    lattice_prestressed("P", 4);
+    lattice_T(4, 2e-6, 1e-6);
+    {
+        const double prestressed[9] = {0.999, 0, 0, 0, 0.998, 0, 0, 0, 0.997};
+        const double touching[9] = {1.0 - 2e-6, 0, 0, 0, 1.0 - 1e-6, 0, 0, 0, 1.0};
+        restart_split("P", 1.02e-3, 5e3, prestressed, 1700);
+        restart_split("T", 1e-3, 0.0, touching, 1200);
+    }
+    objectivity("D", 4);
+    objectivity("P", 4);
     words();
     saved();
     lattice(3, 3, 3);

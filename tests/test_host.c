@@ -68,7 +68,7 @@ static void lazy_contacts(void *u, double *out)
 static void lazy_frame(void *u, double *buf)
 {
     const lazy_host *l = u;
-    sbc_driver_frame_from_snapshot(&l->s, l->Q, buf);
+    sbc_driver_frame_from_snapshot(&l->s, 2, l->Q, buf);
 }
 
 static void lazy_interior_state(void *u, long *ids, double *x, double *v)

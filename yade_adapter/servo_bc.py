@@ -23,7 +23,7 @@ import os
 import sys
 
 from servo_bc_core import (ServoBCError, DAMPING_NONE, DAMPING_LOCAL, DAMPING_FIRE,  # noqa: F401
-                           RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED, HostCallbacks, frame_size as _frame_size,
+                           RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED, HostCallbacks, frame_offsets as _frame_offsets,
                            library as _core, columns as _columns, doubles as _doubles, version as _version,
                            free as _free)
 from yade import O, utils
@@ -298,7 +298,8 @@ class ServoBC(object):
         self.frame = [self.bodies[particles[q]] for q in range(self.Q)]
         frame_set = set(self.frame)
         self.interior = [i for i in self.bodies if i not in frame_set]
-        self.theta = [0.0] * self.Q           # the frame's rotations, kept here (prescribed ones)
+        self.nrot = 3 if self.dim == 3 else 1  # rotation components: about z in 2D, a vector in 3D
+        self.theta = [0.0] * (self.nrot * self.Q)  # the frame's rotations, kept here (prescribed ones)
         self._free = None
         self._rattlers = []
         self._law_functor = None
@@ -520,9 +521,13 @@ class ServoBC(object):
             forces = O.forces
             for q, s in enumerate(self._states):
                 if self._free[q]:
-                    t, w = forces.t(self.frame[q])[2], s.angVel[2]
-                    if w != 0.0:
-                        forces.addT(self.frame[q], (0.0, 0.0, -math.copysign(self._fire_beta * abs(t), w)))
+                    t, w = forces.t(self.frame[q]), s.angVel
+                    damp = [-math.copysign(self._fire_beta * abs(t[k]), w[k]) if w[k] != 0.0 else 0.0
+                            for k in range(3)]
+                    if self.dim == 2:
+                        damp[0] = damp[1] = 0.0
+                    if any(damp):
+                        forces.addT(self.frame[q], tuple(damp))
 
     def _interior_callback(self, user_data, mix, out):
         """FIRE's mix when given; the interior's Ek and largest net force (relax.h). Eq. 10 is
@@ -542,17 +547,26 @@ class ServoBC(object):
         return self._net_force_max(self._fc_mean)
 
     def _frame_callback(self, user_data, buf):
-        Q = self.Q
-        theta = [self._frame_theta(q, s) for q, s in enumerate(self._states)]
+        Q, r = self.Q, self.nrot
+        at_torque, at_theta, at_sums = _frame_offsets(Q, self.dim)
+        z = 3 - r                         # the first rotation component: z alone in 2D
+        turned = 0.0
         for q, i in enumerate(self.frame):
             s = self._states[q]
             f, t = O.forces.f(i), O.forces.t(i)
             buf[3 * q], buf[3 * q + 1], buf[3 * q + 2] = s.pos[0], s.pos[1], s.pos[2]
             buf[3 * Q + 3 * q], buf[3 * Q + 3 * q + 1], buf[3 * Q + 3 * q + 2] = f[0], f[1], f[2]
-            buf[6 * Q + q] = t[2]
-            buf[7 * Q + q] = theta[q]
-        buf[8 * Q] = sum(abs(O.bodies[i].state.rot()[2]) for i in self.interior) + sum(abs(v) for v in theta)
-        buf[8 * Q + 1] = len(self.bodies)
+            theta = self._frame_theta(q, s)
+            for c in range(r):
+                buf[at_torque + r * q + c] = t[z + c]
+                buf[at_theta + r * q + c] = theta[c]
+            turned += self._rotation_length(theta)
+        buf[at_sums] = sum(self._rotation_length(list(O.bodies[i].state.rot())[3 - r:]) for i in self.interior) + turned
+        buf[at_sums + 1] = len(self.bodies)
+
+    def _rotation_length(self, theta):
+        """|theta| of eq. 41: the angle about z in 2D, the rotation vector's length in 3D."""
+        return abs(theta[0]) if self.nrot == 1 else math.sqrt(theta[0] ** 2 + theta[1] ** 2 + theta[2] ** 2)
 
     def _interior_state_callback(self, user_data, ids, x, v):
         """The interior bodies for the confinement test (confine.h): ids, centres, velocities."""
@@ -611,13 +625,15 @@ class ServoBC(object):
                                                      now - self._started), flush=True)
 
     def _frame_theta(self, q, state):
-        return state.rot()[2] if self._free[q] else self.theta[q]
+        """Frame body q's rotation (nrot components): YADE's own when free ((T)), the commanded one else."""
+        r = self.nrot
+        return list(state.rot())[3 - r:] if self._free[q] else self.theta[r * q:r * q + r]
 
     def _apply_commands(self, changed=True):
         """Frame bodies reach new targets within the next NewtonIntegrator pass
         (velocity = (target - position) / dt) and are stopped on the step after;
         prescribed rotations likewise; free ones ((T)) are integrated by YADE
-        (blockedDOFs 'xyzXY'). Steps without new commands cost nothing here."""
+        (blockedDOFs 'xyzXY', 'xyz' in 3D). Steps without new commands cost nothing here."""
         if not changed:
             if self._moving:
                 for q, s in enumerate(self._states):
@@ -635,15 +651,18 @@ class ServoBC(object):
             self._free = free
             self._free_any = any(free)
             for q, s in enumerate(self._states):
-                s.blockedDOFs = 'xyzXY' if free[q] else 'xyzXYZ'
+                s.blockedDOFs = ('xyz' if self.dim == 3 else 'xyzXY') if free[q] else 'xyzXYZ'
         inv = 1.0 / self.dt
+        r = self.nrot
         for q, s in enumerate(self._states):
             pos = s.pos
             s.vel = ((cx[3 * q] - pos[0]) * inv, (cx[3 * q + 1] - pos[1]) * inv,
                      (cx[3 * q + 2] - pos[2]) * inv if self.dim == 3 else 0.0)
             if not free[q]:
-                s.angVel = (0.0, 0.0, (ct[q] - self.theta[q]) * inv)
-                self.theta[q] = ct[q]
+                w = [(ct[r * q + c] - self.theta[r * q + c]) * inv for c in range(r)]
+                s.angVel = tuple(w) if r == 3 else (0.0, 0.0, w[0])
+                for c in range(r):
+                    self.theta[r * q + c] = ct[r * q + c]
         self._moving = True
 
     def _stop(self, error):

@@ -14,7 +14,7 @@ The library is found at $SERVO_BC_LIB, beside this file, or in ../build/.
 import ctypes
 import os
 
-__all__ = ['ServoBCError', 'library', 'version', 'columns', 'doubles', 'frame_size', 'HostCallbacks', 'DAMPING_NONE',
+__all__ = ['ServoBCError', 'library', 'version', 'columns', 'doubles', 'frame_size', 'frame_offsets', 'HostCallbacks', 'DAMPING_NONE',
            'DAMPING_LOCAL', 'DAMPING_FIRE', 'FIRE_SUMS', 'RELAXING', 'CORRECTED', 'INCREMENT', 'FINISHED', 'FAILED']
 
 DAMPING_NONE, DAMPING_LOCAL, DAMPING_FIRE = 0, 1, 2  # sbc_damping (settings.h)
@@ -39,10 +39,17 @@ class HostCallbacks(ctypes.Structure):
                 ('interior_state', interior_state_type), ('row', row_type)]
 
 
-def frame_size(q):
-    """SBC_DRIVER_FRAME_SIZE (driver.h): the doubles of the frame callback's buffer for q frame particles:
-    x [3q], force [3q], torque [q], theta [q], sum |theta|, particle count."""
-    return 8 * q + 2
+def frame_offsets(q, dim=2):
+    """SBC_DRIVER_TORQUE, SBC_DRIVER_THETA, SBC_DRIVER_SUMS (driver.h): where the frame callback's buffer
+    for q frame particles holds the torques, the rotations (r = 1 in 2D, 3 in 3D per particle) and the
+    sums (sum |theta|, particle count); x [3q] and force [3q] come first."""
+    r = 3 if dim == 3 else 1
+    return 6 * q, (6 + r) * q, (6 + 2 * r) * q
+
+
+def frame_size(q, dim=2):
+    """SBC_DRIVER_FRAME_SIZE (driver.h): the doubles of the frame callback's buffer for q frame particles."""
+    return frame_offsets(q, dim)[2] + 2
 
 
 class ServoBCError(RuntimeError):

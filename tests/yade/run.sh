@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The YADE engine (yade_adapter/servo_bc.py over the core's shared library),
 # against the Debian YADE package: the closed-form lattice (D) and (P) and the
-# refusals (closed_form.py), (D) in 3D (cubic_D.py); bad words in batch mode end the process non-zero
+# refusals (closed_form.py), (D), (P), (T) in 3D (cubic.py); bad words in batch mode end the process non-zero
 # with the core's message. YADE beside the other engines on the same case is
 # tests/cross_host.sh (make check-cross-host).
 # Prints "N passed, N failed".
@@ -26,13 +26,13 @@ set -- ${counts:-0 1}
 pass=$((pass + $1)) fail=$((fail + $2))
 [ -n "$counts" ] || { echo "FAIL yade closed_form.py did not finish:"; tail -5 "$tmp/closed.log"; }
 
-# 3D: (D) on the prestressed 4^3 lattice against its closed form, and the refusals
-yade -n -x "$here/cubic_D.py" > "$tmp/cubic.log" 2>&1
+# 3D: (D), (P) and (T) on the 4^3 lattices against their closed forms, and the refusals
+yade -n -x "$here/cubic.py" > "$tmp/cubic.log" 2>&1
 grep -E '^(FAIL )?yade ' "$tmp/cubic.log"
 counts=$(awk '/ passed, .* failed$/ { print $1, $3 }' "$tmp/cubic.log")
 set -- ${counts:-0 1}
 pass=$((pass + $1)) fail=$((fail + $2))
-[ -n "$counts" ] || { echo "FAIL yade cubic_D.py did not finish:"; tail -5 "$tmp/cubic.log"; }
+[ -n "$counts" ] || { echo "FAIL yade cubic.py did not finish:"; tail -5 "$tmp/cubic.log"; }
 
 # batch mode: a Python exception with the core's message, and a non-zero exit
 yade -n -x "$run" "$tmp/l5.yade" 2e3 1e4 2e3 0.4 1e-5 servo_bc D F 1 2 2 1 > "$tmp/bad.log" 2>&1

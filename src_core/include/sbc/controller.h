@@ -31,9 +31,11 @@ typedef enum sbc_event {
 /* What a host measures each step. Per-frame arrays are in frame order. */
 typedef struct sbc_snapshot {
     const double *x;         /* [3Q] frame centre positions, m (3 slots whatever the dimension, tensor.h) */
-    const double *theta;     /* [Q] frame rotations, rad */
+    const double *theta;     /* [rQ] frame rotations, rad (r = SBC_ROTATIONS(dim): the angle about e3
+                                in 2D, the rotation vector, the time integral of the angular
+                                velocity, in 3D) */
     const double *force;     /* [3Q] resultant contact force on each frame particle, N */
-    const double *torque;    /* [Q] resultant contact moment on each frame particle, N m */
+    const double *torque;    /* [rQ] resultant contact moment on each frame particle, N m */
     double kinetic_energy;   /* Ek of the interior particles that carry a force, eq. 12, J */
     double unbalanced_max;   /* largest |net force| (contact forces only, before damping) on an
                                 interior particle, N */
@@ -48,7 +50,7 @@ typedef struct sbc_snapshot {
 /* What the host applies to the frame before its next step. */
 typedef struct sbc_commands {
     const double *x;                    /* [3Q] target positions, m */
-    const double *theta;                /* [Q] target rotations, rad */
+    const double *theta;                /* [rQ] target rotations, rad (as sbc_snapshot's) */
     const unsigned char *free_rotation; /* [Q] 1: the host integrates this rotation freely */
 } sbc_commands;
 

@@ -8,13 +8,11 @@
 #include <math.h>
 
 #include "sbc/fire_damping.h"
+#include "sbc/tensor.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* the components of a rotation (moment, angular velocity) in dim dimensions */
-#define SBC_ROTATIONS(dim) ((dim) == 3 ? 3 : 1)
 
 /* eq. 10: one component f of a force (N) or moment (N m) damped against the
  * velocity component v it drives: f - alpha |f| sign(v); unchanged at v = 0 */

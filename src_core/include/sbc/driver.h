@@ -34,8 +34,13 @@ extern "C" {
 typedef enum sbc_reduce_op { SBC_REDUCE_SUM = 0, SBC_REDUCE_MAX } sbc_reduce_op;
 
 /* The frame buffer of the frame callback, doubles at these offsets (Q: frame
- * particles): x [3Q], force [3Q], torque [Q], theta [Q], sum |theta|, count. */
-#define SBC_DRIVER_FRAME_SIZE(Q) (8 * (size_t)(Q) + 2)
+ * particles, r = SBC_ROTATIONS(dim)): x [3Q] at 0, force [3Q] at 3Q, torque
+ * [rQ] at SBC_DRIVER_TORQUE, theta [rQ] at SBC_DRIVER_THETA, then sum |theta|
+ * and the particle count at SBC_DRIVER_SUMS (8Q + 2 doubles in 2D). */
+#define SBC_DRIVER_TORQUE(dim, Q) (6 * (size_t)(Q))
+#define SBC_DRIVER_THETA(dim, Q) ((6 + (size_t)SBC_ROTATIONS(dim)) * (size_t)(Q))
+#define SBC_DRIVER_SUMS(dim, Q) ((6 + 2 * (size_t)SBC_ROTATIONS(dim)) * (size_t)(Q))
+#define SBC_DRIVER_FRAME_SIZE(dim, Q) (SBC_DRIVER_SUMS(dim, Q) + 2)
 
 typedef struct sbc_driver_callbacks {
     void *user_data;
@@ -80,9 +85,9 @@ void sbc_driver_free(sbc_driver *d);
  * SBC_EVENT_RELAXING without stepping the controller. */
 sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err);
 
-/* The frame buffer (SBC_DRIVER_FRAME_SIZE(Q)) from a snapshot's frame arrays
- * and sums, for a host that measures into an sbc_snapshot. */
-void sbc_driver_frame_from_snapshot(const sbc_snapshot *s, int Q, double *buf);
+/* The frame buffer (SBC_DRIVER_FRAME_SIZE(dim, Q)) from a snapshot's frame
+ * arrays and sums, for a host that measures into an sbc_snapshot. */
+void sbc_driver_frame_from_snapshot(const sbc_snapshot *s, int dim, int Q, double *buf);
 
 /* FIRE's state, for a host's restart file. */
 sbc_fire_state *sbc_driver_fire(sbc_driver *d);

@@ -97,6 +97,16 @@ sbc_status sbc_frame_from_list(sbc_frame *frame, int count, const int *list,
 sbc_status sbc_frame_detect_3d(sbc_frame *frame, int n, const double *x, const double *r, double band,
                                sbc_error *err);
 
+/* (P)'s periodic families (eqs. 19, 32-34): the frame positions that are
+ * periodic images of one another and move together. For a family's first
+ * member q writes the family into members and returns its size (2D: a
+ * bottom or right particle and its partner, 2; the corners under BL, 4. 3D:
+ * a particle on the low face of each axis it lies on and its images, a face
+ * pair 2, an edge quadruple 4, the corners under corner[0], 8); 0 for the
+ * other members; -1 when q has no periodic image (partner) on an opposite
+ * face (edge). The corners' family follows F (eq. 17). */
+int sbc_frame_family(const sbc_frame *f, int q, int members[8]);
+
 /* Recomputes A_q (eq. 2) and V from frame->X and frame->R. */
 void sbc_frame_update_geometry(sbc_frame *frame);
 

@@ -12,6 +12,11 @@ extern "C" {
 /* slots of a vector; a tensor has SBC_DIM_MAX * SBC_DIM_MAX */
 enum { SBC_DIM_MAX = 3, SBC_TENSOR_SLOTS = 9 };
 
+/* the components of a rotation (a rotation vector, moment, angular velocity)
+ * in dim dimensions: the one about e3 in 2D, three in 3D. Per-particle
+ * rotation arrays have this stride. */
+#define SBC_ROTATIONS(dim) ((dim) == 3 ? 3 : 1)
+
 /* slot of component T_ij (0-based) of a tensor */
 #define SBC_IJ(i, j) (SBC_DIM_MAX * (i) + (j))
 

@@ -15,8 +15,9 @@ struct sbc_driver {
     sbc_driver_callbacks cb;
     sbc_fire_state fire;
     int since_check; /* steps since the last confinement check */
-    int Q;
-    double *buf, *sum; /* [SBC_DRIVER_FRAME_SIZE(Q)] this rank's and all ranks' frame data */
+    int dim, Q;
+    size_t size;       /* SBC_DRIVER_FRAME_SIZE(dim, Q) */
+    double *buf, *sum; /* [size] this rank's and all ranks' frame data */
 };
 
 sbc_driver *sbc_driver_create(sbc_controller *c, const sbc_settings *s, const sbc_driver_callbacks *cb,
@@ -37,8 +38,10 @@ sbc_driver *sbc_driver_create(sbc_controller *c, const sbc_settings *s, const sb
     d->s = *s;
     d->cb = *cb;
     d->Q = sbc_controller_frame(c)->n;
-    d->buf = calloc(SBC_DRIVER_FRAME_SIZE(d->Q), sizeof(double));
-    d->sum = calloc(SBC_DRIVER_FRAME_SIZE(d->Q), sizeof(double));
+    d->dim = sbc_controller_frame(c)->dim;
+    d->size = SBC_DRIVER_FRAME_SIZE(d->dim, d->Q);
+    d->buf = calloc(d->size, sizeof(double));
+    d->sum = calloc(d->size, sizeof(double));
     if (!d->buf || !d->sum) {
         sbc_driver_free(d);
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", sbc_controller_frame(c)->n);
@@ -59,15 +62,15 @@ void sbc_driver_free(sbc_driver *d)
 
 sbc_fire_state *sbc_driver_fire(sbc_driver *d) { return &d->fire; }
 
-void sbc_driver_frame_from_snapshot(const sbc_snapshot *s, int Q, double *buf)
+void sbc_driver_frame_from_snapshot(const sbc_snapshot *s, int dim, int Q, double *buf)
 {
-    const size_t q = (size_t)Q;
+    const size_t q = (size_t)Q, r = (size_t)SBC_ROTATIONS(dim);
     memcpy(buf, s->x, sizeof(double) * 3 * q);
     memcpy(buf + 3 * q, s->force, sizeof(double) * 3 * q);
-    memcpy(buf + 6 * q, s->torque, sizeof(double) * q);
-    memcpy(buf + 7 * q, s->theta, sizeof(double) * q);
-    buf[8 * q] = s->rotation_sum;
-    buf[8 * q + 1] = (double)s->particle_count;
+    memcpy(buf + SBC_DRIVER_TORQUE(dim, Q), s->torque, sizeof(double) * r * q);
+    memcpy(buf + SBC_DRIVER_THETA(dim, Q), s->theta, sizeof(double) * r * q);
+    buf[SBC_DRIVER_SUMS(dim, Q)] = s->rotation_sum;
+    buf[SBC_DRIVER_SUMS(dim, Q) + 1] = (double)s->particle_count;
 }
 
 static void reduce(const sbc_driver *d, const double *in, double *out, int n, sbc_reduce_op op)
@@ -81,7 +84,7 @@ static void reduce(const sbc_driver *d, const double *in, double *out, int n, sb
 /* the frame data of all ranks into d->sum; the first n values reduced */
 static void gather_frame(sbc_driver *d, int n)
 {
-    memset(d->buf, 0, sizeof(double) * SBC_DRIVER_FRAME_SIZE(d->Q));
+    memset(d->buf, 0, sizeof(double) * d->size);
     d->cb.frame(d->cb.user_data, d->buf);
     reduce(d, d->buf, d->sum, n, SBC_REDUCE_SUM);
 }
@@ -148,13 +151,13 @@ sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err)
         need = sbc_controller_needs(d->ctl, &snap);
     }
     if (need & SBC_NEED_FRAME) {
-        gather_frame(d, (int)SBC_DRIVER_FRAME_SIZE(Q));
+        gather_frame(d, (int)d->size);
         snap.x = &d->sum[0];
         snap.force = &d->sum[3 * Q];
-        snap.torque = &d->sum[6 * Q];
-        snap.theta = &d->sum[7 * Q];
-        snap.rotation_sum = d->sum[8 * Q];
-        snap.particle_count = (long)d->sum[8 * Q + 1];
+        snap.torque = &d->sum[SBC_DRIVER_TORQUE(d->dim, Q)];
+        snap.theta = &d->sum[SBC_DRIVER_THETA(d->dim, Q)];
+        snap.rotation_sum = d->sum[SBC_DRIVER_SUMS(d->dim, Q)];
+        snap.particle_count = (long)d->sum[SBC_DRIVER_SUMS(d->dim, Q) + 1];
     }
     ev = sbc_controller_step(d->ctl, &snap, err);
     if (escaped(d, ev, err))

@@ -311,7 +311,7 @@ static void engine_contacts(void *user_data, double out[4])
 static void engine_frame(void *user_data, double *buf)
 {
     const run_state *r = user_data;
-    sbc_driver_frame_from_snapshot(&r->snap, r->frame.n, buf);
+    sbc_driver_frame_from_snapshot(&r->snap, r->frame.dim, r->frame.n, buf);
 }
 
 static int engine_confined(void *user_data, const double *fx, int increment, char *message, size_t cap)

@@ -41,7 +41,8 @@ static void start_classic(sbc_controller *c)
         if (c->s.bc == SBC_BC_T) {
             c->free_rot[q] = 1;
         } else {
-            c->theta_cmd[q] = 0.0;
+            for (k = 0; k < c->rot; ++k)
+                c->theta_cmd[c->rot * q + k] = 0.0;
             c->free_rot[q] = 0;
         }
     }
@@ -81,7 +82,7 @@ static double first_tol(const sbc_controller *c)
 static void save_commands(sbc_controller *c)
 {
     memcpy(c->motion.x_from, c->x_cmd, sizeof(double) * 3 * (size_t)c->frame->n);
-    memcpy(c->motion.th_from, c->theta_cmd, sizeof(double) * (size_t)c->frame->n);
+    memcpy(c->motion.th_from, c->theta_cmd, sizeof(double) * (size_t)(c->rot * c->frame->n));
 }
 
 static void start_increment(sbc_controller *c)
@@ -130,7 +131,7 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
                                       double dt, double kn, sbc_error *err)
 {
     sbc_controller *c;
-    size_t q = (size_t)frame->n;
+    size_t q = (size_t)frame->n, r = (size_t)SBC_ROTATIONS(frame->dim);
     if (!(dt > 0.0) || !isfinite(dt)) {
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc: time step %g s is not positive", dt);
         return NULL;
@@ -144,9 +145,9 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
                  "(sbc_settings_check_dimension holds the words to the packing)", frame->dim, settings->dim);
         return NULL;
     }
-    if (frame->dim == 3 && settings->bc != SBC_BC_D) {
-        sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: this version imposes (D) alone on a 3D frame ((P), (T) and mixed "
-                 "are 2D)", sbc_bc_name(settings->bc));
+    if (frame->dim == 3 && settings->bc == SBC_BC_MIXED) {
+        sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: this version imposes (D), (P) and (T) on a 3D frame (mixed is "
+                 "2D)", sbc_bc_name(settings->bc));
         return NULL;
     }
     c = calloc(1, sizeof *c);
@@ -162,6 +163,7 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         return NULL;
     }
     c->result.dim = frame->dim;
+    c->rot = SBC_ROTATIONS(frame->dim);
     c->dt = dt;
     c->kn = kn;
     c->total = sbc_settings_total_increments(settings);
@@ -173,17 +175,17 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     c->mode = calloc(3 * q, 1);
     c->mass = malloc(sizeof(double) * q);
     c->x_cmd = calloc(3 * q, sizeof(double));
-    c->theta_cmd = calloc(q, sizeof(double));
+    c->theta_cmd = calloc(r * q, sizeof(double));
     c->free_rot = calloc(q, 1);
     c->a = calloc(3 * q, sizeof(double));
-    c->m = malloc(sizeof(double) * q);
+    c->m = calloc(r * q, sizeof(double));
     c->x_prev = calloc(3 * q, sizeof(double));
     c->du = calloc(3 * q, sizeof(double));
     c->a_hat = calloc(3 * q, sizeof(double));
-    c->dtheta = calloc(q, sizeof(double));
+    c->dtheta = calloc(r * q, sizeof(double));
     c->secant.d_prev = calloc((size_t)SBC_CTL_STEP_PARTS(frame->dim) * q, sizeof(double));
     c->secant.lambda = 1.0;
-    if (!sbc_motion_alloc(&c->motion, frame->n) || !c->secant.d_prev || !c->mass || !c->x_cmd || !c->theta_cmd ||
+    if (!sbc_motion_alloc(&c->motion, frame->n, c->rot) || !c->secant.d_prev || !c->mass || !c->x_cmd || !c->theta_cmd ||
         !c->free_rot || !c->a || !c->m || !c->x_prev || !c->du || !c->a_hat || !c->dtheta || !c->mode) {
         sbc_controller_free(c);
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory for a frame of %d particles", frame->n);
@@ -195,14 +197,19 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     if (c->s.bc == SBC_BC_MIXED)
         sbc_ctl_assign_modes(c);
     if (c->s.bc == SBC_BC_P || c->s.bc == SBC_BC_MIXED) {
-        size_t k;
-        for (k = 0; k < q; ++k) {
-            if (frame->side[k] != SBC_SIDE_CORNER && frame->partner[k] < 0 &&
-                (c->s.bc == SBC_BC_P || c->mode[3 * k] == SBC_MODE_P)) {
-                sbc_fail(err, SBC_ERR_FRAME,
-                         "servo_bc %s: frame particle %d (packing index %d) has no periodic partner on the opposite "
-                         "edge (opposite edges must hold equally many particles)",
-                         sbc_bc_name(c->s.bc), (int)k, frame->particle[k]);
+        int k, member[8];
+        for (k = 0; k < frame->n; ++k) {
+            if (sbc_frame_family(frame, k, member) < 0 && (c->s.bc == SBC_BC_P || c->mode[3 * k] == SBC_MODE_P)) {
+                if (frame->dim == 2)
+                    sbc_fail(err, SBC_ERR_FRAME,
+                             "servo_bc %s: frame particle %d (packing index %d) has no periodic partner on the "
+                             "opposite edge (opposite edges must hold equally many particles)",
+                             sbc_bc_name(c->s.bc), k, frame->particle[k]);
+                else
+                    sbc_fail(err, SBC_ERR_FRAME,
+                             "servo_bc %s: frame particle %d (packing index %d) has no periodic image on an opposite "
+                             "face (opposite faces must hold their centres at the same places)",
+                             sbc_bc_name(c->s.bc), k, frame->particle[k]);
                 sbc_controller_free(c);
                 return NULL;
             }
@@ -278,7 +285,7 @@ static int frame_finite(const sbc_frame *f, const sbc_snapshot *s, const char **
         if (!isfinite(s->x[k])) { *what = "frame position"; return 0; }
         if (!isfinite(s->force[k])) { *what = "frame reaction force"; return 0; }
     }
-    for (k = 0; k < f->n; ++k)
+    for (k = 0; k < SBC_ROTATIONS(f->dim) * f->n; ++k)
         if (!isfinite(s->theta[k]) || !isfinite(s->torque[k])) { *what = "frame rotation or moment"; return 0; }
     return 1;
 }
@@ -411,7 +418,9 @@ static int correction_moves_frame(const sbc_controller *c)
             move += fabs(c->du[3 * q + k]);
             size += fabs(c->x_cmd[3 * q + k]);
         }
-        if (move + R * fabs(c->dtheta[q]) > 16.0 * DBL_EPSILON * (size + R))
+        for (k = 0; k < c->rot; ++k)
+            move += R * fabs(c->dtheta[c->rot * q + k]);
+        if (move > 16.0 * DBL_EPSILON * (size + R))
             return 1;
     }
     return 0;
@@ -503,7 +512,7 @@ static sbc_event stage_read_frame(sbc_controller *c, const sbc_snapshot *snap, s
     }
     for (k = 0; k < 3 * c->frame->n; ++k) /* eq. 5: sum of contact forces = -a_q */
         c->a[k] = k % 3 < c->frame->dim ? -snap->force[k] : 0.0;
-    for (k = 0; k < c->frame->n; ++k)
+    for (k = 0; k < c->rot * c->frame->n; ++k)
         c->m[k] = -snap->torque[k];
     c->steps += c->relax.steps;
     return STAGE_ON;
@@ -597,7 +606,7 @@ static sbc_event stage_correct(sbc_controller *c, const double F_measured[9], co
     save_commands(c);
     for (k = 0; k < 3 * c->frame->n; ++k)
         c->x_cmd[k] += c->du[k];
-    for (k = 0; k < c->frame->n; ++k)
+    for (k = 0; k < c->rot * c->frame->n; ++k)
         c->theta_cmd[k] += c->dtheta[k];
     c->servo = 1;
     c->iteration++;

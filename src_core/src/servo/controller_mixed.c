@@ -125,7 +125,8 @@ void sbc_ctl_start_mixed(sbc_controller *c)
         }
         c->free_rot[q] = (unsigned char)any_t;
         if (all_d)
-            c->theta_cmd[q] = 0.0;
+            for (k = 0; k < c->rot; ++k)
+                c->theta_cmd[c->rot * q + k] = 0.0;
     }
     sbc_ctl_mixed_follow_F(c);
 }

@@ -16,8 +16,8 @@
 #include "update_rules.h"
 
 /* parts of one frame particle's correction for the secant update: du (dim
-   components) and R dtheta (one in-plane rotation) */
-#define SBC_CTL_STEP_PARTS(dim) ((dim) + 1)
+   components) and R dtheta (SBC_ROTATIONS(dim) components) */
+#define SBC_CTL_STEP_PARTS(dim) ((dim) + SBC_ROTATIONS(dim))
 
 struct sbc_controller {
     sbc_frame ref;       /* the controller's copy of the frame: the reference of
@@ -39,12 +39,13 @@ struct sbc_controller {
     int increment;       /* 0 .. i_tot */
     sbc_relax relax;
     double *x_cmd;       /* [3Q] m */
-    double *theta_cmd;   /* [Q] rad */
+    int rot;             /* SBC_ROTATIONS(dim): the stride of the rotation arrays */
+    double *theta_cmd;   /* [rot Q] rad */
     unsigned char *free_rot;
     double *a;           /* [3Q] boundary forces a_q = -sum of contact forces (eq. 5), N */
-    double *m;           /* [Q] boundary moments m_q = -sum of contact moments (eq. 5), N m */
+    double *m;           /* [rot Q] boundary moments m_q = -sum of contact moments (eq. 5), N m */
     double *x_prev;      /* [3Q] converged positions of the previous increment (prediction), m */
-    double *du, *dtheta; /* [3Q], [Q] servo corrections, m, rad */
+    double *du, *dtheta; /* [3Q], [rot Q] servo corrections, m, rad */
     sbc_secant secant;   /* the secant update's state (update_rules.h) */
     double F_prev[9];    /* F imposed at the previous increment */
     double F_now[9];     /* F imposed at this increment */

@@ -56,7 +56,7 @@ static size_t slot(const state_field *f, size_t j)
 static int state_fields(sbc_controller *c, double *ref, state_field f[STATE_FIELDS])
 {
     const int dim = c->frame->dim;
-    const size_t q = (size_t)c->frame->n, d = (size_t)dim;
+    const size_t q = (size_t)c->frame->n, d = (size_t)dim, rq = (size_t)c->rot * q;
     sbc_result *r = &c->result;
     int n = 0;
 #define REAL(name, at, count) f[n++] = (state_field){name, 'r', at, count, 0, 0, ' ', dim}
@@ -112,15 +112,15 @@ static int state_fields(sbc_controller *c, double *ref, state_field f[STATE_FIEL
     REAL("result unbalanced", &r->unbalanced, 1);
     REAL("result frame_residual", &r->frame_residual, 1);
     VECTORS("x_cmd", c->x_cmd);
-    REAL("theta_cmd", c->theta_cmd, q);
+    REAL("theta_cmd", c->theta_cmd, rq);
     f[n++] = (state_field){"free_rot", 'u', c->free_rot, q, 0, 1, ' ', dim};
     VECTORS("x_prev", c->x_prev);
     VECTORS("reference X", ref);
     REAL("d_prev", c->secant.d_prev, (size_t)SBC_CTL_STEP_PARTS(dim) * q);
     VECTORS("motion x_from", c->motion.x_from);
     VECTORS("motion x_goal", c->motion.x_goal);
-    REAL("motion th_from", c->motion.th_from, q);
-    REAL("motion th_goal", c->motion.th_goal, q);
+    REAL("motion th_from", c->motion.th_from, rq);
+    REAL("motion th_goal", c->motion.th_goal, rq);
 #undef REAL
 #undef TENSOR
 #undef VECTORS

@@ -70,10 +70,11 @@ void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n)
     const int nd = SBC_CTL_STEP_PARTS(f->dim);
     int q, k;
     for (q = 0; q < f->n; ++q) {
-        double d[SBC_DIM_MAX + 1], len = 0.0, *prev = &c->secant.d_prev[nd * q];
+        double d[2 * SBC_DIM_MAX], len = 0.0, *prev = &c->secant.d_prev[nd * q];
         for (k = 0; k < f->dim; ++k)
             d[k] = c->du[3 * q + k];
-        d[f->dim] = f->R[q] * c->dtheta[q];
+        for (k = 0; k < c->rot; ++k)
+            d[f->dim + k] = f->R[q] * c->dtheta[c->rot * q + k];
         for (k = 0; k < nd; ++k)
             len += d[k] * d[k];
         len = sqrt(len);
@@ -99,7 +100,7 @@ void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n)
     c->secant.have_prev = 1;
     for (k = 0; k < 3 * f->n; ++k)
         c->du[k] *= lam;
-    for (k = 0; k < f->n; ++k)
+    for (k = 0; k < c->rot * f->n; ++k)
         c->dtheta[k] *= lam;
     n->max_step *= lam;
 }

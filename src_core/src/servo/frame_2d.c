@@ -57,7 +57,28 @@ static int inside_polygon(const sbc_frame *f, const double *fx, const double *p)
     return in;
 }
 
-const sbc_frame_geometry sbc_frame_geometry_2d = {2, "polygon", area_vectors, inside_polygon};
+/* (P)'s families in 2D: a bottom or right particle and its partner on the
+ * opposite edge; the four corners BL, BR, TR, TL under BL */
+static int family_2d(const sbc_frame *f, int q, int members[8])
+{
+    int c;
+    if (f->side[q] == SBC_SIDE_CORNER) {
+        if (q != f->corner[SBC_CORNER_BL])
+            return 0;
+        for (c = 0; c < 4; ++c)
+            members[c] = f->corner[c];
+        return 4;
+    }
+    if (f->partner[q] < 0)
+        return -1;
+    if (f->side[q] != SBC_SIDE_BOTTOM && f->side[q] != SBC_SIDE_RIGHT)
+        return 0;
+    members[0] = q;
+    members[1] = f->partner[q];
+    return 2;
+}
+
+const sbc_frame_geometry sbc_frame_geometry_2d = {2, "polygon", area_vectors, inside_polygon, family_2d};
 
 /* Pairs the edge positions [first, first+count) with [other, other+count),
  * which run in the opposite direction (bottom x ascending against top x

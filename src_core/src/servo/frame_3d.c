@@ -86,7 +86,33 @@ static int inside_polyhedron(const sbc_frame *f, const double *fx, const double 
     return in;
 }
 
-const sbc_frame_geometry sbc_frame_geometry_3d = {3, "polyhedron", area_vectors, inside_polyhedron};
+/* (P)'s families in 3D: a particle on the low face of each axis it lies on
+ * and its images across those axes (sbc_frame.image): a face pair, an edge
+ * quadruple, the eight corners; members ordered by the bits of the axes
+ * crossed */
+static int family_3d(const sbc_frame *f, int q, int members[8])
+{
+    int axis[3], na = 0, a, s, j;
+    for (a = 0; a < 3; ++a)
+        if (f->side[q] >> (2 * a) & 3) {
+            if (f->image[3 * q + a] < 0)
+                return -1;
+            axis[na++] = a;
+        }
+    for (j = 0; j < na; ++j)
+        if (f->side[q] >> (2 * axis[j]) & 2) /* on a high face: a member of another's family */
+            return 0;
+    for (s = 0; s < 1 << na; ++s) {
+        int p = q;
+        for (j = 0; j < na; ++j)
+            if (s >> j & 1)
+                p = f->image[3 * p + axis[j]];
+        members[s] = p;
+    }
+    return 1 << na;
+}
+
+const sbc_frame_geometry sbc_frame_geometry_3d = {3, "polyhedron", area_vectors, inside_polyhedron, family_3d};
 
 /* ---- detection ---- */
 

@@ -15,3 +15,8 @@ const sbc_frame_geometry *sbc_frame_geometry_of(int dim)
 }
 
 void sbc_frame_update_geometry(sbc_frame *f) { sbc_frame_geometry_of(f->dim)->area_vectors(f); }
+
+int sbc_frame_family(const sbc_frame *f, int q, int members[8])
+{
+    return sbc_frame_geometry_of(f->dim)->family(f, q, members);
+}

@@ -15,6 +15,8 @@ typedef struct sbc_frame_geometry {
     void (*area_vectors)(sbc_frame *f);
     /* 1 when the point p [dim] is inside the surface through the centres fx [3Q] */
     int (*inside)(const sbc_frame *f, const double *fx, const double *p);
+    /* sbc_frame_family (frame.h) */
+    int (*family)(const sbc_frame *f, int q, int members[8]);
 } sbc_frame_geometry;
 
 extern const sbc_frame_geometry sbc_frame_geometry_2d, sbc_frame_geometry_3d;

@@ -5,13 +5,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-int sbc_motion_alloc(sbc_motion *m, int q)
+int sbc_motion_alloc(sbc_motion *m, int q, int rot)
 {
     size_t n = (size_t)q;
+    m->rot = rot;
     m->x_from = calloc(3 * n, sizeof(double));
     m->x_goal = calloc(3 * n, sizeof(double));
-    m->th_from = calloc(n, sizeof(double));
-    m->th_goal = calloc(n, sizeof(double));
+    m->th_from = calloc((size_t)rot * n, sizeof(double));
+    m->th_goal = calloc((size_t)rot * n, sizeof(double));
     m->steps = m->done = 1;
     return m->x_from && m->x_goal && m->th_from && m->th_goal;
 }
@@ -30,7 +31,7 @@ static void place(const sbc_motion *m, int q, double t, double *x, double *th)
     int k;
     for (k = 0; k < 3 * q; ++k)
         x[k] = t >= 1.0 ? m->x_goal[k] : m->x_from[k] + t * (m->x_goal[k] - m->x_from[k]);
-    for (k = 0; k < q; ++k)
+    for (k = 0; k < m->rot * q; ++k)
         th[k] = t >= 1.0 ? m->th_goal[k] : m->th_from[k] + t * (m->th_goal[k] - m->th_from[k]);
 }
 
@@ -40,14 +41,16 @@ void sbc_motion_begin(sbc_motion *m, const sbc_frame *f, const double *mass, dou
     double longest = 0.0; /* the most time steps one frame particle needs */
     int q;
     memcpy(m->x_goal, x, sizeof(double) * 3 * (size_t)f->n);
-    memcpy(m->th_goal, th, sizeof(double) * (size_t)f->n);
+    memcpy(m->th_goal, th, sizeof(double) * (size_t)(m->rot * f->n));
     if (speed > 0.0 && kn > 0.0) {
         for (q = 0; q < f->n; ++q) {
             const double R = f->R[q];
             const double *a = &m->x_from[3 * q], *b = &m->x_goal[3 * q];
+            const double *ta = &m->th_from[m->rot * q], *tb = &m->th_goal[m->rot * q];
             /* hypot(h, 0) = |h| exactly (C11 F.10.4.3): a 2D frame's length is hypot(d0, d1) */
-            const double path = hypot(hypot(b[0] - a[0], b[1] - a[1]), b[2] - a[2]) +
-                                R * fabs(m->th_goal[q] - m->th_from[q]);
+            const double turn = m->rot == 1 ? fabs(tb[0] - ta[0])
+                                            : hypot(hypot(tb[0] - ta[0], tb[1] - ta[1]), tb[2] - ta[2]);
+            const double path = hypot(hypot(b[0] - a[0], b[1] - a[1]), b[2] - a[2]) + R * turn;
             const double per_step = speed * R * dt / sqrt(2.0 * mass[q] / kn); /* m per time step */
             if (path / per_step > longest)
                 longest = path / per_step;

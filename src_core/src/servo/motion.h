@@ -14,13 +14,14 @@
 #include "sbc/frame.h"
 
 typedef struct sbc_motion {
-    double *x_from, *th_from; /* [3Q], [Q] commands before the move, m, rad */
-    double *x_goal, *th_goal; /* [3Q], [Q] commands after it */
+    int rot;                  /* SBC_ROTATIONS(dim): the stride of the rotations */
+    double *x_from, *th_from; /* [3Q], [rot Q] commands before the move, m, rad */
+    double *x_goal, *th_goal; /* [3Q], [rot Q] commands after it */
     long steps;               /* time steps the move takes (>= 1) */
     long done;                /* ... of which taken */
 } sbc_motion;
 
-int sbc_motion_alloc(sbc_motion *m, int q);
+int sbc_motion_alloc(sbc_motion *m, int q, int rot);
 void sbc_motion_free(sbc_motion *m);
 
 /* Starts a move from the commands in force (x_from, th_from, copied by the

@@ -5,6 +5,7 @@
 #include "sbc/homogenize.h"
 
 #include <math.h>
+#include <string.h>
 
 /* (P), eqs. 32-34. Residuals on each +/- edge pair:
  *   da_e = a+_e + a-_e,   dm_e = m+_e + m-_e,   dm_c = sum of the four corner moments.
@@ -39,16 +40,11 @@ static raw_sums no_sums(double kn, const sbc_servo_floors *floors)
     return w;
 }
 
-/* one force residual da (N) of a particle or pair of radius R, and one moment
- * residual dm (N m) if moment */
-static void add_residual(raw_sums *w, double da2, double R, int moment, double dm)
+/* one force residual da (N) */
+static void add_residual(raw_sums *w, double da2)
 {
     w->fr += da2;
     w->fr_lo += w->roundoff * w->roundoff;
-    if (moment) {
-        w->mr += dm * dm;
-        w->mr_lo += w->roundoff * w->roundoff * R * R;
-    }
 }
 
 /* The gains. update fixed: the paper's, from the dimensionless values of
@@ -127,65 +123,106 @@ static void relative_norms(const sbc_settings *s, const raw_sums *w, sbc_servo_n
     o->r_moment = w->mr > 0.0 ? (ms > 0.0 ? sqrt(w->mr / ms) : 1.0) : 0.0;
 }
 
-/* One +/- pair (q, p) of (P): corrections on both partners alike; adds the
- * pair's normalized squared residuals to *sf and *sm, the raw ones to *w. */
-static void periodic_pair(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, int q, int p,
-                          const double *a, const double *m, double *du, double *dtheta, double *sf, double *sm,
-                          raw_sums *w, sbc_servo_norms *o)
+/* |theta| of a rotation of r components: the angle in 2D, the length of the
+   rotation vector in 3D */
+static double rotation_length(int r, const double *v)
 {
-    double M = 0.5 * (mass[q] + mass[p]), R = 0.5 * (f->R[q] + f->R[p]);
-    double at = M * R / (dt * dt);     /* a~ of eq. 37, N */
-    double mt = M * R * R / (dt * dt); /* m~ of eq. 37, N m */
-    const int dim = f->dim;
-    double da[3] = {0.0, 0.0, 0.0}, u[3] = {0.0, 0.0, 0.0}, dm = m[q] + m[p];
-    double ga = gain_force(s, w, dt, M, 0.25), gm = gain_moment(s, w, dt, M, R), step;
-    int k;
-    for (k = 0; k < dim; ++k) {
-        da[k] = a[3 * q + k] + a[3 * p + k];
-        u[k] = -ga * da[k];
+    return r == 1 ? fabs(v[0]) : hypot(hypot(v[0], v[1]), v[2]);
+}
+
+/* One family of (P) (sbc_frame_family: a +/- pair, in 3D also an edge
+ * quadruple): the sums of its forces and moments are its residuals; the
+ * corrections go to every member alike, which keeps x+ - x- = F (X+ - X-)
+ * (eq. 19) exactly. Adds the family's normalized squared residuals to *sf
+ * and *sm, the raw ones to *w. M, R: the members' means; the secant's first
+ * step shares the force over the 2k contacts of the k members. */
+static void periodic_family(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt,
+                            const int *member, int count, const double *a, const double *m, double *du,
+                            double *dtheta, double *sf, double *sm, raw_sums *w, sbc_servo_norms *o)
+{
+    const int dim = f->dim, rot = SBC_ROTATIONS(dim);
+    double M = 0.0, R = 0.0, at, mt, ga, gm, step;
+    double da[3] = {0.0, 0.0, 0.0}, u[3] = {0.0, 0.0, 0.0}, dm[3] = {0.0, 0.0, 0.0}, t[3] = {0.0, 0.0, 0.0};
+    int j, k;
+    for (j = 0; j < count; ++j) {
+        M += mass[member[j]];
+        R += f->R[member[j]];
+        for (k = 0; k < dim; ++k)
+            da[k] += a[3 * member[j] + k];
+        for (k = 0; k < rot; ++k)
+            dm[k] += m[rot * member[j] + k];
     }
+    M *= 1.0 / count;
+    R *= 1.0 / count;
+    at = M * R / (dt * dt);     /* a~ of eq. 37, N */
+    mt = M * R * R / (dt * dt); /* m~ of eq. 37, N m */
+    ga = gain_force(s, w, dt, M, 0.5 / count);
+    gm = gain_moment(s, w, dt, M, R);
+    for (k = 0; k < dim; ++k)
+        u[k] = -ga * da[k];
+    for (k = 0; k < rot; ++k)
+        t[k] = -gm * dm[k];
     *sf += norm2(dim, da) / (at * at);
-    *sm += dm * dm / (mt * mt);
-    add_residual(w, norm2(dim, da), R, 1, dm);
-    add_scale(w, dim, &a[3 * q], f->R[q]);
-    add_scale(w, dim, &a[3 * p], f->R[p]);
-    for (k = 0; k < SBC_DIM_MAX; ++k)
-        du[3 * q + k] = du[3 * p + k] = u[k];
-    dtheta[q] = dtheta[p] = -gm * dm;
+    *sm += norm2(rot, dm) / (mt * mt);
+    add_residual(w, norm2(dim, da));
+    w->mr += norm2(rot, dm);
+    w->mr_lo += w->roundoff * w->roundoff * R * R;
+    for (j = 0; j < count; ++j)
+        add_scale(w, dim, &a[3 * member[j]], f->R[member[j]]);
+    for (j = 0; j < count; ++j) {
+        for (k = 0; k < SBC_DIM_MAX; ++k)
+            du[3 * member[j] + k] = u[k];
+        for (k = 0; k < rot; ++k)
+            dtheta[rot * member[j] + k] = t[k];
+    }
     step = sqrt(norm2(dim, u)) / R;
     if (step > o->max_step) o->max_step = step;
-    step = fabs(gm * dm); /* rotation step in rad = arc length / R */
+    step = gm * rotation_length(rot, dm); /* rotation step in rad = arc length / R */
     if (step > o->max_step) o->max_step = step;
 }
 
+/* (P): every family but the corners' (periodic_family); the corners follow F
+ * (eq. 17) and share one rotation, servo-controlled on the sum of their
+ * moments. */
 static void servo_periodic(const sbc_frame *f, const sbc_settings *s, const double *mass, double dt, double kn, const sbc_servo_floors *floors,
                            const double *a, const double *m, double *du, double *dtheta, sbc_servo_norms *o)
 {
-    double sf = 0.0, sm = 0.0, dmc = 0.0, mc = 0.0, rc = 0.0;
+    const int rot = SBC_ROTATIONS(f->dim);
+    double sf = 0.0, sm = 0.0, dmc[3] = {0.0, 0.0, 0.0}, mc = 0.0, rc = 0.0;
     raw_sums w = no_sums(kn, floors);
-    int q, c;
-    for (q = 0; q < f->n; ++q)
-        if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT) /* each pair once */
-            periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, &w, o);
-    for (c = 0; c < 4; ++c) {
-        int qc = f->corner[c];
-        dmc += m[qc];
-        mc += 0.25 * mass[qc];
-        rc += 0.25 * f->R[qc];
+    int q, c, k, corners = 0, corner[8], member[8];
+    for (q = 0; q < f->n; ++q) {
+        const int count = sbc_frame_family(f, q, member);
+        if (count <= 0)
+            continue;
+        if (q == f->corner[0]) { /* the corners' family: after the others */
+            corners = count;
+            memcpy(corner, member, sizeof corner);
+            continue;
+        }
+        periodic_family(f, s, mass, dt, member, count, a, m, du, dtheta, &sf, &sm, &w, o);
+    }
+    for (c = 0; c < corners; ++c) {
+        int qc = corner[c];
+        for (k = 0; k < rot; ++k)
+            dmc[k] += m[rot * qc + k];
+        mc += mass[qc] / corners;
+        rc += f->R[qc] / corners;
         add_scale(&w, f->dim, &a[3 * qc], f->R[qc]);
     }
-    w.mr += dmc * dmc;
+    w.mr += norm2(rot, dmc);
     w.mr_lo += w.roundoff * w.roundoff * rc * rc;
     {
         double mt = mc * rc * rc / (dt * dt);
         double gm = gain_moment(s, &w, dt, mc, rc);
-        sm += dmc * dmc / (mt * mt);
-        for (c = 0; c < 4; ++c) {
-            int qc = f->corner[c];
+        sm += norm2(rot, dmc) / (mt * mt);
+        for (c = 0; c < corners; ++c) {
+            int qc = corner[c];
             du[3 * qc] = du[3 * qc + 1] = du[3 * qc + 2] = 0.0; /* corners follow F (eq. 17) */
-            dtheta[qc] = -gm * dmc;
+            for (k = 0; k < rot; ++k)
+                dtheta[rot * qc + k] = -gm * dmc[k];
         }
-        if (fabs(gm * dmc) > o->max_step) o->max_step = fabs(gm * dmc);
+        if (gm * rotation_length(rot, dmc) > o->max_step) o->max_step = gm * rotation_length(rot, dmc);
     }
     o->r_force = sqrt(sf);
     o->r_moment = sqrt(sm);
@@ -239,7 +276,7 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
         }
         sf += norm2(dim, da) / (at * at);
         sd += norm2(dim, dF) / (Ft * Ft);
-        add_residual(&w, norm2(dim, da), R, 0, 0.0);
+        add_residual(&w, norm2(dim, da));
         add_scale(&w, dim, &a[3 * q], R);
         add_scale(&w, dim, t, R);
         {
@@ -248,7 +285,8 @@ static void servo_traction(const sbc_frame *f, const sbc_settings *s, const doub
                 u[i] = ga * da[i] + gF * dF[i];
             for (i = 0; i < SBC_DIM_MAX; ++i)
                 du[3 * q + i] = u[i];
-            dtheta[q] = 0.0; /* free rotation */
+            for (i = 0; i < SBC_ROTATIONS(dim); ++i)
+                dtheta[SBC_ROTATIONS(dim) * q + i] = 0.0; /* free rotation */
             step = sqrt(norm2(dim, u)) / R;
             if (step > o->max_step) o->max_step = step;
         }
@@ -290,16 +328,18 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
     for (k = 0; k < 9; ++k)
         if (P_fixed[k])
             P[k] = P_star[k];
-    for (q = 0; q < f->n; ++q) {
-        du[3 * q] = du[3 * q + 1] = du[3 * q + 2] = dtheta[q] = 0.0;
-    }
+    for (q = 0; q < 3 * f->n; ++q)
+        du[q] = 0.0;
+    for (q = 0; q < SBC_ROTATIONS(f->dim) * f->n; ++q)
+        dtheta[q] = 0.0;
     for (q = 0; q < f->n; ++q) {
         const double *A = &f->A[3 * q];
         double R = f->R[q], at = mass[q] * R / (dt * dt), ga = gain_force(s, &w, dt, mass[q], 0.5);
         int c;
-        if (mode[3 * q] == SBC_MODE_P) {
-            if (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)
-                periodic_pair(f, s, mass, dt, q, f->partner[q], a, m, du, dtheta, &sf, &sm, &w, o);
+        if (mode[3 * q] == SBC_MODE_P) { /* the families but the corners' */
+            int member[8], count = sbc_frame_family(f, q, member);
+            if (count > 0 && q != f->corner[0])
+                periodic_family(f, s, mass, dt, member, count, a, m, du, dtheta, &sf, &sm, &w, o);
             continue;
         }
         for (c = 0; c < f->dim; ++c) {
@@ -308,7 +348,7 @@ void sbc_servo_mixed(const sbc_frame *f, const unsigned char *mode, const sbc_se
                 continue;
             da = row_dot(f->dim, P, c, A) - a[3 * q + c];
             sf += da * da / (at * at);
-            add_residual(&w, da * da, R, 0, 0.0);
+            add_residual(&w, da * da);
             w.fs += a[3 * q + c] * a[3 * q + c] + (da + a[3 * q + c]) * (da + a[3 * q + c]); /* measured and target */
             w.fs_lo += 2.0 * w.floor * w.floor;
             du[3 * q + c] = ga * da;

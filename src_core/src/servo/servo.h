@@ -25,9 +25,9 @@ typedef struct sbc_servo_floors {
     double roundoff;
 } sbc_servo_floors;
 
-/* Residual norms of the state (a [3Q] boundary forces, m [Q] boundary
- * moments, x [3Q] positions) and the corrections (eqs. 33-34 for P, 36 for
- * T) written to du [3Q] (m) and dtheta [Q] (rad). F is the imposed
+/* Residual norms of the state (a [3Q] boundary forces, m [rQ] boundary
+ * moments, r = SBC_ROTATIONS(dim), x [3Q] positions) and the corrections
+ * (eqs. 33-34 for P, 36 for T) written to du [3Q] (m) and dtheta [rQ] (rad). F is the imposed
  * macroscopic deformation gradient, mass [Q] in kg, dt in s; kn (N/m) the
  * host's contact stiffness (0: unknown), for the secant update's gains; floors:
  * those of the relative norms. */

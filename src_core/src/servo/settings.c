@@ -446,14 +446,14 @@ sbc_status sbc_settings_check_dimension(sbc_settings *s, int dim, sbc_error *err
         s->dim = 3;
         sbc_tensor_identity(3, s->F);
     }
+    if (dim == 3 && (s->bc == SBC_BC_MIXED || s->nstress > 0))
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: the packing is 3D; mixed conditions and keyword 'stress' "
+                        "are 2D in this version", s->bc == SBC_BC_MIXED ? "mixed" : "stress");
     if (s->dim == dim)
         return SBC_OK;
     if (s->dim == 3)
         return sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': 9 values give a 3D F, but the packing is 2D (expected 4 "
                         "values, F11 F12 F21 F22)");
-    if (s->bc == SBC_BC_MIXED || s->nstress > 0)
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: the packing is 3D; mixed conditions and keyword 'stress' "
-                        "are 2D in this version", s->bc == SBC_BC_MIXED ? "mixed" : "stress");
     return sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': 4 values give a 2D F, but the packing is 3D (expected 9 values, "
                     "F11 F12 F13 F21 F22 F23 F31 F32 F33, row-major)");
 }
