@@ -59,6 +59,35 @@ cubic_form() {
   fi
 }
 
+# layer3d_form NP [VAR VALUE ...]: the stress stage of the 3D layer (mixed:
+# zlo D D D, zhi D D T, the side faces P P P) on the touching 4 x 4 x 4
+# lattice of $DECK (its variables given: 2 mm spheres, friction) under P33* =
+# -1e4 N/m^2 in 2 increments at accuracy tight, against docs/frame3d.md: F33
+# = 1 - p d (N - 3/2)^2 / (kn (N - 1)^2) = 1 - 1/720 within 1e-6 of 1 - F33
+# and P33 = -1e4 within 1e-6; |hill_mandel| <= 1e-6. (Its shear stage is a
+# mechanism for rotating spheres: docs/frame3d.md, "The 3D layer".)
+layer3d_form() {
+  local out np=$1
+  shift
+  sed 's/servo_bc ${bc} F .* increments 2 accuracy tight/servo_bc mixed stress P33 -1e4 2 F 1 0 0 0 1 0 0 0 1 increments 1 accuracy tight/' \
+    "$DECK" > "$TMP/layer3d.in"
+  run_deck "$np" layer3d.in "$TMP/layer3d$np.csv" "$TMP/layer3d$np.log" "$@"
+  out=$(awk -F, "$COLUMNS_AWK"'NR > 1 {
+      n++
+      h = $col("hill_mandel"); if (h < 0) h = -h; if (h > hm) hm = h
+      if (n == 3) { e = (1 - $col("F33")) / (1 / 720) - 1; e = e < 0 ? -e : e
+                    s = ($col("P33") + 1e4) / 1e4; s = s < 0 ? -s : s; if (s > e) e = s }
+    }
+    END { printf "%d %.3g %.3g", n, e, hm }' "$TMP/layer3d$np.csv" 2>/dev/null)
+  set -- $out
+  if [ "${1:-0}" = 4 ] && awk -v e="$2" -v h="$3" 'BEGIN { exit !(e <= 1e-6 && h <= 1e-6) }'; then
+    ok "3d layer (mixed), stress stage on the 4^3 touching lattice, $np rank(s): F33 and P33 within $2 of the closed form, |hill_mandel| <= $3"
+  else
+    no "3d layer on $np rank(s): rows ${1:-0} of 4, stress stage ${2:-?} of the closed form (limit 1e-6), hill_mandel ${3:-?}"
+    grep -m2 "ERROR\|servo_bc:" "$TMP/layer3d$np.log"
+  fi
+}
+
 # deck_with SED-EXPRESSION OUT: the lattice deck edited
 deck_with() { sed "$1" "$DECK" > "$2"; }
 

@@ -49,9 +49,10 @@ static void thermo_vector(void)
         sbc_result_line(&r, SBC_BC_P, 10, line, sizeof line);
         CHECK(strcmp(line, "servo_bc P: increment 7/10 F12 +2.00000 sigma11 +2.000000e+01 sigma12 +2.100000e+01 N/m "
                            "steps 1234 iterations 5 unbalanced 1e-05 HM -3.0e-09") == 0);
-        r.dim = 3; /* stresses per area in 3D */
+        r.dim = 3; /* stresses per area in 3D; the layer's F13, sigma33, sigma13 */
         sbc_result_line(&r, SBC_BC_D, 10, line, sizeof line);
-        CHECK(strstr(line, "sigma12 +2.100000e+01 N/m^2 steps 1234") != NULL);
+        CHECK(strstr(line, "increment 7/10 F13 +3.00000 sigma33 +2.800000e+01 sigma13 +2.200000e+01 N/m^2 steps 1234") !=
+              NULL);
     }
 }
 

@@ -18,7 +18,7 @@ frictional_checks 's/^fix             kt all property\/global kt peratomtypepair
 outputs_checks
 refuses "a 2D F in a 3d box" 's/^dimension       2/dimension 3/; /enforce2d/d' "keyword 'F': 4 values give a 2D F, but the packing is 3D"
 refuses "a 3d box of one layer (F with nine values)" 's/^dimension       2/dimension 3/; /enforce2d/d; s/servo_bc D F 1.002 0 0 0.997/servo_bc D F 1.002 0 0 0 0.997 0 0 0 1/' "frame: the packing is too thin"
-refuses "mixed in a 3d box" 's/^dimension       2/dimension 3/; /enforce2d/d; s/servo_bc D F 1.002 0 0 0.997/servo_bc mixed F 1.002 0 0 0 1 0 0 0 1 stress P22 -1 1/' "mixed conditions and keyword 'stress' are 2D in this version"
+refuses "mixed words of 2D in a 3d box" 's/^dimension       2/dimension 3/; /enforce2d/d; s/servo_bc D F 1.002 0 0 0.997/servo_bc mixed F 1.002 0 0 1 stress P22 -1 1/' "the packing is 3D but the words are 2D: give F with nine values"
 refuses "a pair style without tangential history" 's/tangential history/tangential no_history/' \
   "keeps no tangential history"
 # the documented run in pieces (no setup between them) writes the CSV of one

@@ -3,7 +3,8 @@
 # tests/liggghts/cubic.in against the closed forms of docs/frame3d.md
 # (host_checks.sh, cubic_form): (D) and (P) on the prestressed lattice with
 # friction (kt = kn / 2, mu 0.5), 1 and 2 ranks; (T) on the touching
-# frictionless lattice. Prints "N passed, N failed".
+# frictionless lattice; the 3D layer (mixed) on the touching lattice with
+# friction, 1 and 2 ranks. Prints "N passed, N failed".
 # Usage: cubic.sh LIGGGHTS_SERVO
 set -u
 BIN=$(cd "$(dirname "${1:?usage: cubic.sh LIGGGHTS_SERVO}")" && pwd)/$(basename "$1")
@@ -30,6 +31,9 @@ for np in 1 2; do
   cubic_form $np "(P) frictional" prestressed bc P kt 5e3 mu 0.5
 done
 cubic_form 1 "(T) frictionless touching" touching bc T data touching.data F11 0.999998 F22 0.999999 F33 1
+for np in 1 2; do
+  layer3d_form $np data touching.data kt 5e3 mu 0.5
+done
 rm -rf "$TMP"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -3,8 +3,8 @@
 # g), 2 increments at accuracy tight against their closed forms: (D) and (P)
 # on the prestressed lattice (R = 1.02 mm) with friction (ks = kn / 2, mu
 # 0.5) under F = diag(0.999, 0.998, 0.997); (T) on the touching frictionless
-# lattice (R = 1 mm) under F = diag(1 - 2e-6, 1 - 1e-6, 1); and the
-# refusals in 3D. Run: yade -n -x tests/yade/cubic.py.
+# lattice (R = 1 mm) under F = diag(1 - 2e-6, 1 - 1e-6, 1); the stress stage
+# of the 3D layer; and the refusals in 3D. Run: yade -n -x tests/yade/cubic.py.
 # Prints "N passed, N failed".
 import math
 import os
@@ -72,7 +72,16 @@ for bc in ('D', 'P'):
 closed_form('(T) frictionless touching', run('T F 0.999998 0 0 0 0.999999 0 0 0 1 increments 2 accuracy tight',
                                              R=1e-3), 'touching')
 
-for words, expect in (('mixed F 0.999 0 0 0 1 0 0 0 1 stress P22 -1 1', 'mixed conditions'),
+# the stress stage of the 3D layer (mixed: zlo D D D, zhi D D T, the sides P P P) on the touching lattice
+# with friction: F33 = 1 - p d (N - 3/2)^2 / (kn (N - 1)^2) = 1 - 1/720 and P33 = -1e4 within 1e-6
+servo = run('mixed stress P33 -1e4 2 F 1 0 0 0 1 0 0 0 1 increments 1 accuracy tight', R=1e-3, ks=0.5 * kn, mu=0.5)
+row = servo.rows[2] if len(servo.rows) == 4 else None
+err = max(abs((1 - row['F33']) * 720 - 1), abs(row['P33'] + 1e4) / 1e4) if row else math.inf
+hm = max(abs(r['hill_mandel']) for r in servo.rows)
+check(err <= 1e-6 and hm <= 1e-6, '3d layer (mixed), stress stage on the 4^3 touching lattice: F33 and P33 within %.3g of '
+      'the closed form, |hill_mandel| <= %.3g' % (err, hm))
+
+for words, expect in (('mixed stress P22 -1 1', 'the packing is 3D but the words are 2D'),
                       ('D F 0.999 0 0 1', "4 values give a 2D F, but the packing is 3D"),
                       ('D F 0.999 0 0 0 1 0 0 0 1 seal yes', "keyword 'seal' is 2D in this version")):
     try:

@@ -107,6 +107,10 @@ sbc_status sbc_frame_detect_3d(sbc_frame *frame, int n, const double *x, const d
  * face (edge). The corners' family follows F (eq. 17). */
 int sbc_frame_family(const sbc_frame *f, int q, int members[8]);
 
+/* The faces of the box frame position q lies on, as SBC_FACE_* bits (2D:
+ * bottom ylo, right xhi, top yhi, left xlo; a corner on two). */
+int sbc_frame_faces(const sbc_frame *f, int q);
+
 /* Recomputes A_q (eq. 2) and V from frame->X and frame->R. */
 void sbc_frame_update_geometry(sbc_frame *frame);
 

@@ -37,7 +37,11 @@ typedef enum sbc_damping { SBC_DAMPING_NONE = 0, SBC_DAMPING_LOCAL, SBC_DAMPING_
 
 typedef enum sbc_mode { SBC_MODE_D = 0, SBC_MODE_P, SBC_MODE_T } sbc_mode;
 
-enum { SBC_EDGE_BOTTOM = 0, SBC_EDGE_RIGHT, SBC_EDGE_TOP, SBC_EDGE_LEFT };
+/* The faces of the frame's box, indexed 2 axis + (1 on the high side), the
+ * bit index of SBC_FACE_* (frame.h): xlo xhi ylo yhi zlo zhi. The 2D
+ * edges are faces: left xlo, right xhi, bottom ylo, top yhi. */
+enum { SBC_FACES_MAX = 6 };
+enum { SBC_EDGE_LEFT = 0, SBC_EDGE_RIGHT = 1, SBC_EDGE_BOTTOM = 2, SBC_EDGE_TOP = 3 };
 
 typedef struct sbc_stress_spec {
     int i, j;     /* component P_ij, 0-based */
@@ -75,11 +79,13 @@ typedef struct sbc_settings {
     int seal;                /* 1: the edges of the frame's polygon are walls for the interior (seal.h); 0 */
     sbc_update update;       /* fixed (the paper's) or secant; fixed */
     char accuracy[16];       /* preset in force (keyword accuracy; balanced by default) */
-    /* mixed only: edge_mode[edge][component] (SBC_EDGE_*, 0 = x, 1 = y); the
-       default is the paper's layer: bottom D D, right P P, top D T, left P P */
-    unsigned char edge_mode[4][SBC_DIM_MAX];
+    /* mixed only: face_mode[face][component] (faces as above, components 0 = x,
+       1 = y, 2 = z); the default is the paper's layer: 2D bottom D D, right P P,
+       top D T, left P P; 3D zlo D D D, zhi D D T, the four side faces P P P */
+    unsigned char face_mode[SBC_FACES_MAX][SBC_DIM_MAX];
+    unsigned char face_given;      /* mixed: bit f set when the words name face f */
     int nstress;                   /* prescribed stress components (keyword stress) */
-    sbc_stress_spec stress[4];
+    sbc_stress_spec stress[9];
     int stress_increments;         /* i_vs: increments of the stress stage (all stress keywords alike) */
     char frame_group[SBC_NAME_LEN]; /* host group of frame particles; "" = detect */
     char file[SBC_NAME_LEN];        /* CSV path; "" = none */

@@ -133,10 +133,15 @@ void sbc_csv_close(sbc_csv *csv)
 
 int sbc_result_line(const sbc_result *r, sbc_bc bc, int total, char *out, size_t cap)
 {
+    /* 2D: F12, sigma11, sigma12; 3D: F13, sigma33, sigma13 (the shear and the
+       normal stress of a layer normal to the last axis) */
+    const int n = r->dim == 3 ? 2 : 0, t = r->dim == 3 ? 2 : 1;
+    char F[8], s1[8], s2[8];
     return snprintf(out, cap,
-                    "servo_bc %s: increment %d/%d F12 %+.5f sigma11 %+.6e sigma12 %+.6e %s steps %ld iterations %d "
+                    "servo_bc %s: increment %d/%d %s %+.5f %s %+.6e %s %+.6e %s steps %ld iterations %d "
                     "unbalanced %.2g HM %.1e",
-                    sbc_bc_name(bc), r->increment, total, r->F[SBC_IJ(0, 1)], r->sigma[SBC_IJ(0, 0)],
-                    r->sigma[SBC_IJ(0, 1)], r->dim == 3 ? "N/m^2" : "N/m", r->relax_steps, r->iterations,
-                    r->unbalanced, r->hill_mandel);
+                    sbc_bc_name(bc), r->increment, total, sbc_tensor_component_name("F", 0, t, F), r->F[SBC_IJ(0, t)],
+                    sbc_tensor_component_name("sigma", n, n, s1), r->sigma[SBC_IJ(n, n)],
+                    sbc_tensor_component_name("sigma", 0, t, s2), r->sigma[SBC_IJ(0, t)],
+                    r->dim == 3 ? "N/m^2" : "N/m", r->relax_steps, r->iterations, r->unbalanced, r->hill_mandel);
 }

@@ -145,11 +145,6 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
                  "(sbc_settings_check_dimension holds the words to the packing)", frame->dim, settings->dim);
         return NULL;
     }
-    if (frame->dim == 3 && settings->bc == SBC_BC_MIXED) {
-        sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: this version imposes (D), (P) and (T) on a 3D frame (mixed is "
-                 "2D)", sbc_bc_name(settings->bc));
-        return NULL;
-    }
     c = calloc(1, sizeof *c);
     if (!c) {
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");

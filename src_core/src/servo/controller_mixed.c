@@ -12,27 +12,29 @@
 #include <string.h>
 
 /* Mixed: row i of F (F_i1, F_i2, ...) is a result of the (T) condition, eq. 45,
- * when some edge controls component i by traction (the layer: row 2). */
+ * when some face controls component i by traction (the layer: the last row). */
 int sbc_ctl_row_measured(const sbc_controller *c, int i)
 {
-    int e;
-    for (e = 0; e < 4; ++e)
-        if (c->s.edge_mode[e][i] == SBC_MODE_T)
+    int f;
+    for (f = 0; f < 2 * c->frame->dim; ++f)
+        if (c->s.face_mode[f][i] == SBC_MODE_T)
             return 1;
     return 0;
 }
 
 /* Mixed: the point the D components deform about, x = c + F (X - c): the
- * centroid of the bottom edge's reference centres (corners included), so
- * that the support keeps its place on average while it follows F, and a
+ * centroid of the support's reference centres (the low face of the last
+ * axis, its edges and corners included: the bottom edge in 2D, zlo in 3D),
+ * so that the support keeps its place on average while it follows F, and a
  * translated packing gives the same results. */
 static void support_centre(const sbc_controller *c, double centre[3])
 {
     const sbc_frame *f = c->frame;
+    const int support = 2 * (f->dim - 1);
     int q, k, n = 0;
     centre[0] = centre[1] = centre[2] = 0.0;
     for (q = 0; q < f->n; ++q)
-        if (f->side[q] == SBC_SIDE_BOTTOM || q == f->corner[SBC_CORNER_BL] || q == f->corner[SBC_CORNER_BR]) {
+        if (sbc_frame_faces(f, q) >> support & 1) {
             for (k = 0; k < f->dim; ++k)
                 centre[k] += f->X[3 * q + k];
             ++n;
@@ -51,9 +53,36 @@ static double row_dot(int dim, const double F[9], int k, const double v[3])
     return s;
 }
 
+/* One family of periodic images (sbc_frame_family) keeps x_m - x_n = F (X_m
+ * - X_n) (eq. 19) about its servo-controlled mean: x_m = mean + (o_m - mean
+ * of o), o_m = F (X_m - X_first), component by component (for a pair, the
+ * midpoint plus and minus half of F (X+ - X-)) */
+static void keep_offsets(sbc_controller *c, const int *member, int count)
+{
+    const sbc_frame *f = c->frame;
+    const int dim = f->dim;
+    double offset[8];
+    int j, k, i;
+    for (k = 0; k < dim; ++k) {
+        double mid = 0.0, mean = 0.0;
+        for (j = 0; j < count; ++j) {
+            double D[3] = {0.0, 0.0, 0.0};
+            for (i = 0; i < dim; ++i)
+                D[i] = f->X[3 * member[j] + i] - f->X[3 * member[0] + i];
+            offset[j] = row_dot(dim, c->F_now, k, D);
+            mid = j ? mid + c->x_cmd[3 * member[j] + k] : c->x_cmd[3 * member[j] + k];
+            mean = j ? mean + offset[j] : offset[j];
+        }
+        mid *= 1.0 / count;
+        mean *= 1.0 / count;
+        for (j = 0; j < count; ++j)
+            c->x_cmd[3 * member[j] + k] = mid + (offset[j] - mean);
+    }
+}
+
 /* Mixed, Sect. 5.1: the D components follow F, x_q = c + F (X_q - c) (eqs. 17,
- * 43_1), and the periodic pairs keep x_r - x_l = F (X_r - X_l) (eq. 19) about
- * their servo-controlled midpoint, with F the imposed components and, in the
+ * 43_1), and the periodic families keep x_m - x_n = F (X_m - X_n) (eq. 19)
+ * about their servo-controlled mean, with F the imposed components and, in the
  * rows of eq. 45, the measured ones (F_now holds both). With the measured F
  * every boundary term of eq. 46 vanishes: w_q = 0 on D components, periodic w
  * on the pairs (the proof of Sect. 5.1). */
@@ -76,17 +105,10 @@ void sbc_ctl_mixed_follow_F(sbc_controller *c)
                     x += F[SBC_IJ(k, j)] * d[j];
                 c->x_cmd[3 * q + k] = x;
             }
-        if (c->mode[3 * q] == SBC_MODE_P && (f->side[q] == SBC_SIDE_BOTTOM || f->side[q] == SBC_SIDE_RIGHT)) {
-            const int p = f->partner[q];
-            double D[3] = {0.0, 0.0, 0.0};
-            for (k = 0; k < dim; ++k)
-                D[k] = f->X[3 * q + k] - f->X[3 * p + k];
-            for (k = 0; k < dim; ++k) {
-                const double mid = 0.5 * (c->x_cmd[3 * q + k] + c->x_cmd[3 * p + k]);
-                const double half = 0.5 * row_dot(dim, F, k, D);
-                c->x_cmd[3 * q + k] = mid + half;
-                c->x_cmd[3 * p + k] = mid - half;
-            }
+        if (c->mode[3 * q] == SBC_MODE_P) {
+            int member[8], count = sbc_frame_family(f, q, member);
+            if (count > 1 && q != f->corner[0])
+                keep_offsets(c, member, count);
         }
     }
 }
@@ -155,24 +177,34 @@ void sbc_ctl_mixed_stress_targets(sbc_controller *c)
     }
 }
 
-/* Modes of each frame position from the edge modes of the settings. Corners
- * belong to their horizontal edge (bottom: BL, BR; top: TR, TL); on a periodic
- * horizontal edge they follow F (D), as the corners of (P) do (eq. 17). The
- * top corners of the layer stay T in y: made D (Sect. 5.1's "followed by the
- * four corner nodes"), their reactions put 8 % into eq. 23's P22 on 120 discs
- * (docs/servo_bc.md, "Mixed"). */
+/* Modes of each frame position from the face modes of the settings: a
+ * particle on several faces takes those of its face normal to the last axis
+ * (the support's and the top's: the horizontal edges in 2D, zlo and zhi in
+ * 3D), then the middle, then the first. Where that face is periodic the
+ * particle is P with its family of images, unless it is a corner or one of
+ * its other faces is not periodic: then it follows F (D), as the corners of
+ * (P) do (eq. 17). The top corners of the layer stay T in y: made D (Sect.
+ * 5.1's "followed by the four corner nodes"), their reactions put 8 % into
+ * eq. 23's P22 on 120 discs (docs/servo_bc.md, "Mixed"). */
 void sbc_ctl_assign_modes(sbc_controller *c)
 {
-    static const int edge_of_side[5] = {-1, SBC_EDGE_BOTTOM, SBC_EDGE_RIGHT, SBC_EDGE_TOP, SBC_EDGE_LEFT};
     const sbc_frame *f = c->frame;
-    int q, k;
+    const int dim = f->dim;
+    int q, k, a;
     for (q = 0; q < f->n; ++q) {
-        int e = edge_of_side[f->side[q]];
-        if (e < 0)
-            e = q == f->corner[SBC_CORNER_BL] || q == f->corner[SBC_CORNER_BR] ? SBC_EDGE_BOTTOM : SBC_EDGE_TOP;
-        for (k = 0; k < f->dim; ++k) {
-            unsigned char m = c->s.edge_mode[e][k];
-            c->mode[3 * q + k] = f->side[q] == SBC_SIDE_CORNER && m == SBC_MODE_P ? SBC_MODE_D : m;
+        const int faces = sbc_frame_faces(f, q);
+        int face = -1, nfaces = 0, all_p = 1, g;
+        for (a = dim - 1; a >= 0 && face < 0; --a)
+            if (faces >> (2 * a) & 3)
+                face = faces >> (2 * a) & 1 ? 2 * a : 2 * a + 1;
+        for (g = 0; g < 2 * dim; ++g)
+            if (faces >> g & 1) {
+                ++nfaces;
+                all_p &= c->s.face_mode[g][0] == SBC_MODE_P;
+            }
+        for (k = 0; k < dim; ++k) {
+            unsigned char m = c->s.face_mode[face][k];
+            c->mode[3 * q + k] = m == SBC_MODE_P && (nfaces == dim || !all_p) ? SBC_MODE_D : m;
         }
     }
 }

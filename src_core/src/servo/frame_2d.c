@@ -78,7 +78,23 @@ static int family_2d(const sbc_frame *f, int q, int members[8])
     return 2;
 }
 
-const sbc_frame_geometry sbc_frame_geometry_2d = {2, "polygon", area_vectors, inside_polygon, family_2d};
+/* the edges of a 2D frame position as face bits: bottom ylo, right xhi, top
+   yhi, left xlo; a corner on its two */
+static int faces_2d(const sbc_frame *f, int q)
+{
+    static const int of_side[5] = {0, SBC_FACE_YLO, SBC_FACE_XHI, SBC_FACE_YHI, SBC_FACE_XLO};
+    static const int of_corner[4] = {SBC_FACE_XLO | SBC_FACE_YLO, SBC_FACE_XHI | SBC_FACE_YLO,
+                                     SBC_FACE_XHI | SBC_FACE_YHI, SBC_FACE_XLO | SBC_FACE_YHI};
+    int c;
+    if (f->side[q] != SBC_SIDE_CORNER)
+        return of_side[f->side[q]];
+    for (c = 0; c < 4; ++c)
+        if (f->corner[c] == q)
+            return of_corner[c];
+    return 0;
+}
+
+const sbc_frame_geometry sbc_frame_geometry_2d = {2, "polygon", area_vectors, inside_polygon, family_2d, faces_2d};
 
 /* Pairs the edge positions [first, first+count) with [other, other+count),
  * which run in the opposite direction (bottom x ascending against top x

@@ -112,7 +112,10 @@ static int family_3d(const sbc_frame *f, int q, int members[8])
     return 1 << na;
 }
 
-const sbc_frame_geometry sbc_frame_geometry_3d = {3, "polyhedron", area_vectors, inside_polyhedron, family_3d};
+static int faces_3d(const sbc_frame *f, int q) { return f->side[q]; }
+
+const sbc_frame_geometry sbc_frame_geometry_3d = {3, "polyhedron", area_vectors, inside_polyhedron, family_3d,
+                                                  faces_3d};
 
 /* ---- detection ---- */
 

@@ -20,3 +20,5 @@ int sbc_frame_family(const sbc_frame *f, int q, int members[8])
 {
     return sbc_frame_geometry_of(f->dim)->family(f, q, members);
 }
+
+int sbc_frame_faces(const sbc_frame *f, int q) { return sbc_frame_geometry_of(f->dim)->faces(f, q); }

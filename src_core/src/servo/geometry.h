@@ -17,6 +17,8 @@ typedef struct sbc_frame_geometry {
     int (*inside)(const sbc_frame *f, const double *fx, const double *p);
     /* sbc_frame_family (frame.h) */
     int (*family)(const sbc_frame *f, int q, int members[8]);
+    /* sbc_frame_faces (frame.h) */
+    int (*faces)(const sbc_frame *f, int q);
 } sbc_frame_geometry;
 
 extern const sbc_frame_geometry sbc_frame_geometry_2d, sbc_frame_geometry_3d;

@@ -65,14 +65,18 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
      "0"},
     {"stress",
      "Pij value N",
-     "mixed only: first Piola–Kirchhoff component P̄ij (N/m) held by the (T) components whose edge normal "
-         "is e_j, ramped linearly over a stress stage of N increments (i_vs); several components share one "
-         "stage",
+     "mixed only: first Piola–Kirchhoff component P̄ij (N/m; N/m² in 3D) held by the (T) components whose "
+         "edge or face normal is e_j, ramped linearly over a stress stage of N increments (i_vs); several "
+         "components share one stage",
      "–"},
     {"bottom right top left",
      "Mx My, each D, P or T",
-     "mixed only: how the x and y displacement of that edge's particles are controlled (see \"Mixed\")",
+     "mixed only, 2D: how the x and y displacement of that edge's particles are controlled (see \"Mixed\")",
      "D D, P P, D T, P P"},
+    {"xlo xhi ylo yhi zlo zhi",
+     "Mx My Mz, each D, P or T",
+     "mixed only, 3D: how the x, y and z displacement of that face's particles are controlled (see \"Mixed\")",
+     "P P P on xlo xhi ylo yhi, D D D on zlo, D D T on zhi"},
     {"update",
      "`fixed` or `secant`",
      "`fixed`: the corrections of eqs. 33, 34, 36, 48 with the gains as given; `secant`: corrections with "

@@ -144,13 +144,13 @@ static void periodic_family(const sbc_frame *f, const sbc_settings *s, const dou
     double M = 0.0, R = 0.0, at, mt, ga, gm, step;
     double da[3] = {0.0, 0.0, 0.0}, u[3] = {0.0, 0.0, 0.0}, dm[3] = {0.0, 0.0, 0.0}, t[3] = {0.0, 0.0, 0.0};
     int j, k;
-    for (j = 0; j < count; ++j) {
+    for (j = 0; j < count; ++j) { /* sums from the first member on: a sum of -0 stays -0 */
         M += mass[member[j]];
         R += f->R[member[j]];
         for (k = 0; k < dim; ++k)
-            da[k] += a[3 * member[j] + k];
+            da[k] = j ? da[k] + a[3 * member[j] + k] : a[3 * member[j] + k];
         for (k = 0; k < rot; ++k)
-            dm[k] += m[rot * member[j] + k];
+            dm[k] = j ? dm[k] + m[rot * member[j] + k] : m[rot * member[j] + k];
     }
     M *= 1.0 / count;
     R *= 1.0 / count;

@@ -353,7 +353,7 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             st = read_name(&c, "group-ID", s->frame_group);
         } else if (strcmp(key, "file") == 0) {
             st = read_name(&c, "path", s->file);
-        } else if (strcmp(key, "stress") == 0 || sbc_mixed_edge_index(key) >= 0) {
+        } else if (strcmp(key, "stress") == 0 || sbc_mixed_face_index(key) >= 0) {
             k = 0;
             if (s->bc != SBC_BC_MIXED)
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword '%s' needs boundary condition mixed (got %s)", key,
@@ -361,7 +361,7 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             else if (strcmp(key, "stress") == 0)
                 st = sbc_mixed_parse_stress(s, c.n - c.i, c.w + c.i, &k, err);
             else
-                st = sbc_mixed_parse_edge(s, key, c.n - c.i, c.w + c.i, &k, err);
+                st = sbc_mixed_parse_face(s, key, c.n - c.i, c.w + c.i, &k, err);
             c.i += k;
         } else {
             double *gain[3] = {&s->gain_force, &s->gain_moment, &s->gain_deformation};
@@ -446,11 +446,12 @@ sbc_status sbc_settings_check_dimension(sbc_settings *s, int dim, sbc_error *err
         s->dim = 3;
         sbc_tensor_identity(3, s->F);
     }
-    if (dim == 3 && (s->bc == SBC_BC_MIXED || s->nstress > 0))
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: the packing is 3D; mixed conditions and keyword 'stress' "
-                        "are 2D in this version", s->bc == SBC_BC_MIXED ? "mixed" : "stress");
     if (s->dim == dim)
         return SBC_OK;
+    if (dim == 3 && s->bc == SBC_BC_MIXED)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc mixed: the packing is 3D but the words are 2D: give F with nine "
+                        "values (F11 F12 F13 F21 F22 F23 F31 F32 F33, row-major; the identity for a stress stage "
+                        "alone)");
     if (s->dim == 3)
         return sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': 9 values give a 3D F, but the packing is 2D (expected 4 "
                         "values, F11 F12 F21 F22)");
