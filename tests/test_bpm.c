@@ -616,7 +616,7 @@ static void test_bpm_runner(void)
         {"dimension 3\ntest uniaxial velocity 0 steps 10\n", "test: velocity 0"},
         {"dimension 3\ntimestep critical\n", "expected 'timestep DT' (s) or 'timestep critical F'"},
         {"dimension 3\ndensity 925 heavy\n", "density: unknown word 'heavy'"},
-        {"dimension 3\nservo_bc D F 1 0 0 1\n", "unknown command 'servo_bc' after 'dimension 3'"},
+        {"dimension 3\nbogus 1\n", "unknown command 'bogus' after 'dimension 3' (expected packing, bond"},
         {"dimension 3\npacking cubic radius 12.5e-3\nbond beam\ndensity 925\ntimestep 1e-6\nrun\n", "run: no test"},
         {"dimension 3\npacking cubic radius 12.5e-3\nbond beam nu 0.5\ndensity 925\ntimestep 1e-6\n"
          "test uniaxial velocity 1e-5 steps 10\nrun\n", "bad:3: bond: nu 0.5 (expected -1 < nu < 0.5)"},

@@ -2,6 +2,7 @@
 #define SBC_TESTS_H
 void test_frame(void);
 void test_frame_3d(void);
+void test_spheres(void);
 void test_homogenize(void);
 void test_contact(void);
 void test_cohesive(void);

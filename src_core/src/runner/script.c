@@ -547,6 +547,53 @@ static sbc_status keep_servo_words(script *s, int nw, char **w, sbc_error *err)
     return SBC_OK;
 }
 
+/* servo_bc BC ...: the words, held to the script's dimension (3 after
+   'dimension 3') */
+static sbc_status cmd_servo_bc(script *s, int nw, char **w, sbc_error *err)
+{
+    char msg[SBC_ERROR_LEN];
+    sbc_status st;
+    if (s->servo_pending)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: a second servo_bc line before a run has used the one of line "
+                        "%d (each run takes the servo_bc line before it)", s->servo_line);
+    st = sbc_settings_parse(&s->settings, nw - 1, (const char *const *)(w + 1), err);
+    if (st == SBC_OK)
+        st = sbc_settings_check_dimension(&s->settings, s->bpm ? 3 : 2, err);
+    if (st != SBC_OK) {
+        snprintf(msg, sizeof msg, "%s", err->message);
+        return sbc_fail(err, st, "servo_bc: %s", msg);
+    }
+    s->have_servo = 1;
+    s->servo_pending = 1;
+    s->servo_line = s->line;
+    return keep_servo_words(s, nw, w, err);
+}
+
+/* after 'dimension 3': the servo_bc commands on spheres (script_spheres.c),
+   the bonded particle model's otherwise (script_bpm.c) */
+static sbc_status execute_3d(script *s, int nw, char **w, sbc_error *err)
+{
+    const char *c = w[0];
+    sbc_status st;
+    if (strcmp(c, "lattice") == 0) return sbc_script_lattice_cubic(s, nw, w, err);
+    if (strcmp(c, "contact") == 0) {
+        if (nw >= 2 && strcmp(w[1], "frictional") != 0)
+            return sbc_fail(err, SBC_ERR_INPUT, "contact: law '%s' is 2D in this version (expected 'frictional' after "
+                            "'dimension 3')", w[1]);
+        return cmd_contact(s, nw, w, err);
+    }
+    if (strcmp(c, "servo_bc") == 0) return cmd_servo_bc(s, nw, w, err);
+    if (strcmp(c, "run") == 0 && s->servo_pending) {
+        if ((st = sbc_script_expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
+        s->servo_pending = 0;
+        if (s->decks_dir)
+            return sbc_fail(err, SBC_ERR_INPUT, "run: 3D decks for the hosts are not written in this version (the "
+                            "servo_bc run of line %d runs on the embedded engine)", s->servo_line);
+        return sbc_script_run_spheres(s, err);
+    }
+    return sbc_script_bpm(s, nw, w, err);
+}
+
 static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
 {
     const char *c = w[0];
@@ -555,12 +602,12 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
         if ((st = sbc_script_expect_count(nw, w, 2, "dimension 2|3", err)) != SBC_OK) return st;
         if (strcmp(w[1], "3") == 0) return sbc_script_bpm_begin(s, err);
         if (strcmp(w[1], "2") != 0)
-            return sbc_fail(err, SBC_ERR_INPUT, "dimension: value '%s' is not supported (expected 2, or 3 for the bonded "
-                            "particle model)", w[1]);
+            return sbc_fail(err, SBC_ERR_INPUT, "dimension: value '%s' is not supported (expected 2, or 3 for spheres and "
+                            "the bonded particle model)", w[1]);
         sbc_script_bpm_free(s);
         return SBC_OK;
     }
-    if (s->bpm) return sbc_script_bpm(s, nw, w, err);
+    if (s->bpm) return execute_3d(s, nw, w, err);
     if (strcmp(c, "lattice") == 0) return cmd_lattice(s, nw, w, err);
     if (strcmp(c, "read_packing") == 0) {
         if ((st = sbc_script_expect_count(nw, w, 2, "read_packing FILE", err)) != SBC_OK) return st;
@@ -587,23 +634,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
         s->have_dt = st == SBC_OK;
         return st;
     }
-    if (strcmp(c, "servo_bc") == 0) {
-        char msg[SBC_ERROR_LEN];
-        if (s->servo_pending)
-            return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: a second servo_bc line before a run has used the one of line "
-                            "%d (each run takes the servo_bc line before it)", s->servo_line);
-        st = sbc_settings_parse(&s->settings, nw - 1, (const char *const *)(w + 1), err);
-        if (st == SBC_OK)
-            st = sbc_settings_check_dimension(&s->settings, 2, err);
-        if (st != SBC_OK) {
-            snprintf(msg, sizeof msg, "%s", err->message);
-            return sbc_fail(err, st, "servo_bc: %s", msg);
-        }
-        s->have_servo = 1;
-        s->servo_pending = 1;
-        s->servo_line = s->line;
-        return keep_servo_words(s, nw, w, err);
-    }
+    if (strcmp(c, "servo_bc") == 0) return cmd_servo_bc(s, nw, w, err);
     if (strcmp(c, "vtk") == 0) return cmd_snapshots(nw, w, &s->vtk_every, s->vtk_prefix, err);
     if (strcmp(c, "network") == 0) return cmd_snapshots(nw, w, &s->network_every, s->network_prefix, err);
     if (strcmp(c, "replicas") == 0) return sbc_script_replicas_command(s, nw, w, err);
@@ -668,6 +699,7 @@ static sbc_status run_text(const char *text, const char *name, FILE *log, const 
                       name, s.line == 0 ? "; it is empty" : "");
     sbc_packing_free(&s.packing);
     sbc_script_bpm_free(&s);
+    sbc_script_spheres_free(&s);
     return st;
 }
 

@@ -339,6 +339,14 @@ done:
     return st;
 }
 
+void sbc_script_bpm_material(const script *s, double *density, double *dt, double *dt_fraction)
+{
+    const struct bpm_script *b = s->bpm;
+    *density = b && b->have_density && !b->scaled ? b->density : 0.0;
+    *dt = b && b->have_dt ? b->dt : 0.0;
+    *dt_fraction = b && b->have_dt ? b->dt_fraction : 0.0;
+}
+
 sbc_status sbc_script_bpm(script *s, int nw, char **w, sbc_error *err)
 {
     struct bpm_script *b = s->bpm;
@@ -382,6 +390,6 @@ sbc_status sbc_script_bpm(script *s, int nw, char **w, sbc_error *err)
         return cmd_run(s, b, err);
     }
     return sbc_fail(err, SBC_ERR_INPUT,
-                    "unknown command '%s' after 'dimension 3' (expected packing, bond, density, timestep, test, vtk "
-                    "or run)", c);
+                    "unknown command '%s' after 'dimension 3' (expected packing, bond, density, timestep, test, vtk, "
+                    "lattice, contact, servo_bc or run)", c);
 }

@@ -45,6 +45,8 @@ typedef struct sbc_script_case {
     int decks_line;         /* the line of the run whose decks were written (one run per --decks) */
     int check;              /* --check: every command is checked, nothing is run or written */
     struct bpm_script *bpm; /* after 'dimension 3': the 3D bonded particle model (script_bpm.c) */
+    int n3;                 /* after 'dimension 3', 'lattice cubic': the sphere packing (script_spheres.c) */
+    double *x3, *r3;        /* ... its centres [3 n3] and radii [n3], m */
     int actions;            /* commands that computed or wrote something (run, write_packing, rose) */
     int servo_pending;      /* a servo_bc line no run has used yet */
     int replicas;           /* replicas K: the runs that follow are K histories (script_replicas.c); 0: one */
@@ -86,6 +88,17 @@ sbc_status sbc_script_rose(script *s, int nw, char **w, sbc_error *err);
 sbc_status sbc_script_bpm_begin(script *s, sbc_error *err);
 sbc_status sbc_script_bpm(script *s, int nw, char **w, sbc_error *err);
 void sbc_script_bpm_free(script *s);
+
+/* The material of the 3D commands (script_bpm.c): density (kg/m^3) and time
+ * step (s; or a fraction of the critical one), each 0 when not given. */
+void sbc_script_bpm_material(const script *s, double *density, double *dt, double *dt_fraction);
+
+/* The 3D servo_bc commands (script_spheres.c): 'lattice cubic NX NY NZ
+ * spacing D radius R', and the run of a servo_bc line on the sphere engine
+ * (spheres.h) through the host driver. */
+sbc_status sbc_script_lattice_cubic(script *s, int nw, char **w, sbc_error *err);
+sbc_status sbc_script_run_spheres(script *s, sbc_error *err);
+void sbc_script_spheres_free(script *s);
 
 /* One run of the servo_bc line (script.c). */
 sbc_status sbc_script_run_once(script *s, sbc_error *err);
