@@ -270,9 +270,29 @@ static void runner(void)
     FILE *fp;
     size_t k;
     snprintf(path, sizeof path, "%s/cubic3d.csv", test_tmpdir);
-    snprintf(script, sizeof script, "%sservo_bc P F 0.999 0 0 0 0.998 0 0 0 0.997 increments 2 accuracy tight file %s\nrun\n",
-             head, path);
+    snprintf(script, sizeof script, "%sservo_bc P F 0.999 0 0 0 0.998 0 0 0 0.997 increments 2 accuracy tight file %s\n"
+             "vtk 2 %s/cubic3d\nrun\n", head, path, test_tmpdir);
     CHECK(sbc_script_run_string(script, "cubic3d", NULL, &err) == SBC_OK);
+    { /* the snapshots of increments 0 and 2 (the last): 64 spheres; the frame's 56 centres and 54 quadrilaterals */
+        static const char *const want[2][2] = {{"spheres", "POINTS 64 double"}, {"frame", "POLYGONS 54 270"}};
+        int m, inc;
+        for (inc = 0; inc <= 2; inc += 2)
+            for (m = 0; m < 2; ++m) {
+                char vtk[600], text[8192] = "";
+                size_t got = 0;
+                snprintf(vtk, sizeof vtk, "%s/cubic3d_%s_%06d.vtk", test_tmpdir, want[m][0], inc);
+                if ((fp = fopen(vtk, "r")) != NULL) {
+                    got = fread(text, 1, sizeof text - 1, fp);
+                    text[got] = '\0';
+                    fclose(fp);
+                }
+                CHECK(strncmp(text, "# vtk DataFile Version 3.0", 26) == 0 && strstr(text, want[m][1]) != NULL);
+            }
+        snprintf(line, sizeof line, "%s/cubic3d_spheres_000001.vtk", test_tmpdir);
+        CHECK((fp = fopen(line, "r")) == NULL); /* vtk 2: not increment 1 */
+        if (fp)
+            fclose(fp);
+    }
     if ((fp = fopen(path, "r")) != NULL) {
         while (fgets(line, sizeof line, fp)) {
             char *f[64], *p = line;

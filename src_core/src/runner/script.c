@@ -583,6 +583,8 @@ static sbc_status execute_3d(script *s, int nw, char **w, sbc_error *err)
         return cmd_contact(s, nw, w, err);
     }
     if (strcmp(c, "servo_bc") == 0) return cmd_servo_bc(s, nw, w, err);
+    if (strcmp(c, "vtk") == 0 && nw == 3) /* vtk EVERY PREFIX: the servo run's; vtk PREFIX: the bonded model's */
+        return cmd_snapshots(nw, w, &s->vtk_every, s->vtk_prefix, err);
     if (strcmp(c, "run") == 0 && s->servo_pending) {
         if ((st = sbc_script_expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
         s->servo_pending = 0;

@@ -7,12 +7,15 @@
  *   servo_bc BC ... F (nine values) ... [file F.csv]
  *   run
  *
+ *   vtk EVERY PREFIX     (spheres and the frame's surface, spheres_vtk.h)
+ *
  * `run` runs the servo_bc line on the sphere engine (spheres.h) through the
  * host driver, as the hosts do: the results file with the 3D columns, a log
  * line per converged increment, a progress line every 10 s. */
 #include "script_state.h"
 #include "sbc/driver.h"
 #include "sbc/embedded/spheres.h"
+#include "sbc/embedded/spheres_vtk.h"
 #include "sbc/numbers.h"
 #include "sbc/results.h"
 #include "sbc/time_step.h"
@@ -75,6 +78,8 @@ sbc_status sbc_script_lattice_cubic(script *s, int nw, char **w, sbc_error *err)
 typedef struct sphere_run {
     const script *s;
     sbc_driver_callbacks engine;
+    const sbc_spheres *spheres;
+    const sbc_frame *frame;
     sbc_csv csv;
     int nrows;
     struct timespec start, reported;
@@ -120,6 +125,14 @@ static int sphere_row(void *user_data, const sbc_result *row, const char *line, 
         return e.status;
     }
     r->nrows++;
+    if (r->s->vtk_every && (row->increment % r->s->vtk_every == 0 ||
+                            row->increment == sbc_settings_total_increments(&r->s->settings))) {
+        const sbc_spheres_view view = sbc_spheres_get_view(r->spheres);
+        if (sbc_spheres_vtk_write(r->s->vtk_prefix, row->increment, &view, r->frame, &e) != SBC_OK) {
+            snprintf(message, cap, "%s", e.message);
+            return e.status;
+        }
+    }
     if (r->s->log) {
         fprintf(r->s->log, "%s\n", line);
         fflush(r->s->log);
@@ -170,6 +183,8 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
     if (!(density > 0.0)) return sbc_fail(err, SBC_ERR_INPUT, "run: no density (use 'density RHO', kg/m^3, first)");
     if (!(dt > 0.0) && !(fraction > 0.0))
         return sbc_fail(err, SBC_ERR_INPUT, "run: no time step (use 'timestep DT' first)");
+    if ((st = sbc_script_outputs_check(s, err)) != SBC_OK)
+        return st;
     if (s->settings.seal || s->settings.frame_group[0])
         return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword '%s' is 2D in this version; the packing is 3D",
                         s->servo_line, s->settings.seal ? "seal" : "frame");
@@ -229,6 +244,8 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
                 sbc_bc_name(s->settings.bc), sbc_version(), s->n3, p.frame.n,
                 sbc_settings_total_increments(&s->settings), dt, dtc);
     r.engine = sbc_spheres_callbacks(p.engine);
+    r.spheres = p.engine;
+    r.frame = &p.frame;
     memset(&cb, 0, sizeof cb);
     cb.user_data = &r;
     cb.fire_sums = run_fire_sums;
@@ -273,6 +290,14 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
             }
         }
     }
+    if (st != SBC_OK && s->vtk_every) { /* the state the run stopped in, for a look in ParaView */
+        const sbc_spheres_view view = sbc_spheres_get_view(p.engine);
+        sbc_error verr;
+        if (sbc_spheres_vtk_write(s->vtk_prefix, sbc_controller_increment(p.ctl), &view, &p.frame, &verr) == SBC_OK &&
+            s->log)
+            fprintf(s->log, "servo_bc: the state the run stopped in is %s_spheres_%06d.vtk\n", s->vtk_prefix,
+                    sbc_controller_increment(p.ctl));
+    }
     if (s->log && st == SBC_OK) {
         struct timespec t1;
         timespec_get(&t1, TIME_UTC);
@@ -280,6 +305,8 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
                 seconds(&r.start, &t1));
         if (s->settings.file[0])
             fprintf(s->log, "  results: %s\n", s->settings.file);
+        if (s->vtk_every)
+            fprintf(s->log, "  vtk:     %s_spheres_*.vtk, %s_frame_*.vtk\n", s->vtk_prefix, s->vtk_prefix);
     }
     parts_free(&p, &r);
     return st;
