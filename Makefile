@@ -217,9 +217,13 @@ check-yade: yade
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
 
-bench: $(B)/bench_engine
+$(B)/bench_spheres: bench/spheres_throughput.c $(B)/libservo_bc.a
+	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
+
+bench: $(B)/bench_engine $(B)/bench_spheres
 	@bash scripts/install-deps.sh lammps || echo "bench: LAMMPS not available; measuring the embedded engine only"
 	bash bench/engine_vs_lammps.sh $(B)/bench_engine
+	bash bench/spheres_vs_lammps.sh $(B)/bench_spheres
 	bash bench/bpm.sh
 	bash bench/bpm_hosts.sh
 	bash bench/cohesive_hosts.sh

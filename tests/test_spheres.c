@@ -133,7 +133,17 @@ static void collisions(void)
 /* The lattices of docs/frame3d.md (4^3, d 2 mm, kn 1e4 N/m, mass 1 g) under
  * words through the driver with this engine; rows into rows [8], their count
  * returned (-1 on failure, with the message), the steps in *steps */
+static long builds; /* the pair-list builds of the last run */
+
+static int run_skin(const char *text, double R, double ks, double mu, double skin, sbc_result rows[8], long *steps);
+
 static int run(const char *text, double R, double ks, double mu, sbc_result rows[8], long *steps)
+{
+    return run_skin(text, R, ks, mu, 0.0, rows, steps);
+}
+
+/* run with the neighbour list's skin (m; <= 0: the default) */
+static int run_skin(const char *text, double R, double ks, double mu, double skin, sbc_result rows[8], long *steps)
 {
     const int N = 4, n = N * N * N;
     const double d = 2e-3;
@@ -157,7 +167,7 @@ static int run(const char *text, double R, double ks, double mu, sbc_result rows
             }
     def.n = n, def.x = x, def.r = r, def.law.kn = 1e4, def.law.ks = ks, def.law.mu = mu, def.dt = 1e-5;
     def.density = 1e-3 / (4.0 / 3.0 * M_PI * R * R * R);
-    def.fire = 1;
+    def.skin = skin;
     snprintf(line, sizeof line, "%s", text);
     nw = sbc_split_words(line, words, 40);
     CHECK(sbc_frame_detect_3d(&f, n, x, r, 0.0, &err) == SBC_OK);
@@ -187,6 +197,7 @@ static int run(const char *text, double R, double ks, double mu, sbc_result rows
         printf("  %s\n", err.message);
         nrows = -1;
     }
+    builds = e ? sbc_spheres_get_view(e).builds : 0;
     sbc_driver_free(drv);
     sbc_controller_free(c);
     sbc_spheres_free(e);
@@ -324,10 +335,32 @@ static void runner(void)
     }
 }
 
+/* The pair list rebuilt at every step (a skin of 1e-15 m) carries every
+ * contact's tangential spring over: the frictional (P) run gives the rows of
+ * the run with the default skin bit for bit */
+static void rebuilds(void)
+{
+    static const char *const words = "P F 0.999 0 0 0 0.998 0 0 0 0.997 increments 2 accuracy tight";
+    sbc_result a[8], b[8];
+    long sa, sb, ba, bb;
+    const int na = run_skin(words, 1.02e-3, 5e3, 0.5, 0.0, a, &sa);
+    int nb, k, same;
+    ba = builds;
+    nb = run_skin(words, 1.02e-3, 5e3, 0.5, 1e-15, b, &sb);
+    bb = builds;
+    same = na == 3 && nb == 3 && sa == sb;
+    for (k = 0; same && k < na; ++k)
+        same = memcmp(a[k].P, b[k].P, sizeof a[k].P) == 0 && memcmp(a[k].F, b[k].F, sizeof a[k].F) == 0;
+    CHECK(same && bb > sb / 2 && ba < 10);
+    printf("  spheres: the pair list built %ld times in %ld steps (default skin: %ld): the frictional (P) rows bit for "
+           "bit\n", bb, sb, ba);
+}
+
 void test_spheres(void)
 {
     one_contact();
     collisions();
     lattices();
+    rebuilds();
     runner();
 }

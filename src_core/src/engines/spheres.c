@@ -34,6 +34,7 @@ struct sbc_spheres {
     int npair, cap;
     double *x_build;          /* [3n] centres at the last build */
     int stale;
+    long builds;
     const sbc_frame *frame;
     /* the last forces' contact sums */
     double ep, overlap_sum, force_sum;
@@ -175,6 +176,7 @@ static sbc_status build_pairs(sbc_spheres *e, sbc_error *err)
     e->cap = cap;
     memcpy(e->x_build, e->x, sizeof(double) * 3 * (size_t)e->n);
     e->stale = 0;
+    e->builds++;
     return SBC_OK;
 }
 
@@ -503,5 +505,6 @@ sbc_spheres_view sbc_spheres_get_view(const sbc_spheres *e)
     w.contact_count = (int)e->contacts;
     w.potential_energy = e->ep;
     w.step = e->step;
+    w.builds = e->builds;
     return w;
 }

@@ -79,6 +79,7 @@ typedef struct sbc_spheres_view {
     int pair_count, contact_count;
     double potential_energy; /* eq. 12 over the contacts, J */
     long step;
+    long builds;             /* pair-list builds so far */
 } sbc_spheres_view;
 
 sbc_spheres_view sbc_spheres_get_view(const sbc_spheres *e);
