@@ -223,7 +223,7 @@ $(B)/bench_spheres: bench/spheres_throughput.c $(B)/libservo_bc.a
 bench: $(B)/bench_engine $(B)/bench_spheres
 	@bash scripts/install-deps.sh lammps || echo "bench: LAMMPS not available; measuring the embedded engine only"
 	bash bench/engine_vs_lammps.sh $(B)/bench_engine
-	bash bench/spheres_vs_lammps.sh $(B)/bench_spheres
+	bash bench/engine_vs_lammps.sh $(B)/bench_spheres 500 3
 	bash bench/bpm.sh
 	bash bench/bpm_hosts.sh
 	bash bench/cohesive_hosts.sh

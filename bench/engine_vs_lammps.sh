@@ -1,21 +1,27 @@
 #!/usr/bin/env bash
-# Embedded engine against LAMMPS on the identical 2D lattice scene, in one run.
+# An embedded engine against LAMMPS on the identical lattice scene, in one run.
 # Prints ns per particle-step for both and the ratio embedded/LAMMPS (goal <= 0.5).
-# Usage: bench/engine_vs_lammps.sh BENCH_ENGINE [STEPS]
+#   DIM 2: the disc engine (bench/engine_throughput.c) against bench/lammps_lattice.in,
+#          100^2 and 316^2 discs;
+#   DIM 3: the sphere engine (bench/spheres_throughput.c) against LAMMPS
+#          gran/hooke/history in bench/lammps_cubic.in, 22^3 and 46^3 spheres.
+# Usage: bench/engine_vs_lammps.sh BENCH_ENGINE [STEPS] [DIM]
 set -euo pipefail
-engine=${1:?usage: engine_vs_lammps.sh BENCH_ENGINE [STEPS]}
+engine=${1:?usage: engine_vs_lammps.sh BENCH_ENGINE [STEPS] [DIM]}
 steps=${2:-2000}
+dim=${3:-2}
 here=$(cd "$(dirname "$0")" && pwd)
 lmp=$(command -v lmp || command -v lmp_serial || command -v lmp_stable || true)
+if [ "$dim" = 3 ]; then sides="22 46" deck=$here/lammps_cubic.in; else sides="100 316" deck=$here/lammps_lattice.in; fi
 
 printf '%-10s %8s %7s %12s %12s %12s %8s\n' particles side steps "embedded" "+servo(D)" "LAMMPS" ratio
-for side in 100 316; do
+for side in $sides; do
   emb=$("$engine" "$side" "$steps" | awk '{print $4}')
   srv=$("$engine" "$side" "$steps" servo | awk '{print $4}')
-  n=$((side * side))
+  n=$((dim == 3 ? side * side * side : side * side))
   if [ -n "$lmp" ]; then
     tmp=$(mktemp -d)
-    (cd "$tmp" && "$lmp" -in "$here/lammps_lattice.in" -var side "$side" -var steps "$steps" -log none > out.txt 2>&1) || {
+    (cd "$tmp" && "$lmp" -in "$deck" -var side "$side" -var steps "$steps" -log none > out.txt 2>&1) || {
       echo "LAMMPS failed:"; tail -5 "$tmp/out.txt"; exit 1; }
     loop=$(awk '/^Loop time of/ {print $4}' "$tmp/out.txt")
     atoms=$(awk '/^Loop time of/ {print $(NF-1)}' "$tmp/out.txt")
@@ -28,4 +34,3 @@ for side in 100 316; do
   fi
 done
 [ -n "$lmp" ] || echo "LAMMPS not installed: only the embedded engine was measured (apt-get install lammps)."
-echo "ns per particle-step, one core; ratio = embedded / LAMMPS (goal <= 0.5)"
