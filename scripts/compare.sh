@@ -113,16 +113,15 @@ for plot in "sigma11.svg|sigma11 (N/m)|sigma11" "sigma12.svg|sigma12 (N/m)|sigma
 done
 
 # the differences themselves, in % of the stress scale, against the increment
-scale=$(awk -F, "$COLUMNS_AWK"'NR == 1 { split("sigma11 sigma12 sigma21 sigma22", nm, " "); for (k = 1; k <= 4; k++) cs[k] = col(nm[k]) }
-  NR > 1 { for (k = 1; k <= 4; k++) { v = $cs[k] < 0 ? -$cs[k] : $cs[k]; if (v > s) s = v } } END { print s + 0 }' "$out/embedded.csv")
+scale=$(awk -F, "$COLUMNS_AWK"'NR == 1 { nc = sigmas(nm); for (k = 1; k <= nc; k++) cs[k] = col(nm[k]) }
+  NR > 1 { for (k = 1; k <= nc; k++) { v = $cs[k] < 0 ? -$cs[k] : $cs[k]; if (v > s) s = v } } END { print s + 0 }' "$out/embedded.csv")
 series=()
 for e in "${engines[@]}"; do
   [ "$e" = embedded ] && continue
   paste -d, "$out/embedded.csv" "$out/$e.csv" | awk -F, -v s="$scale" "$COLUMNS_AWK"'
-    NR == 1 { w = NF / 2; i = col("increment"); split("sigma11 sigma12 sigma21 sigma22", nm, " ")
-              for (k = 1; k <= 4; k++) cs[k] = col(nm[k])
-              print "increment,dsigma11,dsigma12,dsigma21,dsigma22"; next }
-    $i != "" && $(i + w) != "" { printf "%s", $i; for (k = 1; k <= 4; k++) printf ",%.6g", 100 * ($(cs[k] + w) - $cs[k]) / (s > 0 ? s : 1); print "" }' \
+    NR == 1 { w = NF / 2; i = col("increment"); nc = sigmas(nm)
+              printf "increment"; for (k = 1; k <= nc; k++) { cs[k] = col(nm[k]); printf ",d%s", nm[k] }; print ""; next }
+    $i != "" && $(i + w) != "" { printf "%s", $i; for (k = 1; k <= nc; k++) printf ",%.6g", 100 * ($(cs[k] + w) - $cs[k]) / (s > 0 ? s : 1); print "" }' \
     > "$out/difference_$e.csv"
   series+=("$out/difference_$e.csv" "$e")
 done

@@ -1,24 +1,25 @@
 # Rows of the difference table of scripts/compare.sh: the embedded CSV and an
 # engine's CSV pasted side by side (paste -d,), -v e=ENGINE. Per sigma
 # component: max and mean of |sigma_e - sigma_embedded| in % of the stress
-# scale (max |sigma| of the embedded run), up to the first peak of |sigma12| of
-# the embedded run (scripts/first_peak.awk) and over the whole path; increments missing from either
-# run are left out and counted.
+# scale (max |sigma| of the embedded run), up to the first peak of |sigma12|
+# (3D: |sigma13|, the layer's shear) of the embedded run
+# (scripts/first_peak.awk) and over the whole path; increments missing from
+# either run are left out and counted.
 # columns by name (scripts/columns.awk, given before this file)
-NR == 1 { w = NF / 2; i = col("increment"); split("sigma11 sigma12 sigma21 sigma22", nm, " ")
-  for (c = 1; c <= 4; c++) cs[c] = col(nm[c]) } # w: columns per file
+NR == 1 { w = NF / 2; i = col("increment"); nc = sigmas(nm); shear = nc == 9 ? 3 : 2
+  for (c = 1; c <= nc; c++) cs[c] = col(nm[c]) } # w: columns per file
 NR > 1 && $i != "" {
   n++
-  for (c = 1; c <= 4; c++) {
+  for (c = 1; c <= nc; c++) {
     a[n, c] = $cs[c]; v = a[n, c] < 0 ? -a[n, c] : a[n, c]; if (v > scale) scale = v
     have[n] = $(i + w) != ""; b[n, c] = $(cs[c] + w)
   }
 }
 END {
-  for (k = 1; k <= n; k++) s12[k] = a[k, 2]
+  for (k = 1; k <= n; k++) s12[k] = a[k, shear]
   peak = first_peak(s12, n)
-  split("σ̄11 σ̄12 σ̄21 σ̄22", name, " ")
-  for (c = 1; c <= 4; c++) {
+  for (c = 1; c <= nc; c++) name[c] = "σ̄" substr(nm[c], 6)
+  for (c = 1; c <= nc; c++) {
     m1 = s1 = m2 = s2 = n1 = n2 = 0
     for (k = 1; k <= n; k++) {
       if (!have[k]) continue

@@ -7,7 +7,8 @@
 # must agree with 1 rank within 0.01 % (the default preset's 1e-4). For every engine and every
 # sigma component, every converged increment up to the first stress peak
 # (the report's "before the peak"): within 0.5 % of the stress scale of the
-# embedded engine; and LIGGGHTS within 0.5 % of LAMMPS. Every host must be
+# embedded engine; and LIGGGHTS within 0.5 % of LAMMPS; a 3D case, (P) on the
+# 4^3 lattice, likewise over nine components. Every host must be
 # there (make check builds and installs them). Prints "N passed, N failed";
 # KEEP=DIR keeps the report folders there.
 # Usage: cross_host.sh   (binaries from build/, or B=DIR)
@@ -99,6 +100,25 @@ for bc in D P T; do
     pass=$((pass + 1)); echo "cross-host ($bc): max |sigma_liggghts - sigma_lammps| = $2 % of the stress scale"
   else
     fail=$((fail + 1)); echo "FAIL cross-host ($bc) liggghts against lammps: increments ${1:-0}, max difference ${2:-?} %"
+  fi
+done
+# 3D: (P) on the prestressed frictional 4^3 lattice (inputs/compare/cubic_P_3d.sbc)
+# through `servo-bc --decks` and compare: every engine, 1 and 2 ranks, every
+# one of the nine sigma components within 0.5 % of the stress scale of the
+# embedded engine at every increment, and P11 at the last against the closed
+# form -N^2 kn (2R - d F11) / ((N - 1)^2 d^2) within 1e-6
+dir=$tmp/cubic_P_3d
+(cd "$top" && RANKS="1 2" bash scripts/compare.sh inputs/compare/cubic_P_3d.sbc "$dir" | grep -v "^compare: report")
+for e in lammps liggghts yade lammps_np2 liggghts_np2; do
+  res=$(awk -F'|' -v e=" $e " '$2 == e && $3 ~ /σ̄/ { v = $6 + 0; if (v > m) m = v; n++ } END { printf "%d %s", n, (n ? m : 100) }' \
+    "$dir/report.md" 2>/dev/null)
+  set -- $res
+  p11=$(awk -F, "$COLUMNS_AWK"'NR > 1 { n++; e = -16 * 1e4 * (2.04e-3 - 2e-3 * $col("F11")) / (9 * 4e-6); d = ($col("P11") - e) / e }
+    END { if (n == 3) printf "%.3g", d < 0 ? -d : d; else print 1 }' "$dir/$e.csv" 2>/dev/null)
+  if [ "${1:-0}" = 9 ] && awk -v m="$2" -v p="${p11:-1}" 'BEGIN { exit !(m <= 0.5 && p <= 1e-6) }'; then
+    pass=$((pass + 1)); echo "cross-host 3D (P), 4^3 lattice: max |sigma_$e - sigma_embedded| = $2 % of the stress scale (9 components), P11 within $p11 of the closed form"
+  else
+    fail=$((fail + 1)); echo "FAIL cross-host 3D (P) $e: ${1:-0} components, max difference ${2:-?} % (limit 0.5 %), P11 ${p11:-?} of the closed form"
   fi
 done
 # the frame seal (seal.h) in every host: the chain on the wall of a gap in

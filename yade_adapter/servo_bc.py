@@ -41,11 +41,12 @@ PROGRESS_EVERY = 10.0                   # s of wall time between progress lines 
 FRAME_MASK = 2                          # groupMask bit of the frame bodies load_packing flags
 
 
-def load_packing(path, density, kn, ks, mu, young=None):
+def load_packing(path, density, kn, ks, mu, young=None, dimension=2):
     """Creates the discs of a packing written by the runner (`write_packing yade FILE`:
     x y z r frame per line, m). Each disc gets the 2D mass rho_A pi R^2 (density: kg/m^2)
     and the disc inertia M R^2 / 2 about z, so that the dynamics are the embedded
-    engine's; blockedDOFs 'zXY'. Material: FrictMat with friction angle atan(mu); the
+    engine's; blockedDOFs 'zXY'. dimension 3: free spheres of mass rho 4/3 pi R^3 (density:
+    kg/m^3) and inertia 2/5 M R^2, as the embedded sphere engine's. Material: FrictMat with friction angle atan(mu); the
     stiffnesses kn, ks (N/m) are imposed per contact by engines(). Particles flagged in the
     fifth column get the groupMask bit FRAME_MASK (servo words `frame 2`).
     Returns (ids, frame_ids)."""
@@ -74,10 +75,15 @@ def load_packing(path, density, kn, ks, mu, young=None):
     ids, frame = [], []
     for x, y, z, r, *flag in rows:
         b = utils.sphere((x, y, z), r, material=mat)
-        m = density * math.pi * r * r
-        b.state.mass = m
-        b.state.inertia = (0.5 * m * r * r,) * 3
-        b.state.blockedDOFs = 'zXY'
+        if dimension == 3:
+            m = density * 4.0 / 3.0 * math.pi * r ** 3
+            b.state.mass = m
+            b.state.inertia = (0.4 * m * r * r,) * 3
+        else:
+            m = density * math.pi * r * r
+            b.state.mass = m
+            b.state.inertia = (0.5 * m * r * r,) * 3
+            b.state.blockedDOFs = 'zXY'
         i = O.bodies.append(b)
         ids.append(i)
         if flag and flag[0] != 0:
@@ -86,13 +92,13 @@ def load_packing(path, density, kn, ks, mu, young=None):
     return ids, frame
 
 
-def run_case(packing, words, density, kn, ks, mu, dt, max_steps=None, cohesive=None):
-    """One servo_bc run on a packing file: the discs, the engines, the loading path.
-    cohesive: the words of the paper's cohesive law ('kn KN ks KS kr KR fn FN fs FS mr MR mu
-    MU', Cohesive), whose kn, ks, mu replace the arguments'.
+def run_case(packing, words, density, kn, ks, mu, dt, max_steps=None, cohesive=None, dimension=2):
+    """One servo_bc run on a packing file: the discs (spheres with dimension 3), the engines,
+    the loading path. cohesive: the words of the paper's cohesive law ('kn KN ks KS kr KR fn
+    FN fs FS mr MR mu MU', Cohesive), whose kn, ks, mu replace the arguments'.
     Returns the ServoBC object (rows, plot_data); raises ServoBCError on failure."""
     O.reset()
-    ids, _ = load_packing(packing, density, kn, ks, mu)
+    ids, _ = load_packing(packing, density, kn, ks, mu, dimension=dimension)
     contacts = Cohesive(ids, cohesive) if cohesive else None
     servo = ServoBC(words, ids, dt, contacts.kn if contacts else kn, contacts=contacts)
     O.engines = engines(servo, kn, ks, contacts)

@@ -105,7 +105,13 @@ static const char *frame_words(const script *s, const char *host)
     return strcmp(host, "yade") == 0 ? " frame 2" : " frame frame_atoms";
 }
 
-static sbc_status write_embedded(const script *s, const char *dir, sbc_error *err)
+/* the case's dimension, density (kg/m^2 in 2D, kg/m^3 in 3D) and time step */
+typedef struct case_material {
+    int dim;
+    double density, dt;
+} case_material;
+
+static sbc_status write_embedded(const script *s, const case_material *c, const char *dir, sbc_error *err)
 {
     char path[2 * SBC_NAME_LEN];
     FILE *fp;
@@ -113,17 +119,21 @@ static sbc_status write_embedded(const script *s, const char *dir, sbc_error *er
     if (st != SBC_OK)
         return st;
     fprintf(fp, "# %s on the embedded engine (servo-bc --decks); run in this folder\n", s->name);
-    fprintf(fp, "dimension 2\nread_packing packing.txt\n");
+    if (c->dim == 3)
+        fprintf(fp, "dimension 3\n%s\n", s->lattice3);
+    else
+        fprintf(fp, "dimension 2\nread_packing packing.txt\n");
     if (s->cohesive)
         fprintf(fp, "contact cohesive %s\n", cohesive_words(&s->bond_law).s);
     else
         fprintf(fp, "contact frictional kn %s ks %s mu %s\n", num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s);
-    fprintf(fp, "density %s\ntimestep %s\nservo_bc %s file embedded.csv\nrun\n", num(s->density).s, num(s->dt).s,
+    fprintf(fp, "density %s\ntimestep %s\nservo_bc %s file embedded.csv\nrun\n", num(c->density).s, num(c->dt).s,
             s->servo_words);
     return close_file(fp, path, err);
 }
 
-static sbc_status write_lammps(const script *s, const char *dir, double skin, double rmax, sbc_error *err)
+static sbc_status write_lammps(const script *s, const case_material *c, const char *dir, double skin, double rmax,
+                               sbc_error *err)
 {
     char path[2 * SBC_NAME_LEN];
     FILE *fp;
@@ -131,8 +141,9 @@ static sbc_status write_lammps(const script *s, const char *dir, double skin, do
     if (st != SBC_OK)
         return st;
     fprintf(fp, "# %s in LAMMPS (servo-bc --decks): build/lmp_servo -in lammps.in, in this folder\n", s->name);
-    fprintf(fp, "units           si\ndimension       2\nboundary        m m p\natom_style      sphere\n"
-                "read_data       packing.lammps.data\ngroup           frame_atoms type 2\n");
+    fprintf(fp, "units           si\ndimension       %d\nboundary        m m %s\natom_style      sphere\n"
+                "read_data       packing.lammps.data\ngroup           frame_atoms type 2\n",
+            c->dim, c->dim == 3 ? "m" : "p");
     if (s->cohesive) /* the core owns every contact: the pair style adds nothing */
         fprintf(fp, "pair_style      zero %s\npair_coeff      * *\n", num(2.0 * rmax).s);
     else
@@ -140,18 +151,21 @@ static sbc_status write_lammps(const script *s, const char *dir, double skin, do
                 num(s->law.ks).s, num(s->law.mu).s);
     fprintf(fp, "comm_modify     vel yes\nneighbor        %s bin\nneigh_modify    delay 0 every 1 check yes\n"
                 "timestep        %s\n",
-            num(skin).s, num(s->dt).s);
+            num(skin).s, num(c->dt).s);
     if (s->cohesive)
         fprintf(fp, "fix             bonds all servo_bc/bonds cohesive %s\n", cohesive_words(&s->bond_law).s);
     fprintf(fp, "fix             servo all servo_bc %s%s file lammps.csv\n", s->servo_words, frame_words(s, "lammps"));
-    fprintf(fp, "fix             integrate servo_interior nve/sphere disc\nfix             plane all enforce2d\n"
-                "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]%s\n"
+    fprintf(fp, c->dim == 3 ? "fix             integrate servo_interior nve/sphere\n"
+                            : "fix             integrate servo_interior nve/sphere disc\nfix             plane all "
+                              "enforce2d\n");
+    fprintf(fp, "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]%s\n"
                 "thermo          100000\nrun             2000000000    # the fix ends the run\n",
             s->cohesive ? " f_bonds[1]" : "");
     return close_file(fp, path, err);
 }
 
-static sbc_status write_liggghts(const script *s, const char *dir, double skin, sbc_error *err)
+static sbc_status write_liggghts(const script *s, const case_material *c, const char *dir, double skin,
+                                 sbc_error *err)
 {
     static const char *property[5] = {"kn", "kt", "gamman_abs", "gammat_abs", "coefficientFriction"};
     const double value[5] = {s->law.kn, s->law.ks, 0.0, 0.0, s->law.mu};
@@ -163,7 +177,8 @@ static sbc_status write_liggghts(const script *s, const char *dir, double skin, 
         return st;
     fprintf(fp, "# %s in LIGGGHTS (servo-bc --decks): build/liggghts_servo -in liggghts.in, in this folder\n",
             s->name);
-    fprintf(fp, "units           si\ndimension       2\nboundary        m m p\natom_style      sphere\n");
+    fprintf(fp, "units           si\ndimension       %d\nboundary        m m %s\natom_style      sphere\n", c->dim,
+            c->dim == 3 ? "m" : "p");
     if (s->cohesive) /* no pair style, so no neighbour bins to sort atoms by */
         fprintf(fp, "atom_modify     sort 0 0.0\n");
     fprintf(fp, "newton          off\ncommunicate     single vel yes\nread_data       packing.liggghts.data\n"
@@ -172,19 +187,21 @@ static sbc_status write_liggghts(const script *s, const char *dir, double skin, 
         fprintf(fp, "pair_style      none    # the core owns every contact\nneighbor        %s bin\n"
                     "neigh_modify    delay 0\ntimestep        %s\n"
                     "fix             bonds all servo_bc/bonds cohesive %s\n",
-                num(skin).s, num(s->dt).s, cohesive_words(&s->bond_law).s);
+                num(skin).s, num(c->dt).s, cohesive_words(&s->bond_law).s);
     } else {
         for (k = 0; k < 5; ++k)
             fprintf(fp, "fix             m%d all property/global %s peratomtypepair 2 %s %s %s %s\n", k + 1,
                     property[k], num(value[k]).s, num(value[k]).s, num(value[k]).s, num(value[k]).s);
         fprintf(fp, "pair_style      gran model hooke/stiffness tangential history absolute_damping on\n"
                     "pair_coeff      * *\nneighbor        %s bin\nneigh_modify    delay 0\ntimestep        %s\n",
-                num(skin).s, num(s->dt).s);
+                num(skin).s, num(c->dt).s);
     }
     fprintf(fp, "fix             servo all servo_bc %s%s file liggghts.csv\n", s->servo_words,
             frame_words(s, "liggghts"));
-    fprintf(fp, "fix             integrate servo_interior nve/sphere\nfix             plane all enforce2d\n"
-                "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]%s\n"
+    fprintf(fp, c->dim == 3 ? "fix             integrate servo_interior nve/sphere\n"
+                            : "fix             integrate servo_interior nve/sphere\nfix             plane all "
+                              "enforce2d\n");
+    fprintf(fp, "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]%s\n"
                 "thermo          100000\n"
                 "variable        done equal f_servo[18]    # LIGGGHTS cannot end a run from a fix\n"
                 "run             0\n"
@@ -195,7 +212,7 @@ static sbc_status write_liggghts(const script *s, const char *dir, double skin, 
     return close_file(fp, path, err);
 }
 
-static sbc_status write_yade(const script *s, const char *dir, sbc_error *err)
+static sbc_status write_yade(const script *s, const case_material *c, const char *dir, sbc_error *err)
 {
     char path[2 * SBC_NAME_LEN];
     FILE *fp;
@@ -207,8 +224,10 @@ static sbc_status write_yade(const script *s, const char *dir, sbc_error *err)
                 "import servo_bc  # noqa: E402\n\n",
             s->name);
     fprintf(fp, "words = '%s%s file yade.csv'\n", s->servo_words, frame_words(s, "yade"));
-    fprintf(fp, "servo_bc.run_case('packing.yade', words, density=%s, kn=%s, ks=%s, mu=%s, dt=%s", num(s->density).s,
-            num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s, num(s->dt).s);
+    fprintf(fp, "servo_bc.run_case('packing.yade', words, density=%s, kn=%s, ks=%s, mu=%s, dt=%s", num(c->density).s,
+            num(s->law.kn).s, num(s->law.ks).s, num(s->law.mu).s, num(c->dt).s);
+    if (c->dim == 3)
+        fprintf(fp, ", dimension=3");
     if (s->cohesive)
         fprintf(fp, ",\n                  cohesive='%s'", cohesive_words(&s->bond_law).s);
     fprintf(fp, ")\n");
@@ -220,13 +239,25 @@ sbc_status sbc_runner_write_decks(sbc_script_case *s, const char *dir, sbc_error
     static const char *format[4] = {"text", "lammps", "liggghts", "yade"};
     static const char *file[4] = {"packing.txt", "packing.lammps.data", "packing.liggghts.data", "packing.yade"};
     char path[2 * SBC_NAME_LEN];
-    int k;
-    double rmin = HUGE_VAL, rmax = 0.0;
+    int k, n;
+    double rmin = HUGE_VAL, rmax = 0.0, fraction = 0.0;
+    const double *radius;
+    case_material c = {2, s->density, s->dt};
     sbc_status st = SBC_OK;
-    if (!s->have_packing) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no packing (use 'lattice', 'read_packing' or 'generate')");
+    if (s->bpm) { /* after 'dimension 3': the sphere packing and the 3D material */
+        c.dim = 3;
+        sbc_script_bpm_material(s, &c.density, &c.dt, &fraction);
+        if (!s->x3) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no sphere packing (use 'lattice cubic ...')");
+        if (!(c.density > 0.0)) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no density (use 'density RHO')");
+        if (!(c.dt > 0.0))
+            return sbc_fail(err, SBC_ERR_INPUT, "--decks: no time step in seconds (use 'timestep DT'; the hosts take "
+                            "no 'timestep critical')");
+    } else {
+        if (!s->have_packing) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no packing (use 'lattice', 'read_packing' or 'generate')");
+        if (!s->have_density) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no density (use 'density RHO')");
+        if (!s->have_dt) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no time step (use 'timestep DT')");
+    }
     if (!s->have_contact) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no contact law (use 'contact frictional ...')");
-    if (!s->have_density) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no density (use 'density RHO')");
-    if (!s->have_dt) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no time step (use 'timestep DT')");
     if (!s->have_servo) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no boundary condition (use 'servo_bc BC ...')");
     if (s->settings.frame_group[0])
         return sbc_fail(err, SBC_ERR_INPUT, "--decks: servo_bc keyword 'frame' names a host group '%s'; the decks "
@@ -237,16 +268,19 @@ sbc_status sbc_runner_write_decks(sbc_script_case *s, const char *dir, sbc_error
     if ((st = decks_folder(s, dir, err)) != SBC_OK)
         return st;
     s->decks_line = s->line;
-    for (k = 0; k < s->packing.n; ++k)
-        rmin = fmin(rmin, s->packing.r[k]), rmax = fmax(rmax, s->packing.r[k]);
+    n = c.dim == 3 ? s->n3 : s->packing.n;
+    radius = c.dim == 3 ? s->r3 : s->packing.r;
+    for (k = 0; k < n; ++k)
+        rmin = fmin(rmin, radius[k]), rmax = fmax(rmax, radius[k]);
     for (k = 0; k < 4 && st == SBC_OK; ++k) {
         snprintf(path, sizeof path, "%s/%s", dir, file[k]);
-        st = sbc_script_write_packing_as(s, format[k], path, err);
+        st = c.dim == 3 ? sbc_script_write_spheres(s, format[k], path, err)
+                        : sbc_script_write_packing_as(s, format[k], path, err);
     }
     /* neighbour skin R_min / 4, as the hand-written decks */
-    if (st == SBC_OK) st = write_embedded(s, dir, err);
-    if (st == SBC_OK) st = write_lammps(s, dir, 0.25 * rmin, rmax, err);
-    if (st == SBC_OK) st = write_liggghts(s, dir, 0.25 * rmin, err);
-    if (st == SBC_OK) st = write_yade(s, dir, err);
+    if (st == SBC_OK) st = write_embedded(s, &c, dir, err);
+    if (st == SBC_OK) st = write_lammps(s, &c, dir, 0.25 * rmin, rmax, err);
+    if (st == SBC_OK) st = write_liggghts(s, &c, dir, 0.25 * rmin, err);
+    if (st == SBC_OK) st = write_yade(s, &c, dir, err);
     return st;
 }

@@ -57,6 +57,17 @@ sbc_status sbc_packing_write_liggghts(const sbc_packing *p, const int *is_frame,
                                       sbc_error *err);
 sbc_status sbc_packing_write_yade(const sbc_packing *p, const int *is_frame, const char *path, sbc_error *err);
 
+/* A sphere packing (centres x [3n], radii r [n], m): the data file of
+ * atom_style sphere for host "lammps" or "liggghts" (type 2 = frame, the
+ * density column rho, kg/m^3: both give M = 4/3 pi R^3 rho in 3D), and the
+ * YADE file (x y z r frame). */
+sbc_status sbc_spheres_write_data(int n, const double *x, const double *r, const int *is_frame, double density,
+                                  const char *host, const char *path, sbc_error *err);
+sbc_status sbc_spheres_write_yade(int n, const double *x, const double *r, const int *is_frame, const char *path,
+                                  sbc_error *err);
+/* ... and as text, x y z r per line (m) */
+sbc_status sbc_spheres_write_text(int n, const double *x, const double *r, const char *path, sbc_error *err);
+
 /* Orientations atan2(dy, dx) (rad) of the branch vectors of all pairs whose
  * gap is below tol (m); *angle is malloc'ed (free it), *count its length. */
 sbc_status sbc_packing_contact_angles(const sbc_packing *p, double tol, double **angle, int *count, sbc_error *err);

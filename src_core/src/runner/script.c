@@ -583,14 +583,18 @@ static sbc_status execute_3d(script *s, int nw, char **w, sbc_error *err)
         return cmd_contact(s, nw, w, err);
     }
     if (strcmp(c, "servo_bc") == 0) return cmd_servo_bc(s, nw, w, err);
+    if (strcmp(c, "write_packing") == 0) {
+        if ((st = sbc_script_expect_count(nw, w, 3, "write_packing text|lammps|liggghts|yade FILE", err)) != SBC_OK)
+            return st;
+        return sbc_script_write_spheres(s, w[1], w[2], err);
+    }
     if (strcmp(c, "vtk") == 0 && nw == 3) /* vtk EVERY PREFIX: the servo run's; vtk PREFIX: the bonded model's */
         return cmd_snapshots(nw, w, &s->vtk_every, s->vtk_prefix, err);
     if (strcmp(c, "run") == 0 && s->servo_pending) {
         if ((st = sbc_script_expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
         s->servo_pending = 0;
         if (s->decks_dir)
-            return sbc_fail(err, SBC_ERR_INPUT, "run: 3D decks for the hosts are not written in this version (the "
-                            "servo_bc run of line %d runs on the embedded engine)", s->servo_line);
+            return s->write_decks(s, s->decks_dir, err);
         return sbc_script_run_spheres(s, err);
     }
     return sbc_script_bpm(s, nw, w, err);

@@ -8,6 +8,7 @@
  *   run
  *
  *   vtk EVERY PREFIX     (spheres and the frame's surface, spheres_vtk.h)
+ *   write_packing text|lammps|liggghts|yade FILE
  *
  * `run` runs the servo_bc line on the sphere engine (spheres.h) through the
  * host driver, as the hosts do: the results file with the 3D columns, a log
@@ -16,12 +17,15 @@
 #include "sbc/driver.h"
 #include "sbc/embedded/spheres.h"
 #include "sbc/embedded/spheres_vtk.h"
+#include "sbc/embedded/output_file.h"
 #include "sbc/numbers.h"
+#include "sbc/packing.h"
 #include "sbc/results.h"
 #include "sbc/time_step.h"
 #include "sbc/version.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -70,7 +74,52 @@ sbc_status sbc_script_lattice_cubic(script *s, int nw, char **w, sbc_error *err)
                 s->r3[m] = r;
             }
     s->n3 = m;
+    snprintf(s->lattice3, sizeof s->lattice3, "lattice cubic %ld %ld %ld spacing %s radius %s", n[0], n[1], n[2], w[6],
+             w[8]);
     return SBC_OK;
+}
+
+sbc_status sbc_script_write_spheres(script *s, const char *format, const char *path, sbc_error *err)
+{
+    double density, dt, fraction;
+    sbc_frame frame;
+    int *is_frame, k;
+    sbc_status st = sbc_script_files_check(s, path, "write_packing:", err);
+    if (st == SBC_OK && s->check)
+        st = sbc_output_probe(path, SBC_OUTPUT_PACKING, "write_packing", err);
+    if (st != SBC_OK)
+        return st;
+    if (!s->x3)
+        return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no sphere packing (use 'lattice cubic ...' first)");
+    if (strcmp(format, "text") == 0) {
+        st = s->check ? SBC_OK : sbc_spheres_write_text(s->n3, s->x3, s->r3, path, err);
+        if (st == SBC_OK)
+            sbc_script_files_note(s, path, "packing written");
+        return st;
+    }
+    if (strcmp(format, "lammps") != 0 && strcmp(format, "liggghts") != 0 && strcmp(format, "yade") != 0)
+        return sbc_fail(err, SBC_ERR_INPUT, "write_packing: format '%s' is not known after 'dimension 3' (expected "
+                        "text, lammps, liggghts or yade)", format);
+    sbc_script_bpm_material(s, &density, &dt, &fraction);
+    if (format[0] == 'l' && !(density > 0.0))
+        return sbc_fail(err, SBC_ERR_INPUT, "write_packing %s: no density (use 'density RHO', kg/m^3, first: the data "
+                        "file carries the masses)", format);
+    if ((st = sbc_frame_detect_3d(&frame, s->n3, s->x3, s->r3, 0.0, err)) != SBC_OK)
+        return st;
+    if (!(is_frame = calloc((size_t)s->n3, sizeof *is_frame))) {
+        sbc_frame_free(&frame);
+        return sbc_fail(err, SBC_ERR_NOMEM, "write_packing: out of memory");
+    }
+    for (k = 0; k < frame.n; ++k)
+        is_frame[frame.particle[k]] = 1;
+    if (!s->check)
+        st = format[0] == 'y' ? sbc_spheres_write_yade(s->n3, s->x3, s->r3, is_frame, path, err)
+                              : sbc_spheres_write_data(s->n3, s->x3, s->r3, is_frame, density, format, path, err);
+    free(is_frame);
+    sbc_frame_free(&frame);
+    if (st == SBC_OK)
+        sbc_script_files_note(s, path, "packing written");
+    return st;
 }
 
 /* the run's side of the driver: the engine's callbacks (spheres.h) and the
