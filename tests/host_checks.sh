@@ -88,6 +88,23 @@ layer3d_form() {
   fi
 }
 
+# cubic_restart_check PART2_HEAD_FILE: (P) on the frictional 4^3 lattice of
+# $DECK split by write_restart and read_restart after 2000 steps (inside
+# increment 1, which ends at step 2057 in LAMMPS): the uninterrupted run's
+# rows (the rotation vectors in the fix's per-atom restart data); part 2 is
+# the deck's variables, read_restart, PART2_HEAD_FILE (what the host does not
+# keep in its restart file) and the deck from fix servo on
+cubic_restart_check() {
+  sed "/^run  *0\$/d; s|^run .*|run 2000\nwrite_restart $TMP/cubic.restart|; /jump SELF loop/d" "$DECK" > "$TMP/cubic_part1.in"
+  { sed -n '/^variable  *[a-zA-Z0-9]*  *index/p' "$DECK"; echo "read_restart $TMP/cubic.restart"; cat "$1"
+    sed -n '/^fix  *servo /,$p' "$DECK"; } > "$TMP/cubic_part2.in"
+  run_deck 1 "$DECK" "$TMP/cubic_full.csv" "$TMP/cubic_full.log" bc P kt 5e3 mu 0.5
+  run_deck 1 cubic_part1.in "$TMP/cubic_split.csv" "$TMP/cubic_part1.log" bc P kt 5e3 mu 0.5 &&
+    run_deck 1 cubic_part2.in "$TMP/cubic_split.csv" "$TMP/cubic_part2.log" bc P kt 5e3 mu 0.5 || tail -3 "$TMP/cubic_part2.log"
+  TOLERANCE=1e-12 same_csvs "3d (P) frictional, a run split by write_restart/read_restart inside increment 1$(
+    cmp -s "$TMP/cubic_full.csv" "$TMP/cubic_split.csv" && echo ", byte for byte")" 3 "$TMP/cubic_full.csv" "$TMP/cubic_split.csv"
+}
+
 # deck_with SED-EXPRESSION OUT: the lattice deck edited
 deck_with() { sed "$1" "$DECK" > "$2"; }
 

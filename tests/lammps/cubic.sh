@@ -19,21 +19,13 @@ cubic_form 1 "(T) frictionless touching" touching bc T diameter 0.002 F11 0.9999
 for np in 1 2; do
   layer3d_form $np diameter 0.002 kt 5e3 mu 0.5
 done
-# restart in 3d: (P) on the frictional lattice split by write_restart and
-# read_restart after 2000 steps (inside increment 1): the uninterrupted run's
-# rows (the rotation vectors of the frame and the interior in the per-atom
-# restart data); the per-atom array's 4 columns in a dump
-sed "s|^run .*|run 2000\nwrite_restart $TMP/cubic.restart|" "$DECK" > "$TMP/cubic_part1.in"
-{ sed -n '/^variable/p' "$DECK"; echo "read_restart $TMP/cubic.restart"
-  printf 'comm_modify vel yes\nneighbor 0.000255 bin\nneigh_modify delay 0 every 1 check yes\n'
-  sed -n '/^fix  *servo /,$p' "$DECK"; } > "$TMP/cubic_part2.in"
+# restart in 3d (host_checks.sh, cubic_restart_check); the per-atom array's
+# 4 columns in a dump
+printf 'comm_modify vel yes\nneighbor 0.000255 bin\nneigh_modify delay 0 every 1 check yes\n' > "$TMP/cubic_head.in"
+cubic_restart_check "$TMP/cubic_head.in"
 { cat "$DECK"; echo "write_dump all custom $TMP/cubic_atoms.txt id f_servo[1] f_servo[2] f_servo[3] f_servo[4] modify sort id"; } \
-  > "$TMP/cubic_full.in"
-run_deck 1 cubic_full.in "$TMP/cubic_full.csv" "$TMP/cubic_full.log" bc P kt 5e3 mu 0.5
-run_deck 1 cubic_part1.in "$TMP/cubic_split.csv" "$TMP/cubic_part1.log" bc P kt 5e3 mu 0.5 &&
-  run_deck 1 cubic_part2.in "$TMP/cubic_split.csv" "$TMP/cubic_part2.log" bc P kt 5e3 mu 0.5 || tail -3 "$TMP/cubic_part2.log"
-TOLERANCE=1e-12 same_csvs "3d (P) frictional, a run split by write_restart/read_restart inside increment 1$(
-  cmp -s "$TMP/cubic_full.csv" "$TMP/cubic_split.csv" && echo ", byte for byte")" 3 "$TMP/cubic_full.csv" "$TMP/cubic_split.csv"
+  > "$TMP/cubic_dump.in"
+run_deck 1 cubic_dump.in "$TMP/cubic_dump.csv" "$TMP/cubic_dump.log" bc P kt 5e3 mu 0.5
 dumped=$(awk 'f && NF == 5 { n++; flags += $2; if ($3 != $3 + 0 || $5 != $5 + 0) bad++ } /^ITEM: ATOMS/ { f = 1 }
   END { printf "%d %d %d", n, flags, bad }' "$TMP/cubic_atoms.txt" 2>/dev/null)
 if [ "$dumped" = "64 56 0" ]; then

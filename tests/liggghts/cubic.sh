@@ -4,7 +4,8 @@
 # (host_checks.sh, cubic_form): (D) and (P) on the prestressed lattice with
 # friction (kt = kn / 2, mu 0.5), 1 and 2 ranks; (T) on the touching
 # frictionless lattice; the 3D layer (mixed) on the touching lattice with
-# friction, 1 and 2 ranks. Prints "N passed, N failed".
+# friction, 1 and 2 ranks; a (P) run split by restart. Prints "N passed, N
+# failed".
 # Usage: cubic.sh LIGGGHTS_SERVO
 set -u
 BIN=$(cd "$(dirname "${1:?usage: cubic.sh LIGGGHTS_SERVO}")" && pwd)/$(basename "$1")
@@ -34,6 +35,11 @@ cubic_form 1 "(T) frictionless touching" touching bc T data touching.data F11 0.
 for np in 1 2; do
   layer3d_form $np data touching.data kt 5e3 mu 0.5
 done
+# restart in 3d (host_checks.sh, cubic_restart_check): LIGGGHTS keeps neither
+# its communication, neighbour and material settings nor the time step
+{ printf 'newton off\ncommunicate single vel yes\nneighbor 0.000255 bin\nneigh_modify delay 0\n'
+  sed -n '/^fix  *kn /,/^timestep/p' "$DECK"; } > "$TMP/cubic_head.in"
+cubic_restart_check "$TMP/cubic_head.in"
 rm -rf "$TMP"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
