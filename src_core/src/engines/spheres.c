@@ -292,16 +292,24 @@ sbc_status sbc_spheres_forces(sbc_spheres *e, sbc_error *err)
         pair *p = &e->pairs[k];
         const int a = p->i, b = p->j;
         const double *xa = &e->x[3 * a], *xb = &e->x[3 * b];
-        double n[3], xc[3], ra[3], rb[3], dta[3], dtb[3], wa[3], wb[3], du[3], f[3], t[3], L, dn;
-        L = sbc_parallel_bond_geometry(xa, e->r[a], xb, e->r[b], n, xc);
-        dn = e->r[a] + e->r[b] - L;
-        if (dn <= 0.0) {
+        double n[3], ra[3], rb[3], dta[3], dtb[3], wa[3], wb[3], du[3], f[3], t[3], d2 = 0.0, L, inv, dn, sa;
+        const double rs = e->r[a] + e->r[b];
+        for (q = 0; q < 3; ++q) {
+            n[q] = xb[q] - xa[q];
+            d2 += n[q] * n[q];
+        }
+        if (d2 >= rs * rs) {
             memset(&p->c, 0, sizeof p->c); /* contact lost: its history with it */
             continue;
         }
+        L = sqrt(d2);
+        inv = 1.0 / L;
+        dn = rs - L;
+        sa = e->r[a] - 0.5 * dn; /* the contact point halfway across the overlap, x_c = x_a + sa n */
         for (q = 0; q < 3; ++q) {
-            ra[q] = xc[q] - xa[q];
-            rb[q] = xc[q] - xb[q];
+            n[q] *= inv;
+            ra[q] = sa * n[q];
+            rb[q] = (sa - L) * n[q];
             dta[q] = dt * e->w[3 * a + q];
             dtb[q] = dt * e->w[3 * b + q];
         }
