@@ -20,13 +20,26 @@ static void cross(const double a[3], const double b[3], double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* eq. 2 in 3D: a surface quadrilateral (a, b, c, d) has the vector area
- * S = (X_c - X_a) x (X_d - X_b) / 2 (its area times its normal when planar,
- * the vector area of the bilinear patch through its corners otherwise), and
- * gives S / 4 to each corner; on a lattice face d^2 to a face particle, d^2/2
- * to an edge particle, d^2/4 to a corner, from each face it lies on. V =
- * sum_q X_q . A_q / 3 (divergence theorem: sum_q X_q (x) A_q = V I, exact
- * for planar faces). */
+/* the vector area of the triangle (a, b, c), (b - a) x (c - a) / 2, into S */
+static void triangle_area(const double *a, const double *b, const double *c, double S[3])
+{
+    const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    int k;
+    cross(ab, ac, S);
+    for (k = 0; k < 3; ++k)
+        S[k] *= 0.5;
+}
+
+/* eq. 2 in 3D: each surface quadrilateral (a, b, c, d) is cut into two
+ * triangles along either diagonal, (a, b, c) + (a, c, d) and (a, b, d) +
+ * (b, c, d); each triangle gives a third of its vector area to each of its
+ * corners, and the two cuts are averaged. Each cut is a closed surface of
+ * flat triangles, so sum_q X_q (x) A_q = V I holds to round-off whether or
+ * not the quadrilaterals are planar, with V = sum_q X_q . A_q / 3 the mean of
+ * the two cuts' volumes (divergence theorem). On a planar parallelogram every
+ * corner gets a quarter of its vector area (the 2D half-segment rule
+ * lifted): d^2 to a face particle of a cubic lattice, d^2/2 to an edge
+ * particle, d^2/4 to a corner, from each face it lies on. */
 static void area_vectors(sbc_frame *f)
 {
     int c, q, k;
@@ -34,12 +47,17 @@ static void area_vectors(sbc_frame *f)
     for (c = 0; c < f->ncell; ++c) {
         const int *v = &f->cell[4 * c];
         const double *a = &f->X[3 * v[0]], *b = &f->X[3 * v[1]], *cc = &f->X[3 * v[2]], *d = &f->X[3 * v[3]];
-        const double ac[3] = {cc[0] - a[0], cc[1] - a[1], cc[2] - a[2]}, bd[3] = {d[0] - b[0], d[1] - b[1], d[2] - b[2]};
-        double S[3];
-        cross(ac, bd, S);
-        for (q = 0; q < 4; ++q)
-            for (k = 0; k < 3; ++k)
-                f->A[3 * v[q] + k] += 0.125 * S[k];
+        double S1[3], S2[3], T1[3], T2[3];
+        triangle_area(a, b, cc, S1);
+        triangle_area(a, cc, d, S2);
+        triangle_area(a, b, d, T1);
+        triangle_area(b, cc, d, T2);
+        for (k = 0; k < 3; ++k) {
+            f->A[3 * v[0] + k] += (S1[k] + S2[k] + T1[k]) / 6.0;
+            f->A[3 * v[1] + k] += (S1[k] + T1[k] + T2[k]) / 6.0;
+            f->A[3 * v[2] + k] += (S1[k] + S2[k] + T2[k]) / 6.0;
+            f->A[3 * v[3] + k] += (S2[k] + T1[k] + T2[k]) / 6.0;
+        }
     }
     f->V = 0.0;
     for (q = 0; q < f->n; ++q)
