@@ -31,61 +31,81 @@ static double quantize(double a) { return ldexp(nearbyint(ldexp(a, 50)), -50); }
 static double image(double d, double L) { return d - L * floor(d / L + 0.5); }
 
 typedef struct box {
-    int n;
-    double L, rmax, *x, *r, *v, *f;
-    int *head, *next, cells; /* periodic cell list, cells^2 heads */
+    int dim, n;
+    double L, rmax, *x, *r, *v, *f; /* x, v, f [dim n] */
+    int *head, *next, cells; /* periodic cell list, cells^dim heads */
 } box;
 
 static double pair_force(box *b, int i, int j)
 {
-    double dx = image(b->x[2 * j] - b->x[2 * i], b->L), dy = image(b->x[2 * j + 1] - b->x[2 * i + 1], b->L);
-    double rs = b->r[i] + b->r[j], d2 = dx * dx + dy * dy, d, ov;
+    const int dim = b->dim;
+    double dx[3], rs = b->r[i] + b->r[j], d2 = 0.0, d, ov;
+    int k;
+    for (k = 0; k < dim; ++k) {
+        dx[k] = image(b->x[dim * j + k] - b->x[dim * i + k], b->L);
+        d2 = k ? d2 + dx[k] * dx[k] : dx[k] * dx[k];
+    }
     if (d2 >= rs * rs)
         return 0.0;
     d = sqrt(d2);
     ov = rs - d;
-    if (d > 0.0) {
-        b->f[2 * i] -= ov * dx / d;
-        b->f[2 * i + 1] -= ov * dy / d;
-        b->f[2 * j] += ov * dx / d;
-        b->f[2 * j + 1] += ov * dy / d;
-    }
+    if (d > 0.0)
+        for (k = 0; k < dim; ++k) {
+            b->f[dim * i + k] -= ov * dx[k] / d;
+            b->f[dim * j + k] += ov * dx[k] / d;
+        }
     return 0.5 * ov * ov;
+}
+
+/* the cell of particle i along each axis, in a box of nc cells per side */
+static void cell_of(const box *b, int i, int nc, int c[3])
+{
+    int k;
+    c[2] = 0;
+    for (k = 0; k < b->dim; ++k) {
+        c[k] = (int)(b->x[b->dim * i + k] / b->L * nc);
+        if (c[k] >= nc) c[k] = nc - 1;
+    }
 }
 
 /* Overlap forces (unit stiffness) and energy sum(overlap^2)/2 in the periodic
  * box: a periodic cell list (cells >= 2 rmax wide) when the box holds at least
- * 3 x 3 cells, all pairs otherwise. */
+ * 3 cells a side, all pairs otherwise. */
 static double forces(box *b)
 {
+    const int dim = b->dim;
     double e = 0.0;
-    int i, j, nc = (int)(b->L / (2.0 * b->rmax));
-    memset(b->f, 0, sizeof(double) * 2 * (size_t)b->n);
+    int i, j, k, nc = (int)(b->L / (2.0 * b->rmax)), ncell = 1, oz, oy, ox;
+    memset(b->f, 0, sizeof(double) * (size_t)dim * (size_t)b->n);
     if (nc < 3 || nc > b->cells) {
         for (i = 0; i < b->n; ++i)
             for (j = i + 1; j < b->n; ++j)
                 e += pair_force(b, i, j);
         return e;
     }
-    for (i = 0; i < nc * nc; ++i)
+    for (k = 0; k < dim; ++k)
+        ncell *= nc;
+    for (i = 0; i < ncell; ++i)
         b->head[i] = -1;
     for (i = 0; i < b->n; ++i) {
-        int cx = (int)(b->x[2 * i] / b->L * nc), cy = (int)(b->x[2 * i + 1] / b->L * nc), c;
-        if (cx >= nc) cx = nc - 1;
-        if (cy >= nc) cy = nc - 1;
-        c = cy * nc + cx;
-        b->next[i] = b->head[c];
-        b->head[c] = i;
+        int c[3];
+        cell_of(b, i, nc, c);
+        k = (c[2] * nc + c[1]) * nc + c[0];
+        b->next[i] = b->head[k];
+        b->head[k] = i;
     }
     for (i = 0; i < b->n; ++i) {
-        int cx = (int)(b->x[2 * i] / b->L * nc), cy = (int)(b->x[2 * i + 1] / b->L * nc), ox, oy;
-        if (cx >= nc) cx = nc - 1;
-        if (cy >= nc) cy = nc - 1;
-        for (oy = -1; oy <= 1; ++oy)
-            for (ox = -1; ox <= 1; ++ox)
-                for (j = b->head[((cy + oy + nc) % nc) * nc + (cx + ox + nc) % nc]; j >= 0; j = b->next[j])
-                    if (j > i)
-                        e += pair_force(b, i, j);
+        int c[3];
+        cell_of(b, i, nc, c);
+        for (oz = dim == 3 ? -1 : 0; oz <= (dim == 3 ? 1 : 0); ++oz)
+            for (oy = -1; oy <= 1; ++oy)
+                for (ox = -1; ox <= 1; ++ox) {
+                    const int z = dim == 3 ? (c[2] + oz + nc) % nc : 0;
+                    for (j = b->head[(z * nc + (c[1] + oy + nc) % nc) * nc + (c[0] + ox + nc) % nc]; j >= 0;
+                         j = b->next[j])
+                        if (j > i)
+                            e += pair_force(b, i, j);
+                }
     }
     return e;
 }
@@ -102,7 +122,7 @@ static void wrap_cb(void *ctx, size_t k)
 static double relax(box *b, double ftol)
 {
     sbc_fire_problem p;
-    p.n = 2 * (size_t)b->n;
+    p.n = (size_t)b->dim * (size_t)b->n;
     p.x = b->x;
     p.v = b->v;
     p.f = b->f;
@@ -116,18 +136,30 @@ static double relax(box *b, double ftol)
 static void scale_box(box *b, double L)
 {
     int k;
-    for (k = 0; k < 2 * b->n; ++k)
+    for (k = 0; k < b->dim * b->n; ++k)
         b->x[k] *= L / b->L;
     b->L = L;
 }
 
-sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sbc_generate_info *info,
-                                 sbc_error *err)
+/* the generated packing: m particles, centres x [dim m], radii r [m], the
+   periodic box [0, L]^dim */
+typedef struct generated {
+    int m;
+    double *x, *r, L;
+} generated;
+
+/* free (the ball's) volume of a particle of radius r in dim dimensions: pi
+   r^2 or 4/3 pi r^3 */
+static double measure(int dim, double r) { return dim == 3 ? 4.0 / 3.0 * M_PI * r * r * r : M_PI * r * r; }
+
+static sbc_status generate(const sbc_generate_def *def, int dim, generated *p, sbc_generate_info *info,
+                           sbc_error *err)
 {
     unsigned long long s = def->seed * 0x9E3779B97F4A7C15ULL + 1;
     box b, keep;
     double area = 0.0, shrink = 0.01, ftol = 1e-12 * def->r_min, jam = 1e-10 * def->r_min, ecut;
-    int k, n = def->n, corner, cap, m = 0;
+    int k, n = def->n, corner, cap, m = 0, shifts = 1;
+    const size_t dn = (size_t)dim * (size_t)n;
     struct timespec t0, shown;
     memset(p, 0, sizeof *p);
     if (n < 4 || n > 100000)
@@ -139,15 +171,16 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     if (!(def->r_min > 0.0) || !(def->polydispersity >= 1.0))
         return sbc_fail(err, SBC_ERR_INPUT, "generate: R_min %g must be > 0 and polydispersity %g >= 1", def->r_min,
                         def->polydispersity);
+    b.dim = keep.dim = dim;
     b.n = keep.n = n;
-    b.x = malloc(sizeof(double) * 2 * (size_t)n);
+    b.x = malloc(sizeof(double) * dn);
     b.r = malloc(sizeof(double) * (size_t)n);
-    b.v = malloc(sizeof(double) * 2 * (size_t)n);
-    b.f = malloc(sizeof(double) * 2 * (size_t)n);
-    b.cells = (int)sqrt((double)n) + 1;
-    b.head = malloc(sizeof(int) * (size_t)(b.cells * b.cells));
+    b.v = malloc(sizeof(double) * dn);
+    b.f = malloc(sizeof(double) * dn);
+    b.cells = (int)(dim == 3 ? cbrt((double)n) : sqrt((double)n)) + 1;
+    b.head = malloc(sizeof(int) * (size_t)(dim == 3 ? b.cells * b.cells * b.cells : b.cells * b.cells));
     b.next = malloc(sizeof(int) * (size_t)n);
-    keep.x = malloc(sizeof(double) * 2 * (size_t)n);
+    keep.x = malloc(sizeof(double) * dn);
     if (!b.x || !b.r || !b.v || !b.f || !b.head || !b.next || !keep.x) {
         free(b.x); free(b.r); free(b.v); free(b.f); free(b.head); free(b.next); free(keep.x);
         return sbc_fail(err, SBC_ERR_NOMEM, "generate: out of memory");
@@ -155,15 +188,16 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     b.rmax = 0.0;
     for (k = 0; k < n; ++k) {
         b.r[k] = def->r_min * (1.0 + (def->polydispersity - 1.0) * sbc_uniform(&s));
-        area += M_PI * b.r[k] * b.r[k];
+        area += measure(dim, b.r[k]);
         if (b.r[k] > b.rmax) b.rmax = b.r[k];
     }
-    b.L = sqrt(area / 0.5); /* start at a packing fraction of 0.5 */
-    for (k = 0; k < 2 * n; ++k)
+    /* start at a packing fraction of 0.5 (discs) or 0.3 (spheres) */
+    b.L = dim == 3 ? cbrt(area / 0.3) : sqrt(area / 0.5);
+    for (k = 0; k < dim * n; ++k)
         b.x[k] = b.L * sbc_uniform(&s);
     ecut = 0.5 * n * jam * jam;
     relax(&b, ftol);
-    memcpy(keep.x, b.x, sizeof(double) * 2 * (size_t)n);
+    memcpy(keep.x, b.x, sizeof(double) * dn);
     keep.L = b.L;
     /* shrink until jammed; halve the step at each jam */
     timespec_get(&t0, TIME_UTC);
@@ -175,19 +209,20 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
             if ((double)(now.tv_sec - shown.tv_sec) + 1e-9 * (double)(now.tv_nsec - shown.tv_nsec) >=
                 SBC_GENERATE_PROGRESS) {
                 shown = now;
-                fprintf(def->log, "  generate: jamming %d discs, box %.6g m, packing fraction %.4f, step %.1e, "
-                        "elapsed %.0f s\n", n, b.L, area / (b.L * b.L), shrink,
+                fprintf(def->log, "  generate: jamming %d %s, box %.6g m, packing fraction %.4f, step %.1e, "
+                        "elapsed %.0f s\n", n, dim == 3 ? "spheres" : "discs", b.L,
+                        area / (dim == 3 ? b.L * b.L * b.L : b.L * b.L), shrink,
                         (double)(now.tv_sec - t0.tv_sec) + 1e-9 * (double)(now.tv_nsec - t0.tv_nsec));
                 fflush(def->log);
             }
         }
         scale_box(&b, b.L * (1.0 - shrink));
         if (relax(&b, ftol) > ecut) {
-            memcpy(b.x, keep.x, sizeof(double) * 2 * (size_t)n);
+            memcpy(b.x, keep.x, sizeof(double) * dn);
             b.L = keep.L;
             shrink *= 0.5;
         } else {
-            memcpy(keep.x, b.x, sizeof(double) * 2 * (size_t)n);
+            memcpy(keep.x, b.x, sizeof(double) * dn);
             keep.L = b.L;
         }
     }
@@ -198,82 +233,97 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
     if (def->strain > 0.0) {
         /* a load-bearing packing: the jammed box compressed by `strain` and its
            overlaps relaxed to force balance (FIRE on the unit-stiffness forces) */
-        memcpy(b.x, keep.x, sizeof(double) * 2 * (size_t)n);
+        memcpy(b.x, keep.x, sizeof(double) * dn);
         b.L = keep.L;
         scale_box(&b, b.L * (1.0 - def->strain));
         relax(&b, ftol);
-        memcpy(keep.x, b.x, sizeof(double) * 2 * (size_t)n);
+        memcpy(keep.x, b.x, sizeof(double) * dn);
         keep.L = b.L;
     } else {
         scale_box(&keep, keep.L * (1.0 + 1e-8));
     }
-    /* reconstruction: particle `corner` at the origin, copies across the edges */
-    cap = 4 * n;
-    p->x = malloc(sizeof(double) * 2 * (size_t)cap);
+    /* reconstruction: particle `corner` at the origin, copies across the faces */
+    for (k = 0; k < dim; ++k)
+        shifts *= 2;
+    cap = shifts * n;
+    p->x = malloc(sizeof(double) * (size_t)dim * (size_t)cap);
     p->r = malloc(sizeof(double) * (size_t)cap);
     if (!p->x || !p->r) {
         free(b.x); free(b.r); free(b.v); free(b.f); free(b.head); free(b.next); free(keep.x);
-        sbc_packing_free(p);
+        free(p->x);
+        free(p->r);
+        memset(p, 0, sizeof *p);
         return sbc_fail(err, SBC_ERR_NOMEM, "generate: out of memory");
     }
     /* positions and L on a grid of 2^-50 m (~9e-16 m): then x + L and x - L are
        exact, and every copy sits at exactly +-L from its original both ways */
     keep.L = quantize(keep.L);
-    /* the corner particle: a disc of radius r crossing both edges beside a
-       corner disc of radius R_c at the origin would have its centre within
-       r sqrt(2) of it, and overlap it unless r > (1 + sqrt(2)) R_c; that disc
-       would be a second corner. Disc 0 when it is large enough (every packing
-       of polydispersity up to 2), else the largest disc. */
+    /* the corner particle: a particle of radius r crossing the dim faces beside
+       a corner particle of radius R_c at the origin would have its centre
+       within r sqrt(dim) of it, and overlap it unless r > (1 + sqrt(dim)) R_c;
+       that one would be a second corner. Particle 0 when it is large enough
+       (every packing of polydispersity up to 2 in 2D), else the largest. */
     corner = 0;
-    if (b.rmax > (1.0 + sqrt(2.0)) * b.r[0])
+    if (b.rmax > (1.0 + sqrt((double)dim)) * b.r[0])
         for (k = 1; k < n; ++k)
             if (b.r[k] > b.r[corner])
                 corner = k;
     for (k = 0; k < n; ++k) {
-        double x = quantize(wrap(keep.x[2 * k] - keep.x[2 * corner], keep.L));
-        double y = quantize(wrap(keep.x[2 * k + 1] - keep.x[2 * corner + 1], keep.L)), r = b.r[k];
-        if (x >= keep.L) x = 0.0;
-        if (y >= keep.L) y = 0.0;
-        int sx, sy;
+        const double r = b.r[k];
+        double x[3] = {0.0, 0.0, 0.0};
+        int a, sh[3];
+        for (a = 0; a < dim; ++a) {
+            x[a] = quantize(wrap(keep.x[dim * k + a] - keep.x[dim * corner + a], keep.L));
+            if (x[a] >= keep.L) x[a] = 0.0;
+        }
         if (k == corner)
-            x = y = 0.0;
-        for (sx = -1; sx <= 1; ++sx) {
-            for (sy = -1; sy <= 1; ++sy) {
-                double cx = x + sx * keep.L, cy = y + sy * keep.L;
-                /* keep the image if its disc meets the closed square [0, L]^2 */
-                if (cx + r < 0.0 || cx - r > keep.L || cy + r < 0.0 || cy - r > keep.L)
-                    continue;
-                if ((sx != 0 || sy != 0) && !(cx >= -r && cx <= keep.L + r && cy >= -r && cy <= keep.L + r))
-                    continue;
-                if (sx != 0 && !(x - r < 0.0 || x + r > keep.L))
-                    continue;
-                if (sy != 0 && !(y - r < 0.0 || y + r > keep.L))
-                    continue;
-                p->x[2 * m] = cx;
-                p->x[2 * m + 1] = cy;
-                p->r[m++] = r;
+            x[0] = x[1] = x[2] = 0.0;
+        for (sh[0] = -1; sh[0] <= 1; ++sh[0]) {
+            for (sh[1] = -1; sh[1] <= 1; ++sh[1]) {
+                for (sh[2] = dim == 3 ? -1 : 0; sh[2] <= (dim == 3 ? 1 : 0); ++sh[2]) {
+                    double c[3];
+                    int keep_it = 1, moved = 0;
+                    for (a = 0; a < dim; ++a) {
+                        c[a] = x[a] + sh[a] * keep.L;
+                        moved |= sh[a] != 0;
+                        /* keep the image if its particle meets the closed box [0, L]^dim */
+                        keep_it &= !(c[a] + r < 0.0 || c[a] - r > keep.L);
+                    }
+                    for (a = 0; a < dim && keep_it; ++a) {
+                        if (moved && !(c[a] >= -r && c[a] <= keep.L + r))
+                            keep_it = 0;
+                        if (sh[a] != 0 && !(x[a] - r < 0.0 || x[a] + r > keep.L))
+                            keep_it = 0;
+                    }
+                    if (!keep_it)
+                        continue;
+                    for (a = 0; a < dim; ++a)
+                        p->x[dim * m + a] = c[a];
+                    p->r[m++] = r;
+                }
             }
         }
     }
-    p->n = m;
-    p->has_box = 1;
-    p->box[0] = p->box[2] = 0.0;
-    p->box[1] = p->box[3] = keep.L;
+    p->m = m;
+    p->L = keep.L;
     if (info) {
         double inside = 0.0, contacts = 0.0;
         int i, j, counted = 0;
-        /* the copies across the edges carry exactly the parts of the discs that
-           stick out of the square, so the area inside is that of the n0 discs */
+        /* the copies across the faces carry exactly the parts of the particles
+           that stick out of the box, so the measure inside is that of the n0 */
         for (k = 0; k < n; ++k)
-            inside += M_PI * b.r[k] * b.r[k];
+            inside += measure(dim, b.r[k]);
         for (i = 0; i < n; ++i) {
             int c = 0;
             for (j = 0; j < n; ++j) {
-                double dx, dy;
+                double d2 = 0.0;
+                int a;
                 if (j == i) continue;
-                dx = image(keep.x[2 * j] - keep.x[2 * i], keep.L);
-                dy = image(keep.x[2 * j + 1] - keep.x[2 * i + 1], keep.L);
-                if (sqrt(dx * dx + dy * dy) < b.r[i] + b.r[j] + 1e-6 * def->r_min) ++c;
+                for (a = 0; a < dim; ++a) {
+                    const double d = image(keep.x[dim * j + a] - keep.x[dim * i + a], keep.L);
+                    d2 = a ? d2 + d * d : d * d;
+                }
+                if (sqrt(d2) < b.r[i] + b.r[j] + 1e-6 * def->r_min) ++c;
             }
             contacts += c;
             ++counted;
@@ -281,9 +331,48 @@ sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sb
         info->n0 = n;
         info->n = m;
         info->L = keep.L;
-        info->fraction = inside / (keep.L * keep.L);
+        info->fraction = inside / (dim == 3 ? keep.L * keep.L * keep.L : keep.L * keep.L);
         info->coordination = counted ? contacts / counted : 0.0;
     }
     free(b.x); free(b.r); free(b.v); free(b.f); free(b.head); free(b.next); free(keep.x);
     return SBC_OK;
+}
+
+sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sbc_generate_info *info,
+                                 sbc_error *err)
+{
+    generated g;
+    sbc_status st;
+    memset(p, 0, sizeof *p);
+    if ((st = generate(def, 2, &g, info, err)) != SBC_OK)
+        return st;
+    p->n = g.m;
+    p->x = g.x;
+    p->r = g.r;
+    p->has_box = 1;
+    p->box[0] = p->box[2] = 0.0;
+    p->box[1] = p->box[3] = g.L;
+    return SBC_OK;
+}
+
+sbc_status sbc_generate_periodic_3d(const sbc_generate_def *def, sbc_sphere_packing *p, sbc_generate_info *info,
+                                    sbc_error *err)
+{
+    generated g;
+    sbc_status st;
+    memset(p, 0, sizeof *p);
+    if ((st = generate(def, 3, &g, info, err)) != SBC_OK)
+        return st;
+    p->n = g.m;
+    p->x = g.x;
+    p->r = g.r;
+    p->L = g.L;
+    return SBC_OK;
+}
+
+void sbc_sphere_packing_free(sbc_sphere_packing *p)
+{
+    free(p->x);
+    free(p->r);
+    memset(p, 0, sizeof *p);
 }

@@ -56,6 +56,23 @@ typedef struct sbc_generate_info {
 sbc_status sbc_generate_periodic(const sbc_generate_def *def, sbc_packing *p, sbc_generate_info *info,
                                  sbc_error *err);
 
+/* The same in 3D: spheres (radii uniform in [R_min, pd R_min]) jammed in a
+ * periodic cube from a packing fraction of 0.3, one sphere's centre moved to
+ * the corner (copied to the eight corners: sphere 0, or the largest when
+ * R_max > (1 + sqrt 3) r_0), every sphere crossing a face copied across it
+ * (across two faces: three copies, as the edges of the cube ask). info's
+ * L is the cube's side, fraction the volume fraction. */
+typedef struct sbc_sphere_packing {
+    int n;
+    double *x; /* [3n] centres, m */
+    double *r; /* [n] radii, m */
+    double L;  /* the periodic cube [0, L]^3, m */
+} sbc_sphere_packing;
+
+sbc_status sbc_generate_periodic_3d(const sbc_generate_def *def, sbc_sphere_packing *p, sbc_generate_info *info,
+                                    sbc_error *err);
+void sbc_sphere_packing_free(sbc_sphere_packing *p);
+
 #ifdef __cplusplus
 }
 #endif
