@@ -274,7 +274,7 @@ static void runner(void)
         {"dimension 3\nservo_bc D F 0.99 0 0 1\n", "4 values give a 2D F, but the packing is 3D"},
         {"dimension 3\nlattice cubic 4 4 2 spacing 2e-3 radius 1e-3\n", "NZ '2' is not valid"},
     };
-    char script[1024], path[512], line[4096];
+    char script[2048], path[512], line[4096];
     double worst = 0.0, pmax = 0.0;
     int rows = 0, cols[4] = {-1, -1, -1, -1};
     sbc_error err;
@@ -329,6 +329,30 @@ static void runner(void)
     CHECK(rows == 4 && worst <= 1e-6 * pmax);
     printf("  spheres: the runner's 3D (P) run: %d rows, max |P - closed form| = %.1e of max |P|\n", rows - 1,
            pmax > 0.0 ? worst / pmax : -1.0);
+    { /* the packing written as text and read back: the same rows, bit for bit */
+        char packing[600], again[600], a[4096] = "", b[4096] = "";
+        size_t na = 0, nb = 0;
+        snprintf(packing, sizeof packing, "%s/cubic3d_packing.txt", test_tmpdir);
+        snprintf(again, sizeof again, "%s/cubic3d_again.csv", test_tmpdir);
+        snprintf(script, sizeof script, "%swrite_packing text %s\n", head, packing);
+        CHECK(sbc_script_run_string(script, "write3d", NULL, &err) == SBC_OK);
+        snprintf(script, sizeof script, "dimension 3\nread_packing %s\ncontact frictional kn 1e4 ks 5e3 mu 0.5\n"
+                 "density 224962.886\ntimestep 1e-5\nservo_bc P F 0.999 0 0 0 0.998 0 0 0 0.997 increments 2 "
+                 "accuracy tight file %s\nrun\n", packing, again);
+        CHECK(sbc_script_run_string(script, "read3d", NULL, &err) == SBC_OK);
+        if ((fp = fopen(path, "r")) != NULL) {
+            na = fread(a, 1, sizeof a - 1, fp);
+            fclose(fp);
+        }
+        if ((fp = fopen(again, "r")) != NULL) {
+            nb = fread(b, 1, sizeof b - 1, fp);
+            fclose(fp);
+        }
+        CHECK(na > 0 && na == nb && memcmp(a, b, na) == 0);
+        snprintf(script, sizeof script, "dimension 3\nread_packing %s\nrun\n", path); /* the CSV is no packing */
+        CHECK(sbc_script_run_string(script, "bad3d", NULL, &err) != SBC_OK &&
+              strstr(err.message, "values (expected 4: x y z r)"));
+    }
     for (k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
         snprintf(script, sizeof script, "%srun\n", bad[k].lines);
         CHECK(sbc_script_run_string(script, "bad3d", NULL, &err) != SBC_OK && strstr(err.message, bad[k].expect));

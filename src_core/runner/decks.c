@@ -119,10 +119,7 @@ static sbc_status write_embedded(const script *s, const case_material *c, const 
     if (st != SBC_OK)
         return st;
     fprintf(fp, "# %s on the embedded engine (servo-bc --decks); run in this folder\n", s->name);
-    if (c->dim == 3)
-        fprintf(fp, "dimension 3\n%s\n", s->lattice3);
-    else
-        fprintf(fp, "dimension 2\nread_packing packing.txt\n");
+    fprintf(fp, "dimension %d\nread_packing packing.txt\n", c->dim);
     if (s->cohesive)
         fprintf(fp, "contact cohesive %s\n", cohesive_words(&s->bond_law).s);
     else
@@ -247,7 +244,8 @@ sbc_status sbc_runner_write_decks(sbc_script_case *s, const char *dir, sbc_error
     if (s->bpm) { /* after 'dimension 3': the sphere packing and the 3D material */
         c.dim = 3;
         sbc_script_bpm_material(s, &c.density, &c.dt, &fraction);
-        if (!s->x3) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no sphere packing (use 'lattice cubic ...')");
+        if (!s->x3) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no sphere packing (use 'lattice cubic ...' or "
+                                    "'read_packing FILE')");
         if (!(c.density > 0.0)) return sbc_fail(err, SBC_ERR_INPUT, "--decks: no density (use 'density RHO')");
         if (!(c.dt > 0.0))
             return sbc_fail(err, SBC_ERR_INPUT, "--decks: no time step in seconds (use 'timestep DT'; the hosts take "

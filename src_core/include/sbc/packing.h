@@ -65,7 +65,10 @@ sbc_status sbc_spheres_write_data(int n, const double *x, const double *r, const
                                   const char *host, const char *path, sbc_error *err);
 sbc_status sbc_spheres_write_yade(int n, const double *x, const double *r, const int *is_frame, const char *path,
                                   sbc_error *err);
-/* ... and as text, x y z r per line (m) */
+/* ... and as text, x y z r per line (m); sbc_spheres_read reads such a file
+ * (`#` comments) into *x [3n], *r [n], *n (malloc'd; NULL and 0 on failure,
+ * with the line and value at fault named as sbc_packing_read does) */
+sbc_status sbc_spheres_read(const char *path, int *n, double **x, double **r, sbc_error *err);
 sbc_status sbc_spheres_write_text(int n, const double *x, const double *r, const char *path, sbc_error *err);
 
 /* Orientations atan2(dy, dx) (rad) of the branch vectors of all pairs whose

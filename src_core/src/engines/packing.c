@@ -15,18 +15,21 @@ void sbc_packing_free(sbc_packing *p)
     memset(p, 0, sizeof *p);
 }
 
-static sbc_status reserve(sbc_packing *p, int n, sbc_error *err)
+/* room for n particles of dim coordinates in *x, *r */
+static sbc_status reserve_arrays(int dim, double **x, double **r, int n, sbc_error *err)
 {
-    double *x = realloc(p->x, sizeof(double) * 2 * (size_t)n), *r;
-    if (!x)
+    double *nx = realloc(*x, sizeof(double) * (size_t)dim * (size_t)n), *nr;
+    if (!nx)
         return sbc_fail(err, SBC_ERR_NOMEM, "packing: out of memory for %d particles", n);
-    p->x = x;
-    r = realloc(p->r, sizeof(double) * (size_t)n);
-    if (!r)
+    *x = nx;
+    nr = realloc(*r, sizeof(double) * (size_t)n);
+    if (!nr)
         return sbc_fail(err, SBC_ERR_NOMEM, "packing: out of memory for %d particles", n);
-    p->r = r;
+    *r = nr;
     return SBC_OK;
 }
+
+static sbc_status reserve(sbc_packing *p, int n, sbc_error *err) { return reserve_arrays(2, &p->x, &p->r, n, err); }
 
 sbc_status sbc_packing_lattice_square(sbc_packing *p, int nx, int ny, double spacing, double radius,
                                       sbc_error *err)
@@ -78,18 +81,18 @@ static sbc_status read_box(sbc_packing *p, char *line, const char *path, int lin
  * /dev/zero), is an error, never a split into two particles or a read
  * without end. */
 static sbc_status read_line(FILE *fp, char *line, size_t cap, const char *path, int lineno, int *end,
-                            sbc_error *err)
+                            const char *expected, sbc_error *err)
 {
     size_t n = 0;
     int ch;
     *end = 0;
     while ((ch = getc(fp)) != EOF && ch != '\n') {
         if (ch == '\0')
-            return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d holds a NUL byte (expected text: x y r)",
-                            path, lineno);
+            return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d holds a NUL byte (expected text: %s)",
+                            path, lineno, expected);
         if (n + 1 >= cap)
-            return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d is longer than %d characters (expected x y r)",
-                            path, lineno, (int)cap - 1);
+            return sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d is longer than %d characters (expected %s)",
+                            path, lineno, (int)cap - 1, expected);
         line[n++] = (char)ch;
     }
     *end = ch == EOF && n == 0;
@@ -109,62 +112,93 @@ sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err)
     return st;
 }
 
-sbc_status sbc_packing_read_stream(sbc_packing *p, FILE *fp, const char *path, sbc_error *err)
+/* The rows of a packing file: dim coordinates and a radius per line (m) into
+ * *x [dim n], *r [n], *n; a 'box' line into box (2D; NULL: no box line) */
+static sbc_status read_rows(FILE *fp, const char *path, int dim, sbc_packing *box, double **x, double **r, int *n,
+                            sbc_error *err)
 {
+    static const char *const names[2][4] = {{"x", "y", "r", ""}, {"x", "y", "z", "r"}};
+    const char *const expected = dim == 2 ? "x y r" : "x y z r";
+    const int nv = dim + 1;
     char line[1024];
     int lineno = 0, cap = 0, end = 0;
     sbc_status st = SBC_OK;
-    memset(p, 0, sizeof *p);
-    while ((st = read_line(fp, line, sizeof line, path, lineno + 1, &end, err)) == SBC_OK && !end) {
-        char *tok[3], line_copy[1024];
-        const char *names[3] = {"x", "y", "r"};
-        double v[3];
+    while ((st = read_line(fp, line, sizeof line, path, lineno + 1, &end, expected, err)) == SBC_OK && !end) {
+        char *tok[4], line_copy[1024];
+        const char *const *name = names[dim - 2];
+        double v[4];
         int nt, c;
         ++lineno;
         memcpy(line_copy, line, sizeof line);
-        nt = sbc_split_words(line, tok, 3);
+        nt = sbc_split_words(line, tok, nv);
         if (nt == 0)
             continue;
-        if (strcmp(tok[0], "box") == 0) {
-            st = read_box(p, line_copy, path, lineno, err);
+        if (box && strcmp(tok[0], "box") == 0) {
+            st = read_box(box, line_copy, path, lineno, err);
             if (st != SBC_OK)
                 break;
             continue;
         }
-        if (nt != 3) {
-            st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: %d values (expected 3: x y r)", path, lineno,
-                          nt);
+        if (nt != nv) {
+            st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: %d values (expected %d: %s)", path, lineno,
+                          nt, nv, expected);
             break;
         }
-        for (c = 0; c < 3 && st == SBC_OK; ++c)
-            if (sbc_parse_real(tok[c], names[c], &v[c], NULL) != SBC_OK)
+        for (c = 0; c < nv && st == SBC_OK; ++c)
+            if (sbc_parse_real(tok[c], name[c], &v[c], NULL) != SBC_OK)
                 st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: %s value '%s' is not a number", path,
-                              lineno, names[c], tok[c]);
+                              lineno, name[c], tok[c]);
         if (st != SBC_OK)
             break;
-        if (!(v[2] > 0.0)) {
+        if (!(v[dim] > 0.0)) {
             st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: radius %g is not positive", path, lineno,
-                          v[2]);
+                          v[dim]);
             break;
         }
-        if (p->n >= SBC_PACKING_MAX) {
+        if (*n >= SBC_PACKING_MAX) {
             st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s line %d: more than %ld particles", path, lineno,
                           (long)SBC_PACKING_MAX);
             break;
         }
-        if (p->n == cap) {
+        if (*n == cap) {
             cap = cap ? 2 * cap : 256;
-            if ((st = reserve(p, cap, err)) != SBC_OK)
+            if ((st = reserve_arrays(dim, x, r, cap, err)) != SBC_OK)
                 break;
         }
-        p->x[2 * p->n] = v[0];
-        p->x[2 * p->n + 1] = v[1];
-        p->r[p->n++] = v[2];
+        for (c = 0; c < dim; ++c)
+            (*x)[dim * *n + c] = v[c];
+        (*r)[(*n)++] = v[dim];
     }
-    if (st == SBC_OK && p->n == 0)
+    if (st == SBC_OK && *n == 0)
         st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s holds no particles", path);
-    if (st != SBC_OK)
+    return st;
+}
+
+sbc_status sbc_packing_read_stream(sbc_packing *p, FILE *fp, const char *path, sbc_error *err)
+{
+    sbc_status st;
+    memset(p, 0, sizeof *p);
+    if ((st = read_rows(fp, path, 2, p, &p->x, &p->r, &p->n, err)) != SBC_OK)
         sbc_packing_free(p);
+    return st;
+}
+
+sbc_status sbc_spheres_read(const char *path, int *n, double **x, double **r, sbc_error *err)
+{
+    FILE *fp = fopen(path, "r");
+    sbc_status st;
+    *n = 0;
+    *x = *r = NULL;
+    if (!fp)
+        return sbc_fail(err, SBC_ERR_IO, "read_packing: cannot open '%s'", path);
+    st = read_rows(fp, path, 3, NULL, x, r, n, err);
+    fclose(fp);
+    if (st != SBC_OK) {
+        free(*x);
+        free(*r);
+        *x = *r = NULL;
+        *n = 0;
+    }
     return st;
 }
 

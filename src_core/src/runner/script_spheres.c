@@ -1,6 +1,6 @@
 /* The embedded runner's 3D servo_bc commands (after `dimension 3`):
  *
- *   lattice cubic NX NY NZ spacing D radius R
+ *   lattice cubic NX NY NZ spacing D radius R | read_packing FILE (x y z r)
  *   contact frictional kn KN ks KS mu MU
  *   density RHO          (kg/m^3)
  *   timestep DT | timestep critical F
@@ -74,9 +74,16 @@ sbc_status sbc_script_lattice_cubic(script *s, int nw, char **w, sbc_error *err)
                 s->r3[m] = r;
             }
     s->n3 = m;
-    snprintf(s->lattice3, sizeof s->lattice3, "lattice cubic %ld %ld %ld spacing %s radius %s", n[0], n[1], n[2], w[6],
-             w[8]);
     return SBC_OK;
+}
+
+sbc_status sbc_script_read_spheres(script *s, const char *path, sbc_error *err)
+{
+    sbc_status st;
+    sbc_script_spheres_free(s);
+    if ((st = sbc_spheres_read(path, &s->n3, &s->x3, &s->r3, err)) == SBC_OK)
+        sbc_script_files_note(s, path, "packing read");
+    return st;
 }
 
 sbc_status sbc_script_write_spheres(script *s, const char *format, const char *path, sbc_error *err)
@@ -90,7 +97,8 @@ sbc_status sbc_script_write_spheres(script *s, const char *format, const char *p
     if (st != SBC_OK)
         return st;
     if (!s->x3)
-        return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no sphere packing (use 'lattice cubic ...' first)");
+        return sbc_fail(err, SBC_ERR_INPUT, "write_packing: no sphere packing (use 'lattice cubic ...' or "
+                        "'read_packing FILE' first)");
     if (strcmp(format, "text") == 0) {
         st = s->check ? SBC_OK : sbc_spheres_write_text(s->n3, s->x3, s->r3, path, err);
         if (st == SBC_OK)
@@ -227,7 +235,9 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
     memset(&r, 0, sizeof r);
     r.s = s;
     sbc_script_bpm_material(s, &density, &dt, &fraction);
-    if (!s->x3) return sbc_fail(err, SBC_ERR_INPUT, "run: no sphere packing (use 'lattice cubic ...' first)");
+    if (!s->x3)
+        return sbc_fail(err, SBC_ERR_INPUT, "run: no sphere packing (use 'lattice cubic ...' or 'read_packing FILE' "
+                        "first)");
     if (!s->have_contact) return sbc_fail(err, SBC_ERR_INPUT, "run: no contact law (use 'contact frictional ...' first)");
     if (!(density > 0.0)) return sbc_fail(err, SBC_ERR_INPUT, "run: no density (use 'density RHO', kg/m^3, first)");
     if (!(dt > 0.0) && !(fraction > 0.0))

@@ -47,7 +47,6 @@ typedef struct sbc_script_case {
     struct bpm_script *bpm; /* after 'dimension 3': the 3D bonded particle model (script_bpm.c) */
     int n3;                 /* after 'dimension 3', 'lattice cubic': the sphere packing (script_spheres.c) */
     double *x3, *r3;        /* ... its centres [3 n3] and radii [n3], m */
-    char lattice3[256];     /* ... the lattice line that made it (for the decks) */
     int actions;            /* commands that computed or wrote something (run, write_packing, rose) */
     int servo_pending;      /* a servo_bc line no run has used yet */
     int replicas;           /* replicas K: the runs that follow are K histories (script_replicas.c); 0: one */
@@ -98,6 +97,8 @@ void sbc_script_bpm_material(const script *s, double *density, double *dt, doubl
  * spacing D radius R', and the run of a servo_bc line on the sphere engine
  * (spheres.h) through the host driver. */
 sbc_status sbc_script_lattice_cubic(script *s, int nw, char **w, sbc_error *err);
+/* read_packing FILE after 'dimension 3': x y z r per line */
+sbc_status sbc_script_read_spheres(script *s, const char *path, sbc_error *err);
 sbc_status sbc_script_run_spheres(script *s, sbc_error *err);
 /* write_packing lammps|liggghts|yade FILE of the sphere packing, the frame flagged */
 sbc_status sbc_script_write_spheres(script *s, const char *format, const char *path, sbc_error *err);
