@@ -33,8 +33,8 @@ static int cubic(int nx, int ny, int nz, double d, double *x, double *r)
     return n;
 }
 
-/* the largest |sum_q X_q (x) A_q - V I| over V |I| */
-static double identity_error(const sbc_frame *f)
+/* the largest |sum_q X_q (x) A_q - V I| over V |I| (tests.h) */
+double test_frame_identity_error(const sbc_frame *f)
 {
     double worst = 0.0;
     int i, j, q;
@@ -116,9 +116,9 @@ static void lattice(int n1, int n2, int n3)
     CHECK(!bad_image && images == 2 * (n1 * n2 + n2 * n3 + n1 * n3));
     CHECK(worst_a < 1e-13 && !bad_pair && paired == faces && faces == 2 * ((n1 - 2) * (n2 - 2) + (n2 - 2) * (n3 - 2) +
                                                                    (n1 - 2) * (n3 - 2)));
-    CHECK(fabs(f.V - L[0] * L[1] * L[2]) <= 1e-14 * f.V && identity_error(&f) < 1e-14);
+    CHECK(fabs(f.V - L[0] * L[1] * L[2]) <= 1e-14 * f.V && test_frame_identity_error(&f) < 1e-14);
     printf("  frame3d: %d x %d x %d lattice: Q = %d, %d cells, |A - A by hand| / d^2 = %.1e, V %.6g m^3, "
-           "|sum X (x) A - V I| / V = %.1e\n", n1, n2, n3, f.n, f.ncell, worst_a, f.V, identity_error(&f));
+           "|sum X (x) A - V I| / V = %.1e\n", n1, n2, n3, f.n, f.ncell, worst_a, f.V, test_frame_identity_error(&f));
     /* an affine image X -> G X keeps the faces planar: the identity with V det G */
     {
         const double G[9] = {1.1, 0.2, -0.05, 0.03, 0.9, 0.1, 0.0, -0.07, 1.2};
@@ -129,7 +129,7 @@ static void lattice(int n1, int n2, int n3)
             memcpy(&f.X[3 * q], y, sizeof y);
         }
         sbc_frame_update_geometry(&f);
-        CHECK(fabs(f.V - det * V0) <= 1e-13 * f.V && identity_error(&f) < 1e-13);
+        CHECK(fabs(f.V - det * V0) <= 1e-13 * f.V && test_frame_identity_error(&f) < 1e-13);
     }
     /* centres moved off their planes (by up to 5 % of d, deterministic): the
        quadrilaterals are no longer planar, the identity still holds */
@@ -141,9 +141,9 @@ static void lattice(int n1, int n2, int n3)
             f.X[k] += 0.05 * d * ((double)(s >> 11) / 9007199254740992.0 - 0.5);
         }
         sbc_frame_update_geometry(&f);
-        CHECK(identity_error(&f) < 1e-13 && fabs(f.V - before) < 0.1 * before);
+        CHECK(test_frame_identity_error(&f) < 1e-13 && fabs(f.V - before) < 0.1 * before);
         printf("  frame3d: %d x %d x %d lattice, centres moved by up to 2.5 %% of d: |sum X (x) A - V I| / V = %.1e\n",
-               n1, n2, n3, identity_error(&f));
+               n1, n2, n3, test_frame_identity_error(&f));
     }
     sbc_frame_free(&f);
     free(x);

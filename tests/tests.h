@@ -2,6 +2,7 @@
 #define SBC_TESTS_H
 void test_frame(void);
 void test_frame_3d(void);
+void test_frame_3d_periodic(void);
 void test_spheres(void);
 void test_homogenize(void);
 void test_contact(void);
@@ -25,4 +26,8 @@ void test_seal(void);
 void test_bpm_host(void);
 void test_cohesive_host(void);
 void test_driver(void);
+
+struct sbc_frame;
+/* the largest |sum_q X_q (x) A_q - V I| of a 3D frame over V (test_frame3d.c) */
+double test_frame_identity_error(const struct sbc_frame *f);
 #endif

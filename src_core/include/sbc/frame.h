@@ -49,7 +49,8 @@ typedef struct sbc_frame {
     double *A;      /* [3Q] area vectors A_q of eq. 2, m (a length in 2D) */
     double V;       /* reference volume from the corner centres, m^2 (3D: enclosed by the
                        surface through the centres, m^3) */
-    int ncell;      /* 3D: the surface through the centres, ncell quadrilaterals of frame */
+    int ncell;      /* 3D: the surface through the centres, ncell quadrilaterals of frame
+                       positions (a triangle (i, j, k) as (i, j, k, i)) */
     int *cell;      /* positions [4 ncell], anticlockwise seen from outside; 0 and NULL in 2D */
     int *image;     /* 3D: [3Q] the frame position of q's periodic image across axis a (the same
                        place on the opposite face of a) at 3q + a, -1 where q lies on no face of a
@@ -83,17 +84,27 @@ sbc_status sbc_frame_detect_packing(sbc_frame *frame, const sbc_packing *p, sbc_
 sbc_status sbc_frame_from_list(sbc_frame *frame, int count, const int *list,
                                const double *x, const double *r, sbc_error *err);
 
-/* The frame of a sphere packing in a cuboid (3D, frame_3d.c; x [3n], r
- * [n]): particles whose centre lies within band (m; <= 0: half the smallest
- * radius) of a face of the bounding box of the centres; one particle at each
- * of the eight corners. Each face's centres must form a grid (as on a
- * lattice): its quadrilaterals are the surface, each giving a quarter of its
- * area vector to each of its four corners (eq. 2 in 3D), so that
- * sum_q X_q (x) A_q = V I. Every particle on a face has its periodic image
- * at the same grid place of the opposite face (image; partner for face
- * particles). Frame order: the corners, the
- * edge particles, the face particles. Fails with SBC_ERR_FRAME naming the
- * corner or face at fault. */
+/* The frame of a sphere packing in a cuboid (3D; x [3n], r [n]), in one of
+ * two kinds, tried in this order:
+ * - Lattice faces (frame_3d.c): particles whose centre lies within band (m;
+ *   <= 0: half the smallest radius) of a face of the bounding box of the
+ *   centres, one at each of the eight corners, each face's centres a grid:
+ *   its quadrilaterals are the surface, each giving a quarter of its area
+ *   vector to each of its four corners (eq. 2 in 3D).
+ * - A geometrically periodic packing (frame_3d_periodic.c, as the 3D
+ *   generator reconstructs it): eight spheres of one radius at the corners
+ *   of a cuboid that every sphere meets, each the others' image at +-L; the
+ *   frame is every sphere crossing a face of that cuboid, each with its
+ *   images at exactly +-L across the faces it crosses. Each face is
+ *   triangulated (Delaunay, with its edge spheres moved onto the edge
+ *   lines), a high face through the images of its low face's triangles
+ *   (stored as cells (i, j, k, i): a third of a triangle's vector area to
+ *   each corner); V is L^3.
+ * Either way sum_q X_q (x) A_q = V I, every particle on a face has its
+ * periodic image on the opposite face (image; partner for face particles),
+ * and the frame order is the corners, the edge particles, the face
+ * particles. Fails with SBC_ERR_FRAME naming the corner, face or particle
+ * at fault. */
 sbc_status sbc_frame_detect_3d(sbc_frame *frame, int n, const double *x, const double *r, double band,
                                sbc_error *err);
 

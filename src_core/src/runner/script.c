@@ -576,6 +576,7 @@ static sbc_status execute_3d(script *s, int nw, char **w, sbc_error *err)
     const char *c = w[0];
     sbc_status st;
     if (strcmp(c, "lattice") == 0) return sbc_script_lattice_cubic(s, nw, w, err);
+    if (strcmp(c, "generate") == 0) return sbc_script_generate(s, nw, w, err);
     if (strcmp(c, "read_packing") == 0) {
         if ((st = sbc_script_expect_count(nw, w, 2, "read_packing FILE", err)) != SBC_OK) return st;
         return sbc_script_read_spheres(s, w[1], err);

@@ -9,7 +9,28 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* generate periodic n0 N rmin R polydispersity PD seed S */
+/* after 'dimension 3': the spheres into the script's sphere packing */
+static sbc_status generate_spheres(script *s, const sbc_generate_def *def, sbc_error *err)
+{
+    sbc_sphere_packing p;
+    sbc_generate_info info;
+    sbc_status st = sbc_generate_periodic_3d(def, &p, &info, err);
+    if (st != SBC_OK)
+        return st;
+    sbc_script_spheres_free(s);
+    s->n3 = p.n;
+    s->x3 = p.x;
+    s->r3 = p.r;
+    if (s->log)
+        fprintf(s->log,
+                "generate: n0 %d -> %d spheres after the periodic reconstruction; L = %.6g m, V = %.6g m^3, "
+                "volume fraction %.4f, coordination %.3f\n",
+                info.n0, info.n, info.L, info.L * info.L * info.L, info.fraction, info.coordination);
+    return SBC_OK;
+}
+
+/* generate periodic n0 N rmin R polydispersity PD seed S [strain E] (discs,
+   or spheres after 'dimension 3') */
 sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
 {
     static const char usage[] = "generate periodic n0 N rmin R polydispersity PD seed S [strain E]";
@@ -44,6 +65,8 @@ sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
     def.n = (int)n;
     def.log = s->log;
     def.seed = (unsigned long)seed;
+    if (s->bpm)
+        return generate_spheres(s, &def, err);
     sbc_packing_free(&s->packing);
     s->have_packing = 0;
     if ((st = sbc_generate_periodic(&def, &s->packing, &info, err)) != SBC_OK)

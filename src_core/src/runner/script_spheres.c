@@ -1,6 +1,7 @@
 /* The embedded runner's 3D servo_bc commands (after `dimension 3`):
  *
  *   lattice cubic NX NY NZ spacing D radius R | read_packing FILE (x y z r)
+ *   generate periodic n0 N rmin R polydispersity PD seed S [strain E]
  *   contact frictional kn KN ks KS mu MU
  *   density RHO          (kg/m^3)
  *   timestep DT | timestep critical F

@@ -11,7 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const face_name[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+const char *const sbc_frame_face_name[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+#define face_name sbc_frame_face_name
 
 static void cross(const double a[3], const double b[3], double out[3])
 {
@@ -137,12 +138,14 @@ const sbc_frame_geometry sbc_frame_geometry_3d = {3, "polyhedron", area_vectors,
 
 /* ---- detection ---- */
 
-typedef struct item {
-    int particle, side, rank; /* rank: 0 corner, 1 edge, 2 face */
-    const double *x;
-} item;
+typedef sbc_frame_item item;
 
-static int bits(int m) { return (m & 1) + (m >> 1 & 1) + (m >> 2 & 1) + (m >> 3 & 1) + (m >> 4 & 1) + (m >> 5 & 1); }
+static int bits(int m) { return sbc_frame_face_count(m); }
+
+int sbc_frame_face_count(int side)
+{
+    return (side & 1) + (side >> 1 & 1) + (side >> 2 & 1) + (side >> 3 & 1) + (side >> 4 & 1) + (side >> 5 & 1);
+}
 
 /* frame order: corners by their index, then edge and face particles by their
    faces, then z, y, x */
@@ -158,6 +161,26 @@ static int compare_items(const void *pa, const void *pb)
         if (a->x[k] != b->x[k])
             return (a->x[k] > b->x[k]) - (a->x[k] < b->x[k]);
     return a->particle - b->particle;
+}
+
+sbc_status sbc_frame_from_items_3d(sbc_frame *f, item *it, int m, const double *r, sbc_error *err)
+{
+    int q, k;
+    sbc_status st;
+    qsort(it, (size_t)m, sizeof *it, compare_items);
+    if ((st = sbc_frame_alloc(f, 3, m, err)) != SBC_OK)
+        return st;
+    for (q = 0; q < m; ++q) {
+        f->particle[q] = it[q].particle;
+        f->side[q] = it[q].side;
+        f->partner[q] = -1;
+        f->R[q] = r[it[q].particle];
+        for (k = 0; k < 3; ++k)
+            f->X[3 * q + k] = it[q].x[k];
+    }
+    for (k = 0; k < 8; ++k)
+        f->corner[k] = k; /* the corners lead the frame order, by their index */
+    return SBC_OK;
 }
 
 static int compare_doubles(const void *pa, const void *pb)
@@ -343,7 +366,8 @@ static int frame_items(int n, const double *x, double band, const double lo[3], 
     return m;
 }
 
-sbc_status sbc_frame_detect_3d(sbc_frame *f, int n, const double *x, const double *r, double band, sbc_error *err)
+/* the frame of a packing whose faces are a lattice's */
+static sbc_status detect_grid(sbc_frame *f, int n, const double *x, const double *r, double band, sbc_error *err)
 {
     double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX}, hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX}, rmin = DBL_MAX;
     int corner_particle[8], p, k, m, q, face, ncell = 0;
@@ -371,22 +395,10 @@ sbc_status sbc_frame_detect_3d(sbc_frame *f, int n, const double *x, const doubl
         free(it);
         return err->status;
     }
-    qsort(it, (size_t)m, sizeof *it, compare_items);
-    if ((st = sbc_frame_alloc(f, 3, m, err)) != SBC_OK) {
-        free(it);
-        return st;
-    }
-    for (q = 0; q < m; ++q) {
-        f->particle[q] = it[q].particle;
-        f->side[q] = it[q].side;
-        f->partner[q] = -1;
-        f->R[q] = r[it[q].particle];
-        for (k = 0; k < 3; ++k)
-            f->X[3 * q + k] = it[q].x[k];
-    }
+    st = sbc_frame_from_items_3d(f, it, m, r, err);
     free(it);
-    for (k = 0; k < 8; ++k)
-        f->corner[k] = k; /* the corners lead the frame order, by their index */
+    if (st != SBC_OK)
+        return st;
     memset(grid, 0, sizeof grid);
     for (face = 0; face < 6 && st == SBC_OK; ++face)
         if ((st = face_build(f, face, band, &grid[face], err)) == SBC_OK)
@@ -410,4 +422,21 @@ sbc_status sbc_frame_detect_3d(sbc_frame *f, int n, const double *x, const doubl
     if (st != SBC_OK)
         sbc_frame_free(f);
     return st;
+}
+
+sbc_status sbc_frame_detect_3d(sbc_frame *f, int n, const double *x, const double *r, double band, sbc_error *err)
+{
+    sbc_error grid_err;
+    int cube;
+    sbc_status st = detect_grid(f, n, x, r, band, &grid_err);
+    if (st != SBC_ERR_FRAME) {
+        if (st != SBC_OK)
+            *err = grid_err;
+        return st;
+    }
+    st = sbc_frame_detect_periodic_3d(f, n, x, r, &cube, err);
+    if (cube)
+        return st;
+    return sbc_fail(err, SBC_ERR_FRAME, "%s; nor is it a geometrically periodic packing (no eight spheres of one "
+                    "radius at the corners of a cuboid, each the others' image at exactly +-L)", grid_err.message);
 }
