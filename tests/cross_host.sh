@@ -102,43 +102,36 @@ for bc in D P T; do
     fail=$((fail + 1)); echo "FAIL cross-host ($bc) liggghts against lammps: increments ${1:-0}, max difference ${2:-?} %"
   fi
 done
-# 3D: (P) on the prestressed frictional 4^3 lattice (inputs/compare/cubic_P_3d.sbc)
-# through `servo-bc --decks` and compare: every engine, 1 and 2 ranks, every
-# one of the nine sigma components within 0.5 % of the stress scale of the
-# embedded engine at every increment, and P11 at the last against the closed
-# form -N^2 kn (2R - d F11) / ((N - 1)^2 d^2) within 1e-6
-dir=$tmp/cubic_P_3d
-(cd "$top" && RANKS="1 2" bash scripts/compare.sh inputs/compare/cubic_P_3d.sbc "$dir" | grep -v "^compare: report")
-for e in lammps liggghts yade lammps_np2 liggghts_np2; do
-  res=$(awk -F'|' -v e=" $e " '$2 == e && $3 ~ /σ̄/ { v = $6 + 0; if (v > m) m = v; n++ } END { printf "%d %s", n, (n ? m : 100) }' \
-    "$dir/report.md" 2>/dev/null)
-  set -- $res
-  p11=$(awk -F, "$COLUMNS_AWK"'NR > 1 { n++; e = -16 * 1e4 * (2.04e-3 - 2e-3 * $col("F11")) / (9 * 4e-6); d = ($col("P11") - e) / e }
-    END { if (n == 3) printf "%.3g", d < 0 ? -d : d; else print 1 }' "$dir/$e.csv" 2>/dev/null)
-  if [ "${1:-0}" = 9 ] && awk -v m="$2" -v p="${p11:-1}" 'BEGIN { exit !(m <= 0.5 && p <= 1e-6) }'; then
-    pass=$((pass + 1)); echo "cross-host 3D (P), 4^3 lattice: max |sigma_$e - sigma_embedded| = $2 % of the stress scale (9 components), P11 within $p11 of the closed form"
-  else
-    fail=$((fail + 1)); echo "FAIL cross-host 3D (P) $e: ${1:-0} components, max difference ${2:-?} % (limit 0.5 %), P11 ${p11:-?} of the closed form"
-  fi
-done
-# 3D irregular: (P) on a generated periodic sphere packing (inputs/compare/irregular_P_3d.sbc:
-# 71 spheres, the periodic frame of 62 found by every host's fix from the centres alone):
-# every engine's nine sigma components within 0.5 % of the embedded engine's stress scale,
-# and |hill_mandel| within tight's 1e-6 on every row of every engine
-dir=$tmp/irregular_P_3d
-(cd "$top" && RANKS="1 2" bash scripts/compare.sh inputs/compare/irregular_P_3d.sbc "$dir" | grep -v "^compare: report")
-for e in lammps liggghts yade lammps_np2 liggghts_np2; do
-  res=$(awk -F'|' -v e=" $e " '$2 == e && $3 ~ /σ̄/ { v = $6 + 0; if (v > m) m = v; n++ } END { printf "%d %s", n, (n ? m : 100) }' \
-    "$dir/report.md" 2>/dev/null)
-  set -- $res
-  hm=$(awk -F, "$COLUMNS_AWK"'NR > 1 { n++; h = $col("hill_mandel"); if (h < 0) h = -h; if (h > m) m = h }
-    END { if (n == 3) printf "%.3g", m; else print 1 }' "$dir/$e.csv" 2>/dev/null)
-  if [ "${1:-0}" = 9 ] && awk -v m="$2" -v h="${hm:-1}" 'BEGIN { exit !(m <= 0.5 && h <= 1e-6) }'; then
-    pass=$((pass + 1)); echo "cross-host 3D (P), irregular 71 spheres: max |sigma_$e - sigma_embedded| = $2 % of the stress scale (9 components), |hill_mandel| <= $hm"
-  else
-    fail=$((fail + 1)); echo "FAIL cross-host 3D (P) irregular $e: ${1:-0} components, max difference ${2:-?} % (limit 0.5 %), |hill_mandel| ${hm:-?} (limit 1e-6)"
-  fi
-done
+# compare_3d CASE LABEL MEASURE LIMIT WHAT: a 3D (P) case through `servo-bc --decks` and
+# compare on every engine, 1 and 2 ranks: each host's nine sigma components within 0.5 % of
+# the stress scale of the embedded engine at every increment, and MEASURE (an awk program
+# on the host's CSV that prints one number, 1 unless it read 3 rows) at most LIMIT
+compare_3d() {
+  local case=$1 label=$2 measure=$3 limit=$4 what=$5 dir e res got
+  dir=$tmp/$(basename "$case" .sbc)
+  (cd "$top" && RANKS="1 2" bash scripts/compare.sh "$case" "$dir" | grep -v "^compare: report")
+  for e in lammps liggghts yade lammps_np2 liggghts_np2; do
+    res=$(awk -F'|' -v e=" $e " '$2 == e && $3 ~ /σ̄/ { v = $6 + 0; if (v > m) m = v; n++ } END { printf "%d %s", n, (n ? m : 100) }' \
+      "$dir/report.md" 2>/dev/null)
+    set -- $res
+    got=$(awk -F, "$COLUMNS_AWK$measure" "$dir/$e.csv" 2>/dev/null)
+    if [ "${1:-0}" = 9 ] && awk -v m="$2" -v g="${got:-1}" -v l="$limit" 'BEGIN { exit !(m <= 0.5 && g <= l) }'; then
+      pass=$((pass + 1)); echo "cross-host 3D (P), $label: max |sigma_$e - sigma_embedded| = $2 % of the stress scale (9 components), $what $got"
+    else
+      fail=$((fail + 1)); echo "FAIL cross-host 3D (P) $label $e: ${1:-0} components, max difference ${2:-?} % (limit 0.5 %), $what ${got:-?} (limit $limit)"
+    fi
+  done
+}
+# the prestressed frictional 4^3 lattice: P11 at the last increment against the closed form
+# -N^2 kn (2R - d F11) / ((N - 1)^2 d^2) within 1e-6
+compare_3d inputs/compare/cubic_P_3d.sbc "4^3 lattice" \
+  'NR > 1 { n++; e = -16 * 1e4 * (2.04e-3 - 2e-3 * $col("F11")) / (9 * 4e-6); d = ($col("P11") - e) / e }
+   END { if (n == 3) printf "%.3g", d < 0 ? -d : d; else print 1 }' 1e-6 "P11 against the closed form within"
+# a generated periodic sphere packing (71 spheres; every host's fix finds the periodic frame
+# of 62 from the centres alone): |hill_mandel| within tight's 1e-6 on every row
+compare_3d inputs/compare/irregular_P_3d.sbc "irregular 71 spheres" \
+  'NR > 1 { n++; h = $col("hill_mandel"); if (h < 0) h = -h; if (h > m) m = h }
+   END { if (n == 3) printf "%.3g", m; else print 1 }' 1e-6 "|hill_mandel| <="
 # the frame seal (seal.h) in every host: the chain on the wall of a gap in
 # the frame carries its closed-form load, sigma22 = -120 N/m (-100 N/m where a
 # host leaves the seal out and the chain falls into the gap), to 1e-6
