@@ -31,7 +31,7 @@ int main(int argc, char **argv)
     struct {
         const char *name;
         void (*fn)(void);
-    } suites[] = {{"frame", test_frame}, {"frame3d", test_frame_3d}, {"frame3d-periodic", test_frame_3d_periodic}, {"spheres", test_spheres},     {"homogenize", test_homogenize}, {"contact", test_contact}, {"cohesive", test_cohesive},
+    } suites[] = {{"frame", test_frame}, {"frame3d", test_frame_3d}, {"frame3d-periodic", test_frame_3d_periodic}, {"irregular3d", test_irregular_3d}, {"spheres", test_spheres},     {"homogenize", test_homogenize}, {"contact", test_contact}, {"cohesive", test_cohesive},
                   {"bonds", test_bonds}, {"bonds-runner", test_bonds_runner},
                   {"rattler", test_rattler_energy},
                   {"relax", test_relax},     {"lattice", test_lattice},       {"input", test_input},

@@ -3,6 +3,7 @@
 void test_frame(void);
 void test_frame_3d(void);
 void test_frame_3d_periodic(void);
+void test_irregular_3d(void);
 void test_spheres(void);
 void test_homogenize(void);
 void test_contact(void);
