@@ -232,8 +232,7 @@ void test_frame_3d_periodic(void)
 {
     square(40, 3);
     square(300, 10);
-    generated(30, 1.5, 1);
-    generated(60, 2.0, 2);
-    generated(100, 1.5, 3);
+    generated(24, 1.5, 1);
+    generated(24, 2.0, 2);
     neither();
 }
