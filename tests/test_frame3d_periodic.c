@@ -5,8 +5,8 @@
  * a face), their images at exactly +-L, a closed and outward surface (each
  * edge of it in two triangles, once each way), (P)'s paired faces sharing
  * their triangles through the images, the identity sum_q X_q (x) A_q = V I
- * and V = L^3; the same frame from shuffled and shifted centres; the
- * refusals. */
+ * and V = L^3; the frame through its restart data; the same frame from
+ * shuffled and shifted centres; the refusals. */
 #include "check.h"
 #include "tests.h"
 
@@ -159,6 +159,21 @@ static void generated(int n0, double pd, unsigned long seed)
         outward += dot > 0.0;
     }
     CHECK(outward == f.n);
+    { /* restart data: the triangles and images come back as they were */
+        const size_t size = sbc_frame_state_size(&f);
+        double *state = malloc(sizeof(double) * size);
+        CHECK(state != NULL);
+        if (state) {
+            sbc_frame_save(&f, state);
+            CHECK(sbc_frame_load(&g, state, size, &err) == SBC_OK);
+            CHECK(g.n == f.n && g.ncell == f.ncell && g.V == f.V &&
+                  memcmp(g.cell, f.cell, sizeof(int) * 4 * (size_t)f.ncell) == 0 &&
+                  memcmp(g.image, f.image, sizeof(int) * 3 * (size_t)f.n) == 0 &&
+                  memcmp(g.A, f.A, sizeof(double) * 3 * (size_t)f.n) == 0);
+            sbc_frame_free(&g);
+            free(state);
+        }
+    }
     /* a host's centres: shuffled and shifted, the same frame */
     order = malloc(sizeof(int) * (size_t)p.n);
     xs = malloc(sizeof(double) * 3 * (size_t)p.n);

@@ -32,7 +32,7 @@ sbc_status sbc_spheres_vtk_write(const char *prefix, int increment, const sbc_sp
     char name[1024];
     unsigned char *in_frame = calloc((size_t)w->n, 1);
     FILE *fp;
-    int k, q;
+    int k, q, triangles;
     if (!in_frame)
         return sbc_fail(err, SBC_ERR_NOMEM, "vtk: out of memory");
     for (q = 0; q < frame->n; ++q)
@@ -71,10 +71,17 @@ sbc_status sbc_spheres_vtk_write(const char *prefix, int increment, const sbc_sp
         const double *x = &w->x[3 * frame->particle[q]];
         fprintf(fp, "%.12g %.12g %.12g\n", x[0], x[1], x[2]);
     }
-    fprintf(fp, "POLYGONS %d %d\n", frame->ncell, 5 * frame->ncell);
-    for (k = 0; k < frame->ncell; ++k)
-        fprintf(fp, "4 %d %d %d %d\n", frame->cell[4 * k], frame->cell[4 * k + 1], frame->cell[4 * k + 2],
-                frame->cell[4 * k + 3]);
+    /* a triangle, stored as the cell (i, j, k, i), is written as one */
+    for (k = 0, triangles = 0; k < frame->ncell; ++k)
+        triangles += frame->cell[4 * k + 3] == frame->cell[4 * k];
+    fprintf(fp, "POLYGONS %d %d\n", frame->ncell, 5 * frame->ncell - triangles);
+    for (k = 0; k < frame->ncell; ++k) {
+        const int *c = &frame->cell[4 * k];
+        if (c[3] == c[0])
+            fprintf(fp, "3 %d %d %d\n", c[0], c[1], c[2]);
+        else
+            fprintf(fp, "4 %d %d %d %d\n", c[0], c[1], c[2], c[3]);
+    }
     fprintf(fp, "POINT_DATA %d\nVECTORS reaction double\n", frame->n);
     for (q = 0; q < frame->n; ++q) {
         const double *f = &w->f[3 * frame->particle[q]];
