@@ -1,5 +1,5 @@
 /* The 3D frame's geometry: the frame of a sphere packing in a cuboid
- * (sbc_frame_detect_3d), the surface through its centres as the
+ * whose faces are a lattice's (sbc_frame_detect_grid_3d), the surface through its centres as the
  * quadrilaterals of the faces' grids, and the 3D row of geometry.h: the
  * area vectors of eq. 2 in 3D, the enclosed volume, the point-in-polyhedron
  * test. Host centres are [3n] here. */
@@ -366,8 +366,7 @@ static int frame_items(int n, const double *x, double band, const double lo[3], 
     return m;
 }
 
-/* the frame of a packing whose faces are a lattice's */
-static sbc_status detect_grid(sbc_frame *f, int n, const double *x, const double *r, double band, sbc_error *err)
+sbc_status sbc_frame_detect_grid_3d(sbc_frame *f, int n, const double *x, const double *r, double band, sbc_error *err)
 {
     double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX}, hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX}, rmin = DBL_MAX;
     int corner_particle[8], p, k, m, q, face, ncell = 0;
@@ -422,21 +421,4 @@ static sbc_status detect_grid(sbc_frame *f, int n, const double *x, const double
     if (st != SBC_OK)
         sbc_frame_free(f);
     return st;
-}
-
-sbc_status sbc_frame_detect_3d(sbc_frame *f, int n, const double *x, const double *r, double band, sbc_error *err)
-{
-    sbc_error grid_err;
-    int cube;
-    sbc_status st = detect_grid(f, n, x, r, band, &grid_err);
-    if (st != SBC_ERR_FRAME) {
-        if (st != SBC_OK)
-            *err = grid_err;
-        return st;
-    }
-    st = sbc_frame_detect_periodic_3d(f, n, x, r, &cube, err);
-    if (cube)
-        return st;
-    return sbc_fail(err, SBC_ERR_FRAME, "%s; nor is it a geometrically periodic packing (no eight spheres of one "
-                    "radius at the corners of a cuboid, each the others' image at exactly +-L)", grid_err.message);
 }

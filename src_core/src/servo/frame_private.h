@@ -1,5 +1,5 @@
 /* Private: what the frame's files share (frame.c, frame_2d.c, frame_3d.c,
- * frame_3d_periodic.c). */
+ * frame_3d_periodic.c, frame_3d_detect.c). */
 #ifndef SBC_FRAME_PRIVATE_H
 #define SBC_FRAME_PRIVATE_H
 
@@ -26,6 +26,10 @@ typedef struct sbc_frame_item {
  * corners by their index, then edge and face particles by their faces, then
  * z, y, x), radii r by packing index; partner -1, no cells, no images. */
 sbc_status sbc_frame_from_items_3d(sbc_frame *f, sbc_frame_item *it, int m, const double *r, sbc_error *err);
+
+/* 3D: the frame of a packing whose faces are a lattice's (frame_3d.c) */
+sbc_status sbc_frame_detect_grid_3d(sbc_frame *f, int n, const double *x, const double *r, double band,
+                                    sbc_error *err);
 
 /* 3D: the frame of a geometrically periodic sphere packing
  * (frame_3d_periodic.c). *cube is 0 when no eight spheres of one radius
