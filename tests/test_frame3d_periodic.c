@@ -1,7 +1,8 @@
 /* The frame of a geometrically periodic sphere packing (frame_3d_periodic.c)
  * and the triangulation of its faces (triangulate.c): the Delaunay
  * triangulation of a square against its own count, area and empty-circle
- * property; on generated packings the frame's spheres (every sphere crossing
+ * property; on generated packings (tests/packings, read from the top of the
+ * repository as make runs the tests) the frame's spheres (every sphere crossing
  * a face), their images at exactly +-L, a closed and outward surface (each
  * edge of it in two triangles, once each way), (P)'s paired faces sharing
  * their triangles through the images, the identity sum_q X_q (x) A_q = V I
@@ -10,7 +11,8 @@
 #include "check.h"
 #include "tests.h"
 
-#include "sbc/embedded/generate.h"
+#include "sbc/embedded/generate.h" /* sbc_sphere_packing */
+#include "sbc/packing.h"
 #include "sbc/frame.h"
 #include "servo/triangulate.h"
 
@@ -100,19 +102,35 @@ static int crossing(const double *x, double r, double L)
     return side;
 }
 
-static void generated(int n0, double pd, unsigned long seed)
+/* a generated packing from tests/packings (its generate line in its
+   header): the spheres, and L from the corner sphere at the origin and its
+   image at (L, 0, 0), the sphere of the same radius with y = z = 0 */
+static int read_packing(const char *path, sbc_sphere_packing *p)
 {
-    sbc_generate_def d = sbc_generate_def_default();
+    sbc_error err;
+    int k, o = -1;
+    memset(p, 0, sizeof *p);
+    if (sbc_spheres_read(path, &p->n, &p->x, &p->r, &err) != SBC_OK)
+        return 0;
+    for (k = 0; k < p->n; ++k)
+        if (p->x[3 * k] == 0.0 && p->x[3 * k + 1] == 0.0 && p->x[3 * k + 2] == 0.0)
+            o = k;
+    for (k = 0; k < p->n && o >= 0; ++k)
+        if (p->r[k] == p->r[o] && p->x[3 * k + 1] == 0.0 && p->x[3 * k + 2] == 0.0 && p->x[3 * k] > p->L)
+            p->L = p->x[3 * k];
+    return p->L > 0.0;
+}
+
+static void periodic(const char *path, int expect)
+{
     sbc_sphere_packing p;
     sbc_frame f, g;
     sbc_error err;
     int q, k, a, c, expected = 0, sides_ok = 1, images_ok = 1, paired_ok = 1, outward = 0, *order;
     double *xs, *rs, shift[3] = {0.1234567e-3, -2.3456789e-3, 0.7654321e-3};
-    d.n = n0;
-    d.polydispersity = pd;
-    d.seed = seed;
-    d.strain = 0.002;
-    CHECK(sbc_generate_periodic_3d(&d, &p, NULL, &err) == SBC_OK);
+    CHECK(read_packing(path, &p) && p.n == expect);
+    if (p.n != expect)
+        return;
     CHECK(sbc_frame_detect_3d(&f, p.n, p.x, p.r, 0.0, &err) == SBC_OK);
     if (f.n == 0)
         return;
@@ -247,7 +265,7 @@ void test_frame_3d_periodic(void)
 {
     square(40, 3);
     square(300, 10);
-    generated(24, 1.5, 1);
-    generated(24, 2.0, 2);
+    periodic("tests/packings/irregular24_strain.txt", 60);
+    periodic("tests/packings/irregular24_pd2.txt", 63);
     neither();
 }

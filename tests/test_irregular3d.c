@@ -1,6 +1,8 @@
 /* servo_bc on an irregular sphere packing, through the runner on the
  * embedded sphere engine: a generated periodic packing (30 spheres jammed,
- * touching and free of force, 70 after the reconstruction, a frame of 62),
+ * touching and free of force, 70 after the reconstruction, a frame of 62;
+ * tests/packings/irregular30_touching.txt, read from the top of the
+ * repository as make runs the tests),
  * frictional contacts (kn 1e4 N/m, ks 5e3 N/m, mu 0.5).
  * - A small triaxial step F = diag(0.999, 0.999, 0.998) in 2 increments:
  *   (D) and (P) at `balanced`, (T) at `fast`; Hill-Mandel within the preset's
@@ -143,16 +145,14 @@ static void layer(const char *packing, const char *moved)
 
 void test_irregular_3d(void)
 {
+    /* the packing of inputs/compare/irregular_layer_3d.sbc (its generate line in its header) */
+    static const char packing[] = "tests/packings/irregular30_touching.txt";
     static const double shift[3] = {0.0078125, 0.015625, 0.03125};
-    char packing[600], moved[600], script[1024];
+    char moved[600];
     double *x = NULL, *r = NULL;
     int k, n = 0;
     sbc_error err;
-    snprintf(packing, sizeof packing, "%s/irregular3d.txt", test_tmpdir);
     snprintf(moved, sizeof moved, "%s/irregular3d_moved.txt", test_tmpdir);
-    snprintf(script, sizeof script, "dimension 3\ngenerate periodic n0 30 rmin 1e-3 polydispersity 1.5 seed 1\n"
-             "write_packing text %s\n", packing);
-    CHECK(sbc_script_run_string(script, "irregular3d", NULL, &err) == SBC_OK);
     CHECK(sbc_spheres_read(packing, &n, &x, &r, &err) == SBC_OK && n == 70);
     for (k = 0; k < 3 * n; ++k)
         x[k] += shift[k % 3];
