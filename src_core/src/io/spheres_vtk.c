@@ -1,15 +1,9 @@
 /* VTK snapshots of a 3D servo_bc run (spheres_vtk.h). */
 #include "sbc/embedded/spheres_vtk.h"
-#include "sbc/embedded/output_file.h"
+#include "vtk_parts.h"
 
 #include <stdio.h>
 #include <stdlib.h>
-
-static FILE *open_file(const char *prefix, const char *what, int increment, char *name, size_t len, sbc_error *err)
-{
-    snprintf(name, len, "%s_%s_%06d.vtk", prefix, what, increment);
-    return sbc_output_open(name, SBC_OUTPUT_VTK, "vtk", err);
-}
 
 static void vectors(FILE *fp, const char *name, int n, const double *v)
 {
@@ -37,7 +31,7 @@ sbc_status sbc_spheres_vtk_write(const char *prefix, int increment, const sbc_sp
         return sbc_fail(err, SBC_ERR_NOMEM, "vtk: out of memory");
     for (q = 0; q < frame->n; ++q)
         in_frame[frame->particle[q]] = 1;
-    if (!(fp = open_file(prefix, "spheres", increment, name, sizeof name, err))) {
+    if (!(fp = sbc_vtk_open(prefix, "spheres", increment, name, sizeof name, err))) {
         free(in_frame);
         return SBC_ERR_IO;
     }
@@ -46,12 +40,7 @@ sbc_status sbc_spheres_vtk_write(const char *prefix, int increment, const sbc_sp
     fprintf(fp, "POINTS %d double\n", w->n);
     for (k = 0; k < w->n; ++k)
         fprintf(fp, "%.12g %.12g %.12g\n", w->x[3 * k], w->x[3 * k + 1], w->x[3 * k + 2]);
-    fprintf(fp, "VERTICES %d %d\n", w->n, 2 * w->n);
-    for (k = 0; k < w->n; ++k)
-        fprintf(fp, "1 %d\n", k);
-    fprintf(fp, "POINT_DATA %d\nSCALARS radius double 1\nLOOKUP_TABLE default\n", w->n);
-    for (k = 0; k < w->n; ++k)
-        fprintf(fp, "%.12g\n", w->r[k]);
+    sbc_vtk_vertices(fp, w->n, w->r);
     fprintf(fp, "SCALARS frame int 1\nLOOKUP_TABLE default\n");
     for (k = 0; k < w->n; ++k)
         fprintf(fp, "%d\n", in_frame[k]);
@@ -62,7 +51,7 @@ sbc_status sbc_spheres_vtk_write(const char *prefix, int increment, const sbc_sp
     if (close_file(fp, name, err) != SBC_OK)
         return err->status;
 
-    if (!(fp = open_file(prefix, "frame", increment, name, sizeof name, err)))
+    if (!(fp = sbc_vtk_open(prefix, "frame", increment, name, sizeof name, err)))
         return SBC_ERR_IO;
     fprintf(fp, "# vtk DataFile Version 3.0\nservo_bc frame surface, increment %d\nASCII\nDATASET POLYDATA\n",
             increment);

@@ -1,16 +1,26 @@
 #include "sbc/embedded/vtk.h"
 #include "sbc/embedded/output_file.h"
+#include "vtk_parts.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-static FILE *open_file(const char *prefix, const char *what, int increment, char *name, size_t len, sbc_error *err)
+FILE *sbc_vtk_open(const char *prefix, const char *what, int increment, char *name, size_t len, sbc_error *err)
 {
-    FILE *fp;
     snprintf(name, len, "%s_%s_%06d.vtk", prefix, what, increment);
-    fp = sbc_output_open(name, SBC_OUTPUT_VTK, "vtk", err);
-    return fp;
+    return sbc_output_open(name, SBC_OUTPUT_VTK, "vtk", err);
+}
+
+void sbc_vtk_vertices(FILE *fp, int n, const double *r)
+{
+    int k;
+    fprintf(fp, "VERTICES %d %d\n", n, 2 * n);
+    for (k = 0; k < n; ++k)
+        fprintf(fp, "1 %d\n", k);
+    fprintf(fp, "POINT_DATA %d\nSCALARS radius double 1\nLOOKUP_TABLE default\n", n);
+    for (k = 0; k < n; ++k)
+        fprintf(fp, "%.12g\n", r[k]);
 }
 
 static double overlap(const sbc_engine_view *w, int k)
@@ -31,7 +41,7 @@ sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_vie
     FILE *fp;
     int k, nc = 0;
 
-    fp = open_file(prefix, "particles", increment, name, sizeof name, err);
+    fp = sbc_vtk_open(prefix, "particles", increment, name, sizeof name, err);
     if (!fp)
         return SBC_ERR_IO;
     fprintf(fp, "# vtk DataFile Version 3.0\nservo_bc particles, increment %d, t = %.9g s\nASCII\nDATASET POLYDATA\n",
@@ -39,12 +49,7 @@ sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_vie
     fprintf(fp, "POINTS %d double\n", w->n);
     for (k = 0; k < w->n; ++k)
         fprintf(fp, "%.12g %.12g 0\n", w->x[2 * k], w->x[2 * k + 1]);
-    fprintf(fp, "VERTICES %d %d\n", w->n, 2 * w->n);
-    for (k = 0; k < w->n; ++k)
-        fprintf(fp, "1 %d\n", k);
-    fprintf(fp, "POINT_DATA %d\nSCALARS radius double 1\nLOOKUP_TABLE default\n", w->n);
-    for (k = 0; k < w->n; ++k)
-        fprintf(fp, "%.12g\n", w->r[k]);
+    sbc_vtk_vertices(fp, w->n, w->r);
     fprintf(fp, "SCALARS rotation double 1\nLOOKUP_TABLE default\n");
     for (k = 0; k < w->n; ++k)
         fprintf(fp, "%.12g\n", w->theta[k]);
@@ -59,7 +64,7 @@ sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_vie
 
     for (k = 0; k < w->pair_count; ++k)
         nc += carries(w, k);
-    fp = open_file(prefix, "contacts", increment, name, sizeof name, err);
+    fp = sbc_vtk_open(prefix, "contacts", increment, name, sizeof name, err);
     if (!fp)
         return SBC_ERR_IO;
     fprintf(fp, "# vtk DataFile Version 3.0\nservo_bc contact network, increment %d\nASCII\nDATASET POLYDATA\n",
