@@ -62,8 +62,7 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   dim = domain->dimension;
   nrot = SBC_ROTATIONS(dim);
   zrot = 3 - nrot;
-  if (dim == 3 && (settings.seal || settings.frame_group[0]))
-    fail(std::string("keyword '") + (settings.seal ? "seal" : "frame") + "' is 2d in this version; the box is 3d");
+  if (dim == 3 && settings.frame_group[0]) fail("keyword 'frame' is 2d in this version; the box is 3d");
   {
     char note[SBC_ERROR_LEN];
     if (comm->me == 0 && sbc_settings_ignored_message(&settings, note, sizeof note))
@@ -389,7 +388,7 @@ void FixServoBC::initial_integrate(int)
   }
 }
 
-/* seal.h: the walls of the frame's polygon (at the commanded frame centres,
+/* seal.h: the walls of the frame's polygon or surface (at the commanded frame centres,
    where initial_integrate put the frame atoms) on this rank's atoms; their
    reactions on the frame wait in seal_reaction for frame_pass's sum */
 int FixServoBC::seal_slot(const void *self, int i)

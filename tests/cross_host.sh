@@ -167,6 +167,22 @@ for e in embedded lammps liggghts yade lammps_np2 liggghts_np2; do
     fail=$((fail + 1)); echo "FAIL seal ($e): sigma22 = ${got:-none} N/m at increment 2, expected -120 (the seal's load)"
   fi
 done
+# the frame seal in 3D (seal.h, walls on the surface's triangles) in every
+# host: a column of four spheres squeezed between the walls of the bottom and
+# top faces of a cube of eight corners carries its closed-form load,
+# sigma33 = -kn (eps L - 2 g) / (5 L^2) = -4483.24 N/m^2 at F33 = 0.97 (0
+# where a host leaves the seal out), to 1e-6
+dir=$tmp/seal_column_3d
+(cd "$top" && RANKS="1 2" bash scripts/compare.sh inputs/compare/seal_column_3d.sbc "$dir" | grep -v "^compare: report")
+want=$(awk 'BEGIN { L = 7.1e-3; printf "%.12g", -1e4 * (0.03 * L - 1e-4) / (5 * L * L) }')
+for e in embedded lammps liggghts yade lammps_np2 liggghts_np2; do
+  got=$(awk -F, "$COLUMNS_AWK"'NR > 1 { n++; s = $col("sigma33") } END { if (n == 3) printf "%.12g", s; else print "none" }' "$dir/$e.csv" 2>/dev/null)
+  if awk -v s="${got:-none}" -v w="$want" 'BEGIN { d = (s - w) / w; if (d < 0) d = -d; exit !(s != "none" && d <= 1e-6) }'; then
+    pass=$((pass + 1)); echo "seal 3D ($e): the column between the walls, sigma33 = $got N/m^2 (closed form $want)"
+  else
+    fail=$((fail + 1)); echo "FAIL seal 3D ($e): sigma33 = ${got:-none} N/m^2 at increment 2, expected $want (the walls' load)"
+  fi
+done
 # the cohesive mixed layer (eqs. 7-8) in every host, every contact the core's
 # (fix servo_bc/bonds cohesive, servo_bc.Cohesive): within 0.5 % of the stress
 # scale before the peak, and the bonds broken within one of the embedded

@@ -316,8 +316,8 @@ class ServoBC(object):
         # keyword seal (seal.h): the walls' forces, computed by the core each step
         self._seal = lib.sbc_host_sealed(self._h) == 1
         self._seal_states = [O.bodies[i].state for i in self.bodies]
-        self._seal_xy = (ctypes.c_double * (2 * n))()
-        self._seal_f = (ctypes.c_double * (2 * n))()
+        self._seal_x = (ctypes.c_double * (self.dim * n))()
+        self._seal_f = (ctypes.c_double * (self.dim * n))()
         self._seal_energy = ctypes.c_double(0.0)
         print('servo_bc %s: %s on %d bodies (%dD), frame of %d, kn %g N/m' % (version(), words.split()[0], n, self.dim,
                                                                                 self.Q, self.kn), flush=True)
@@ -588,17 +588,19 @@ class ServoBC(object):
         self._reported = time.time()
 
     def _seal_forces(self):
-        """keyword seal: the walls of the frame's polygon on the bodies (sbc_host_seal), added to
-        YADE's forces before anything is measured; the frame bodies' reactions included."""
-        self._seal_xy[:] = [c for st in self._seal_states for c in (st.pos[0], st.pos[1])]
-        touching = _core().sbc_host_seal(self._h, self._seal_xy, self._seal_f, ctypes.byref(self._seal_energy))
+        """keyword seal: the walls of the frame's polygon or surface on the bodies (sbc_host_seal),
+        added to YADE's forces before anything is measured; the frame bodies' reactions included."""
+        d = self.dim
+        self._seal_x[:] = [st.pos[k] for st in self._seal_states for k in range(d)]
+        touching = _core().sbc_host_seal(self._h, self._seal_x, self._seal_f, ctypes.byref(self._seal_energy))
         if touching < 0:
             raise ServoBCError(_core().sbc_host_message(self._h).decode())
         if touching:
             f = self._seal_f
             for k, i in enumerate(self.bodies):
-                if f[2 * k] != 0.0 or f[2 * k + 1] != 0.0:
-                    O.forces.addF(i, (f[2 * k], f[2 * k + 1], 0.0))
+                fk = tuple(f[d * k + j] for j in range(d)) + (0.0,) * (3 - d)
+                if any(fk):
+                    O.forces.addF(i, fk)
 
     def _step(self):
         lib = _core()

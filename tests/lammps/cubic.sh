@@ -33,9 +33,10 @@ if [ "$dumped" = "64 56 0" ]; then
 else
   no "3d dump: atoms, frame flags, bad values: ${dumped:-none} (expected 64 56 0)"
 fi
-# refused in a 3d box: keyword seal (2d in this version), mixed words of 2D
-deck_with 's/accuracy tight/accuracy tight seal yes/' "$TMP/seal.in"
-refused_deck "keyword seal in a 3d box" seal.in "keyword 'seal' is 2d in this version; the box is 3d"
+# refused in a 3d box: keyword frame (2d in this version; the 3d frame is
+# found from the centres), mixed words of 2D
+deck_with 's/accuracy tight/accuracy tight frame all/' "$TMP/frame.in"
+refused_deck "keyword frame in a 3d box" frame.in "keyword 'frame' is 2d in this version; the box is 3d"
 deck_with 's/servo_bc ${bc} F .* increments/servo_bc mixed stress P22 -1 1 increments/' "$TMP/mixed.in"
 refused_deck "mixed words of 2D in a 3d box" mixed.in "the packing is 3D but the words are 2D: give F with nine values"
 rm -rf "$TMP"

@@ -82,8 +82,7 @@ check(err <= 1e-6 and hm <= 1e-6, '3d layer (mixed), stress stage on the 4^3 tou
       'the closed form, |hill_mandel| <= %.3g' % (err, hm))
 
 for words, expect in (('mixed stress P22 -1 1', 'the packing is 3D but the words are 2D'),
-                      ('D F 0.999 0 0 1', "4 values give a 2D F, but the packing is 3D"),
-                      ('D F 0.999 0 0 0 1 0 0 0 1 seal yes', "keyword 'seal' is 2D in this version")):
+                      ('D F 0.999 0 0 1', "4 values give a 2D F, but the packing is 3D")):
     try:
         run(words)
         check(False, 'refuses %r' % words)

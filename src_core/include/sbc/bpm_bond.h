@@ -10,19 +10,13 @@
 #ifndef SBC_BPM_BOND_H
 #define SBC_BPM_BOND_H
 
+#include "sbc/tensor.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 #define SBC_PI 3.14159265358979323846
-
-/* c = a x b */
-static inline void sbc_cross3(const double a[3], const double b[3], double c[3])
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* Local frame of a bond, eqs. 4-8: rows T[0] = x^ (centre line A -> B,
  * eq. 5), T[1] = y^ = x^ x e_z / |.| (eq. 6), or e_y when x^ and e_z are

@@ -46,16 +46,15 @@ int sbc_host_warning(const sbc_host *h, char *msg, size_t cap);
  * 10 (0 for none; with FIRE they damp the free frame rotations of (T)). */
 int sbc_host_damping(const sbc_host *h, double *alpha, double *beta);
 
-/* keyword seal (seal.h, 2D: refused on a 3D packing): sbc_host_sealed is 1
- * when the words ask for it.
- * sbc_host_seal: the walls' forces on the creation's particles at centres xy
- * [2n] (m), the frame's at the commanded centres, into force [2n] (N,
+/* keyword seal (seal.h): sbc_host_sealed is 1 when the words ask for it.
+ * sbc_host_seal: the walls' forces on the creation's particles at centres x
+ * [dim n] (m), the frame's at the commanded centres, into force [dim n] (N,
  * overwritten; the walls' reactions on frame particles included): add them
  * to the host's forces before anything is measured in the step. *energy: the
  * walls' energy (J), part of Ep. Returns the walls touching a particle (0
  * without the keyword), or -1 with the message in sbc_host_message. */
 int sbc_host_sealed(const sbc_host *h);
-int sbc_host_seal(sbc_host *h, const double *xy, double *force, double *energy);
+int sbc_host_seal(sbc_host *h, const double *x, double *force, double *energy);
 
 /* Q and the frame's particles [Q], as indices into the creation arrays, in
  * frame order (the order of every per-frame array below). */

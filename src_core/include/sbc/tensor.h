@@ -20,6 +20,16 @@ enum { SBC_DIM_MAX = 3, SBC_TENSOR_SLOTS = 9 };
 /* slot of component T_ij (0-based) of a tensor */
 #define SBC_IJ(i, j) (SBC_DIM_MAX * (i) + (j))
 
+/* 3-vectors: c = a x b, and a . b */
+static inline void sbc_cross3(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static inline double sbc_dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
 /* T = I in the first dim x dim block, 0 elsewhere */
 void sbc_tensor_identity(int dim, double T[9]);
 

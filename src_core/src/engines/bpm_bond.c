@@ -5,11 +5,10 @@
 #include <math.h>
 #include <string.h>
 
-static double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 static double normalize(double a[3])
 {
-    double l = sqrt(dot(a, a));
+    double l = sqrt(sbc_dot3(a, a));
     if (l > 0.0) {
         a[0] /= l;
         a[1] /= l;
@@ -58,7 +57,7 @@ void sbc_parallel_bond_increment(const sbc_parallel_bond_law *law, sbc_parallel_
                                  const double du[3], const double dth[3])
 {
     double area = sbc_bond_area(bond->rb), I = sbc_bond_inertia(bond->rb), J = sbc_bond_polar(bond->rb);
-    double un = dot(du, n), tn = dot(dth, n);
+    double un = sbc_dot3(du, n), tn = sbc_dot3(dth, n);
     int k;
     for (k = 0; k < 3; ++k) {
         double dun = un * n[k], dus = du[k] - dun;
@@ -97,9 +96,9 @@ double sbc_parallel_bond_energy(const sbc_parallel_bond_law *law, const sbc_para
     double area = sbc_bond_area(bond->rb), I = sbc_bond_inertia(bond->rb), J = sbc_bond_polar(bond->rb);
     double w = 0.0;
     if (law->kn > 0.0)
-        w += dot(bond->fn, bond->fn) / (2.0 * law->kn * area) + dot(bond->ms, bond->ms) / (2.0 * law->kn * I);
+        w += sbc_dot3(bond->fn, bond->fn) / (2.0 * law->kn * area) + sbc_dot3(bond->ms, bond->ms) / (2.0 * law->kn * I);
     if (law->ks > 0.0)
-        w += dot(bond->fs, bond->fs) / (2.0 * law->ks * area) + dot(bond->mn, bond->mn) / (2.0 * law->ks * J);
+        w += sbc_dot3(bond->fs, bond->fs) / (2.0 * law->ks * area) + sbc_dot3(bond->mn, bond->mn) / (2.0 * law->ks * J);
     return w;
 }
 
@@ -177,7 +176,7 @@ double sbc_beam_bond_increment(sbc_beam_bond *bond, const double dxa[3], const d
     int b, i;
     for (b = 0; b < 4; ++b) /* eq. 32 */
         for (i = 0; i < 3; ++i)
-            ul[3 * b + i] = dot(bond->T[i], g[b]);
+            ul[3 * b + i] = sbc_dot3(bond->T[i], g[b]);
     sbc_beam_bond_product(bond, ul, df); /* eq. 23 */
     for (i = 0; i < 12; ++i) {
         w += (bond->f[i] + 0.5 * df[i]) * ul[i];
@@ -214,10 +213,10 @@ double sbc_bond_criterion(const sbc_bond_strength *s, double ft, double fs, doub
 
 void sbc_parallel_bond_loads(const sbc_parallel_bond *bond, const double n[3], double out[4])
 {
-    out[0] = dot(bond->fn, n); /* force on A toward B: tension */
-    out[1] = sqrt(dot(bond->fs, bond->fs));
-    out[2] = sqrt(dot(bond->ms, bond->ms));
-    out[3] = sqrt(dot(bond->mn, bond->mn));
+    out[0] = sbc_dot3(bond->fn, n); /* force on A toward B: tension */
+    out[1] = sqrt(sbc_dot3(bond->fs, bond->fs));
+    out[2] = sqrt(sbc_dot3(bond->ms, bond->ms));
+    out[3] = sqrt(sbc_dot3(bond->mn, bond->mn));
 }
 
 void sbc_beam_bond_loads(const sbc_beam_bond *bond, double out[4])
@@ -232,7 +231,7 @@ void sbc_beam_bond_loads(const sbc_beam_bond *bond, double out[4])
 void sbc_broken_bond_increment(const sbc_friction_law *law, sbc_broken_bond *c, double dn, const double n[3],
                                const double du[3], double f[3])
 {
-    double un = dot(du, n), cap, mag;
+    double un = sbc_dot3(du, n), cap, mag;
     int k;
     if (dn <= 0.0) {
         memset(c->fs, 0, sizeof c->fs);
@@ -240,18 +239,18 @@ void sbc_broken_bond_increment(const sbc_friction_law *law, sbc_broken_bond *c, 
         for (k = 0; k < 3; ++k)
             c->fs[k] -= law->ks * (du[k] - un * n[k]);
         /* keep the spring in the contact plane as n turns */
-        mag = dot(c->fs, n);
+        mag = sbc_dot3(c->fs, n);
         for (k = 0; k < 3; ++k)
             c->fs[k] -= mag * n[k];
         cap = law->mu * law->kn * dn;
-        mag = sqrt(dot(c->fs, c->fs));
+        mag = sqrt(sbc_dot3(c->fs, c->fs));
         if (mag > cap)
             for (k = 0; k < 3; ++k)
                 c->fs[k] *= cap / mag;
     }
     for (k = 0; k < 3; ++k)
         f[k] = (dn > 0.0 ? -law->kn * dn * n[k] : 0.0) + c->fs[k];
-    c->w -= 0.5 * (dot(c->f, du) + dot(f, du)); /* work done on the contact */
+    c->w -= 0.5 * (sbc_dot3(c->f, du) + sbc_dot3(f, du)); /* work done on the contact */
     memcpy(c->f, f, sizeof c->f);
 }
 
@@ -259,7 +258,7 @@ double sbc_broken_bond_energy(const sbc_friction_law *law, const sbc_broken_bond
 {
     double w = dn > 0.0 ? 0.5 * law->kn * dn * dn : 0.0;
     if (law->ks > 0.0)
-        w += 0.5 * dot(c->fs, c->fs) / law->ks;
+        w += 0.5 * sbc_dot3(c->fs, c->fs) / law->ks;
     return w;
 }
 

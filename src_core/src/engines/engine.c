@@ -202,45 +202,24 @@ sbc_status sbc_engine_seal(sbc_engine *e, sbc_error *err)
     sbc_status st;
     if (!e->frame)
         return sbc_fail(err, SBC_ERR_INPUT, "engine: seal without a frame");
-    int k;
     e->seal_reaction = malloc(sizeof(double) * 3 * (size_t)e->frame->n);
-    e->frame_slot = malloc(sizeof(int) * (size_t)e->n);
+    e->frame_slot = sbc_seal_slots(e->frame, e->n);
     if (!e->seal_reaction || !e->frame_slot)
         return sbc_fail(err, SBC_ERR_NOMEM, "engine: out of memory");
-    for (k = 0; k < e->n; ++k)
-        e->frame_slot[k] = -1;
-    for (k = 0; k < e->frame->n; ++k)
-        e->frame_slot[e->frame->particle[k]] = k;
     st = sbc_seal_init(&e->seal, e->frame, e->pairs.skin, err);
     e->sealed = st == SBC_OK;
     return st;
 }
 
-static int frame_slot(const void *ctx, int k) { return ((const int *)ctx)[k]; }
-
 /* seal.h: the walls' forces on the interior, their reactions on the frame
  * particles, and their energy in Ep */
 static sbc_status seal_step(sbc_engine *e, sbc_error *err)
 {
-    const sbc_frame *fr = e->frame;
-    sbc_seal_particles p;
+    const sbc_seal_particles p = sbc_seal_packed(e->n, e->x, e->f, 2, e->r, e->frame_slot);
     double energy;
     sbc_status st;
-    int q;
-    sbc_frame_centres(fr, e->x, e->snap_x);
-    memset(e->seal_reaction, 0, sizeof(double) * 3 * (size_t)fr->n);
-    p.n = e->n;
-    p.x = e->x;
-    p.f = e->f;
-    p.stride = 2;
-    p.r = e->r;
-    p.frame = frame_slot;
-    p.ctx = e->frame_slot;
-    st = sbc_seal_forces(&e->seal, fr, e->snap_x, &p, e->law.kn, 0, e->seal_reaction, &energy, err);
-    for (q = 0; q < fr->n; ++q) {
-        e->f[2 * fr->particle[q]] += e->seal_reaction[3 * q];
-        e->f[2 * fr->particle[q] + 1] += e->seal_reaction[3 * q + 1];
-    }
+    sbc_frame_centres(e->frame, e->x, e->snap_x);
+    st = sbc_seal_forces_packed(&e->seal, e->frame, e->snap_x, &p, e->law.kn, e->seal_reaction, &energy, err);
     e->ep += energy;
     return st;
 }

@@ -3,6 +3,7 @@
 #include "sbc/bpm_bond.h"
 #include "sbc/confine.h"
 #include "sbc/damping.h"
+#include "sbc/seal.h"
 
 #include <float.h>
 #include <math.h>
@@ -36,6 +37,10 @@ struct sbc_spheres {
     int stale;
     long builds;
     const sbc_frame *frame;
+    int sealed;               /* seal.h walls on the frame's triangles */
+    sbc_seal seal;
+    int *frame_slot;          /* [n] frame position, -1 interior */
+    double *fx, *seal_reaction; /* [3Q] frame centres (m), the walls' reactions (N) */
     /* the last forces' contact sums */
     double ep, overlap_sum, force_sum;
     long contacts, step;
@@ -63,6 +68,8 @@ void sbc_spheres_free(sbc_spheres *e)
     free(e->kinematic);
     free(e->pairs);
     free(e->x_build);
+    sbc_seal_free(&e->seal);
+    free(e->frame_slot); free(e->fx); free(e->seal_reaction);
     free(e);
 }
 
@@ -277,6 +284,35 @@ void sbc_spheres_set_frame(sbc_spheres *e, const sbc_frame *frame)
         e->kinematic[frame->particle[q]] = 1;
 }
 
+sbc_status sbc_spheres_seal(sbc_spheres *e, sbc_error *err)
+{
+    const sbc_frame *fr = e->frame;
+    if (!fr)
+        return sbc_fail(err, SBC_ERR_INPUT, "spheres: seal without a frame");
+    e->frame_slot = sbc_seal_slots(fr, e->n);
+    e->fx = malloc(sizeof(double) * 3 * (size_t)fr->n);
+    e->seal_reaction = malloc(sizeof(double) * 3 * (size_t)fr->n);
+    if (!e->frame_slot || !e->fx || !e->seal_reaction)
+        return sbc_fail(err, SBC_ERR_NOMEM, "spheres: out of memory");
+    if (sbc_seal_init(&e->seal, fr, e->skin, err) != SBC_OK)
+        return err->status;
+    e->sealed = 1;
+    return SBC_OK;
+}
+
+/* seal.h: the walls' forces on the spheres, their reactions on the frame
+ * spheres, and their energy in Ep */
+static sbc_status seal_step(sbc_spheres *e, sbc_error *err)
+{
+    const sbc_seal_particles p = sbc_seal_packed(e->n, e->x, e->f, 3, e->r, e->frame_slot);
+    double energy;
+    sbc_status st;
+    sbc_frame_centres(e->frame, e->x, e->fx);
+    st = sbc_seal_forces_packed(&e->seal, e->frame, e->fx, &p, e->law.kn, e->seal_reaction, &energy, err);
+    e->ep += energy;
+    return st;
+}
+
 /* eq. 6 in 3D on every pair (the thesis' contact springs), eq. 12, eq. 39 */
 sbc_status sbc_spheres_forces(sbc_spheres *e, sbc_error *err)
 {
@@ -334,7 +370,7 @@ sbc_status sbc_spheres_forces(sbc_spheres *e, sbc_error *err)
         e->contacts++;
     }
     e->step++;
-    return SBC_OK;
+    return e->sealed ? seal_step(e, err) : SBC_OK;
 }
 
 /* ---- the driver's callbacks ---- */

@@ -33,8 +33,6 @@ struct sbc_host {
     char step_note[SBC_ERROR_LEN]; /* time_step.h: sbc_time_step_note, or "" */
 };
 
-static int host_slot(const void *ctx, int k) { return ((const int *)ctx)[k]; }
-
 /* the seal's state at creation; 0, or 1 with the message in err */
 static int seal_start(sbc_host *h, int n, const double *r, double kn, sbc_error *err)
 {
@@ -42,7 +40,7 @@ static int seal_start(sbc_host *h, int n, const double *r, double kn, sbc_error 
     double rmin = r[0];
     h->kn = kn;
     h->r = malloc(sizeof(double) * (size_t)n);
-    h->slot = malloc(sizeof(int) * (size_t)n);
+    h->slot = sbc_seal_slots(&h->frame, n);
     h->reaction = malloc(sizeof(double) * 3 * (size_t)h->frame.n);
     if (!h->r || !h->slot || !h->reaction) {
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
@@ -50,11 +48,8 @@ static int seal_start(sbc_host *h, int n, const double *r, double kn, sbc_error 
     }
     for (k = 0; k < n; ++k) {
         h->r[k] = r[k];
-        h->slot[k] = -1;
         rmin = fmin(rmin, r[k]);
     }
-    for (k = 0; k < h->frame.n; ++k)
-        h->slot[h->frame.particle[k]] = k;
     if (sbc_seal_init(&h->seal, &h->frame, 0.25 * rmin, err) != SBC_OK)
         return 1;
     h->sealed = 1;
@@ -106,10 +101,6 @@ sbc_host *sbc_host_create(const char *words, int dim, int n, const double *x, co
     free(line);
     if (n < 4) {
         sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: %d particles given; a frame needs at least 4", n);
-        return fail_create(h, &err, msg, cap);
-    }
-    if (h->settings.seal && dim == 3) {
-        sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: keyword 'seal' is 2D in this version; the packing is 3D");
         return fail_create(h, &err, msg, cap);
     }
     if (!x || !r || !m || (nlist > 0 && !list)) {
@@ -228,29 +219,17 @@ int sbc_host_damping(const sbc_host *h, double *alpha, double *beta)
 
 int sbc_host_sealed(const sbc_host *h) { return h->sealed; }
 
-int sbc_host_seal(sbc_host *h, const double *xy, double *force, double *energy)
+int sbc_host_seal(sbc_host *h, const double *x, double *force, double *energy)
 {
-    sbc_seal_particles p;
-    int q;
-    memset(force, 0, sizeof(double) * 2 * (size_t)h->n);
+    const int d = h->frame.dim;
+    const sbc_seal_particles p = sbc_seal_packed(h->n, x, force, d, h->r, h->slot);
+    memset(force, 0, sizeof(double) * (size_t)d * (size_t)h->n);
     *energy = 0.0;
     if (!h->sealed)
         return 0;
-    memset(h->reaction, 0, sizeof(double) * 3 * (size_t)h->frame.n);
-    p.n = h->n;
-    p.x = xy;
-    p.f = force;
-    p.stride = 2;
-    p.r = h->r;
-    p.frame = host_slot;
-    p.ctx = h->slot;
-    if (sbc_seal_forces(&h->seal, &h->frame, sbc_controller_commands(h->ctl).x, &p, h->kn, 0, h->reaction, energy,
-                        &h->err) != SBC_OK)
+    if (sbc_seal_forces_packed(&h->seal, &h->frame, sbc_controller_commands(h->ctl).x, &p, h->kn, h->reaction, energy,
+                               &h->err) != SBC_OK)
         return -1;
-    for (q = 0; q < h->frame.n; ++q) {
-        force[2 * h->frame.particle[q]] += h->reaction[3 * q];
-        force[2 * h->frame.particle[q] + 1] += h->reaction[3 * q + 1];
-    }
     return h->seal.contacts;
 }
 

@@ -245,9 +245,9 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
         return sbc_fail(err, SBC_ERR_INPUT, "run: no time step (use 'timestep DT' first)");
     if ((st = sbc_script_outputs_check(s, err)) != SBC_OK)
         return st;
-    if (s->settings.seal || s->settings.frame_group[0])
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword '%s' is 2D in this version; the packing is 3D",
-                        s->servo_line, s->settings.seal ? "seal" : "frame");
+    if (s->settings.frame_group[0])
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'frame' is 2D in this version; the packing is 3D",
+                        s->servo_line);
     if ((st = sbc_frame_detect_3d(&p.frame, s->n3, s->x3, s->r3, 0.0, err)) != SBC_OK)
         return st;
     def.n = s->n3;
@@ -277,6 +277,10 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
         return st;
     }
     sbc_spheres_set_frame(p.engine, &p.frame);
+    if (s->settings.seal && (st = sbc_spheres_seal(p.engine, err)) != SBC_OK) {
+        parts_free(&p, &r);
+        return st;
+    }
     if (!(p.mass = malloc(sizeof(double) * (size_t)p.frame.n))) {
         parts_free(&p, &r);
         return sbc_fail(err, SBC_ERR_NOMEM, "run: out of memory");

@@ -14,19 +14,12 @@
 const char *const sbc_frame_face_name[6] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
 #define face_name sbc_frame_face_name
 
-static void cross(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* the vector area of the triangle (a, b, c), (b - a) x (c - a) / 2, into S */
 static void triangle_area(const double *a, const double *b, const double *c, double S[3])
 {
     const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     int k;
-    cross(ab, ac, S);
+    sbc_cross3(ab, ac, S);
     for (k = 0; k < 3; ++k)
         S[k] *= 0.5;
 }
@@ -74,14 +67,14 @@ static int ray_crosses(const double *p, const double dir[3], const double *a, co
     const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     const double s[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
     double h[3], g[3], det, u, w, t;
-    cross(dir, e2, h);
+    sbc_cross3(dir, e2, h);
     det = e1[0] * h[0] + e1[1] * h[1] + e1[2] * h[2];
     if (det == 0.0)
         return 0;
     u = (s[0] * h[0] + s[1] * h[1] + s[2] * h[2]) / det;
     if (u < 0.0 || u > 1.0)
         return 0;
-    cross(s, e1, g);
+    sbc_cross3(s, e1, g);
     w = (dir[0] * g[0] + dir[1] * g[1] + dir[2] * g[2]) / det;
     if (w < 0.0 || u + w > 1.0)
         return 0;

@@ -97,7 +97,8 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
     {"seal",
      "`yes` or `no`",
      "the edges of the polygon of the frame's centres become frictionless walls that no disc passes (see "
-         "\"Seal\"); for irregular packings sheared far enough that a disc would slip out between frame discs",
+         "\"Seal\"; in 3D the triangles of the surface through them, [frame3d.md](frame3d.md) \"Seal\"); for "
+         "irregular packings sheared far enough that a disc would slip out between frame discs",
      "no"},
     {"frame",
      "group-ID",

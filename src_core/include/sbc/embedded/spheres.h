@@ -50,6 +50,11 @@ void sbc_spheres_free(sbc_spheres *e);
  * must outlive the engine). */
 void sbc_spheres_set_frame(sbc_spheres *e, const sbc_frame *frame);
 
+/* Keyword seal (seal.h): the triangles of the frame's surface become walls
+ * for every sphere, their reactions added to the frame spheres' forces and
+ * their energy to the contacts'. After sbc_spheres_set_frame. */
+sbc_status sbc_spheres_seal(sbc_spheres *e, sbc_error *err);
+
 /* The contact forces and moments at the present centres (the pair list
  * rebuilt when a sphere moved half the skin since its last build), and the
  * contact sums of relax.h. */
