@@ -44,7 +44,7 @@ const double RESTART_MAGIC = 8.020001e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), driver(nullptr), per_atom(nullptr), contacts(nullptr), finished(0), restored(0), last_step(-1), run_start(0), frame_still(0), any_free(1), seal_on(0), seal_energy(0.0)
+    Fix(lmp, narg, arg), ctl(nullptr), driver(nullptr), per_atom(nullptr), contacts(nullptr), finished(0), restored(0), last_step(-1), run_start(0), clock_start(-1.0), clock_reported(-1.0), frame_still(0), any_free(1), seal_on(0), seal_energy(0.0)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
@@ -332,6 +332,7 @@ void FixServoBC::init()
 void FixServoBC::setup(int)
 {
   run_start = update->ntimestep;
+  if (clock_start < 0.0) clock_start = clock_reported = MPI_Wtime();
   for (int i = 0; i < atom->nlocal; i++) per_atom[i][0] = (atom->mask[i] & frame_bit) ? 1.0 : 0.0;
   post_force(0);
 }
@@ -637,7 +638,12 @@ void FixServoBC::post_force(int)
   last_step = update->ntimestep;
   if (ev == SBC_EVENT_FAILED) fail(err.message);
   if (ev == SBC_EVENT_CORRECTED || ev == SBC_EVENT_INCREMENT) frame_still = 0;
-  if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) last = *sbc_controller_result(ctl);
+  if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
+    last = *sbc_controller_result(ctl);
+    clock_reported = MPI_Wtime();
+  } else if (comm->me == 0 && update->ntimestep % 1000 == 0) {
+    progress();
+  }
   if (ev == SBC_EVENT_FINISHED) {
     finished = 1;
     servo_bc_host::end_run(lmp);
@@ -779,6 +785,18 @@ void FixServoBC::fail_here(const std::string &message)
 {
   last_error = "Fix servo_bc: " + message;
   error->one(FLERR, last_error.c_str());
+}
+
+/* rank 0: the progress line of a long increment, SBC_PROGRESS_EVERY s after
+   the last line or row (LAMMPS' thermo stays as it was while the frame relaxes) */
+void FixServoBC::progress()
+{
+  const double now = MPI_Wtime();
+  if (now - clock_reported < SBC_PROGRESS_EVERY) return;
+  clock_reported = now;
+  char line[256];
+  sbc_controller_progress_line(ctl, (long) update->ntimestep, now - clock_start, line, sizeof line);
+  log("servo_bc:   %s\n", line);
 }
 
 /* a line on screen and in the log file, from rank 0 */

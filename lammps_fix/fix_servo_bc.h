@@ -90,6 +90,7 @@ class FixServoBC : public Fix {
   int restored;                      // the frame came from a restart file
   bigint last_step;                  // timestep of the last controller step
   bigint run_start;                  // timestep at the setup of this run
+  double clock_start, clock_reported; // MPI_Wtime at the first setup and at the last progress line or row, s
   int frame_still;                   // steps since the commands last changed (initial_integrate)
   int any_free;                      // some frame rotation is free ((T)): integrated every step
   sbc_fire_state fire;               // damping fire: FIRE's state as a restart file gave it (the driver's after init)
@@ -101,6 +102,7 @@ class FixServoBC : public Fix {
 
   void find_contacts();
   void seal_pass();
+  void progress();
   static int seal_slot(const void *self, int i);
   // this rank's share of each measure the driver asks for (driver.h)
   void fire_pass(double *sums);

@@ -36,7 +36,7 @@ __all__ = ['ServoBCError', 'ServoBC', 'Bonds', 'Cohesive', 'load_packing', 'engi
            'FRAME_MASK']
 
 RATTLER_SCAN = 1000                     # steps between full scans for contact-free bodies
-PROGRESS_CHECK = 10000                  # steps between looks at the clock for a progress line
+PROGRESS_CHECK = 100                    # steps between looks at the clock for a progress line
 PROGRESS_EVERY = 10.0                   # s of wall time between progress lines of a long increment
 FRAME_MASK = 2                          # groupMask bit of the frame bodies load_packing flags
 
@@ -626,11 +626,9 @@ class ServoBC(object):
         now = time.time()
         if now - self._reported >= PROGRESS_EVERY:
             self._reported = now
-            p = (ctypes.c_double * 4)()
-            _core().sbc_host_progress(self._h, p)
-            print('servo_bc:   increment %d: servo iteration %d, residuals force %.3e moment %.3e deformation '
-                  '%.3e, step %d, elapsed %.0f s' % (len(self.rows), int(p[0]), p[1], p[2], p[3], self.steps,
-                                                     now - self._started), flush=True)
+            line = ctypes.create_string_buffer(256)
+            _core().sbc_host_progress_line(self._h, self.steps, now - self._started, line, 256)
+            print('servo_bc:   ' + line.value.decode(), flush=True)
 
     def _frame_theta(self, q, state):
         """Frame body q's rotation (nrot components): YADE's own when free ((T)), the commanded one else."""

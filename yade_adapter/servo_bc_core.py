@@ -76,7 +76,7 @@ def _load():
         'sbc_host_drive': (I, [P, ctypes.POINTER(HostCallbacks)]),
         'sbc_host_step': (I, [P]),
         'sbc_host_message': (ctypes.c_char_p, [P]),
-        'sbc_host_progress': (None, [P, pd]),
+        'sbc_host_progress_line': (None, [P, ctypes.c_long, D, ctypes.c_char_p, ctypes.c_size_t]),
         'sbc_host_command_x': (pd, [P]),
         'sbc_host_command_theta': (pd, [P]),
         'sbc_host_command_free': (ctypes.POINTER(ctypes.c_ubyte), [P]),

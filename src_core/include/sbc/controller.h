@@ -123,6 +123,17 @@ size_t sbc_controller_state_size(const sbc_controller *c);
 void sbc_controller_save(const sbc_controller *c, double *out);
 sbc_status sbc_controller_load(sbc_controller *c, const double *in, size_t n, sbc_error *err);
 
+/* Seconds of wall time between two progress lines of a long increment, in
+ * every host. */
+#define SBC_PROGRESS_EVERY 10.0
+
+/* The progress line of the increment under way (no newline): "increment 3:
+ * servo iteration 120, residuals force 1.234e-02 moment 0.000e+00
+ * deformation 2.1e-15, step 45000, elapsed 30 s"; step: the host's steps so
+ * far, elapsed: seconds since the run started. Every host prints it with its
+ * own prefix. */
+void sbc_controller_progress_line(const sbc_controller *c, long step, double elapsed, char *out, size_t cap);
+
 /* Macroscopic F imposed at increment i: I + (i / i_tot) (F_final - I). */
 void sbc_controller_target_F(const sbc_controller *c, int increment, double F[9]);
 

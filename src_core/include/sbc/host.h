@@ -104,10 +104,9 @@ int sbc_host_drive(sbc_host *h, const sbc_host_callbacks *cb);
 int sbc_host_step(sbc_host *h);
 const char *sbc_host_message(const sbc_host *h);
 
-/* Progress within the increment under way (sbc_controller_progress), for the
- * progress lines of long increments: out [4] = servo iteration, residual
- * norms of force, moment and deformation. */
-void sbc_host_progress(const sbc_host *h, double *out);
+/* The progress line of a long increment (sbc_controller_progress_line): step
+ * the host's steps so far, elapsed the seconds since its run started. */
+void sbc_host_progress_line(const sbc_host *h, long step, double elapsed, char *out, size_t cap);
 
 /* The commands in force: target positions [3Q] (m), rotations [Q] (rad),
  * free-rotation flags [Q]; valid until the next sbc_host_step. */

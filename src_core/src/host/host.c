@@ -351,11 +351,9 @@ int sbc_host_step(sbc_host *h)
 
 const char *sbc_host_message(const sbc_host *h) { return h->err.message; }
 
-void sbc_host_progress(const sbc_host *h, double *out)
+void sbc_host_progress_line(const sbc_host *h, long step, double elapsed, char *out, size_t cap)
 {
-    int iteration;
-    sbc_controller_progress(h->ctl, &iteration, &out[1], &out[2], &out[3]);
-    out[0] = iteration;
+    sbc_controller_progress_line(h->ctl, step, elapsed, out, cap);
 }
 
 const double *sbc_host_command_x(const sbc_host *h) { return sbc_controller_commands(h->ctl).x; }

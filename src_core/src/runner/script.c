@@ -179,24 +179,21 @@ static double seconds_between(const struct timespec *a, const struct timespec *b
     return (double)(b->tv_sec - a->tv_sec) + 1e-9 * (double)(b->tv_nsec - a->tv_nsec);
 }
 
-/* A progress line when an increment has run for SBC_PROGRESS_EVERY seconds
+/* A progress line when an increment has run SBC_PROGRESS_EVERY seconds
  * since the last line, so that a long increment is not silent. */
-#define SBC_PROGRESS_EVERY 10.0
 static void report_progress(const script *s, run_state *r)
 {
     struct timespec now;
-    int iteration;
-    double rf, rm, rd;
+    char line[256];
     if (!s->log)
         return;
     timespec_get(&now, TIME_UTC);
     if (seconds_between(&r->reported, &now) < SBC_PROGRESS_EVERY)
         return;
     r->reported = now;
-    sbc_controller_progress(r->ctl, &iteration, &rf, &rm, &rd);
-    fprintf(s->log, "  increment %d: servo iteration %d, residuals force %.3e moment %.3e deformation %.3e, "
-            "step %ld, elapsed %.0f s\n", r->increment_now, iteration, rf, rm, rd,
-            sbc_engine_get_view(r->engine).step, seconds_between(&r->start, &now));
+    sbc_controller_progress_line(r->ctl, sbc_engine_get_view(r->engine).step, seconds_between(&r->start, &now), line,
+                                 sizeof line);
+    fprintf(s->log, "  %s\n", line);
     fflush(s->log);
 }
 

@@ -342,14 +342,11 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
         if (s->log && steps % 1000 == 0) {
             struct timespec now;
             timespec_get(&now, TIME_UTC);
-            if (seconds(&r.reported, &now) >= 10.0) {
-                int it;
-                double rf, rm, rd;
+            if (seconds(&r.reported, &now) >= SBC_PROGRESS_EVERY) {
+                char line[256];
                 r.reported = now;
-                sbc_controller_progress(p.ctl, &it, &rf, &rm, &rd);
-                fprintf(s->log, "  increment %d: servo iteration %d, residuals force %.3e moment %.3e deformation "
-                        "%.3e, step %ld, elapsed %.0f s\n", sbc_controller_increment(p.ctl), it, rf, rm, rd, steps,
-                        seconds(&r.start, &now));
+                sbc_controller_progress_line(p.ctl, steps, seconds(&r.start, &now), line, sizeof line);
+                fprintf(s->log, "  %s\n", line);
                 fflush(s->log);
             }
         }

@@ -265,6 +265,13 @@ void sbc_controller_progress(const sbc_controller *c, int *iteration, double *r_
     *r_deformation = c->norms.r_deformation;
 }
 
+void sbc_controller_progress_line(const sbc_controller *c, long step, double elapsed, char *out, size_t cap)
+{
+    snprintf(out, cap, "increment %d: servo iteration %d, residuals force %.3e moment %.3e deformation %.3e, step %ld, "
+             "elapsed %.0f s", c->increment, c->iteration, c->norms.r_force, c->norms.r_moment, c->norms.r_deformation,
+             step, elapsed);
+}
+
 void sbc_controller_target_F(const sbc_controller *c, int increment, double F[9])
 {
     sbc_settings_target_F(&c->s, increment, F);
