@@ -70,6 +70,10 @@ typedef struct sbc_driver_callbacks {
        mean contact force): this rank's, once the contact sums [4] of all
        ranks are known; it replaces interior's out[1]. NULL: interior's stands */
     double (*net_force)(void *user_data, const double *contacts);
+    /* the user_data of row alone, for a host whose particle callbacks come
+       from an engine (sbc_engine_callbacks, sbc_spheres_callbacks) while its
+       rows are its own; NULL: user_data */
+    void *row_data;
 } sbc_driver_callbacks;
 
 typedef struct sbc_driver sbc_driver;

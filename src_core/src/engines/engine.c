@@ -1,5 +1,6 @@
 /* Embedded 2D disc engine (paper Sect. 2.2). */
 #include "sbc/embedded/engine.h"
+#include "sbc/confine.h"
 #include "sbc/damping.h"
 #include "sbc/seal.h"
 
@@ -7,6 +8,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -42,6 +44,7 @@ struct sbc_engine {
     long contact_count, step;
     /* frame-ordered snapshot buffers */
     double *snap_x, *snap_theta, *snap_f, *snap_tq;
+    sbc_snapshot snap;       /* the driver's: this step's measures (sbc_engine_callbacks) */
 };
 
 sbc_engine_def sbc_engine_def_default(void)
@@ -665,4 +668,65 @@ double sbc_engine_critical_dt(const sbc_engine *e)
     if (e->bonded && e->bond_law.kr > 0.0 && 2.0 * sqrt(imin / (2.0 * e->bond_law.kr)) < dtc)
         dtc = 2.0 * sqrt(imin / (2.0 * e->bond_law.kr));
     return dtc;
+}
+
+/* ---- the driver's callbacks (sbc_engine_callbacks) ---- */
+
+static void cb_fire_sums(void *user_data, double *sums) { sbc_engine_fire_sums(user_data, sums); }
+
+static void cb_interior(void *user_data, const sbc_fire_mix *mix, int again, double out[2])
+{
+    sbc_engine *e = user_data;
+    (void)again; /* the engine never revisits a step */
+    sbc_engine_integrate(e, mix);
+    sbc_engine_snapshot(e, &e->snap);
+    out[0] = e->snap.kinetic_energy;
+    out[1] = e->snap.unbalanced_max;
+}
+
+static void cb_contacts(void *user_data, double out[4])
+{
+    const sbc_snapshot *s = &((const sbc_engine *)user_data)->snap;
+    out[0] = s->potential_energy;
+    out[1] = s->overlap_sum;
+    out[2] = (double)s->contact_count;
+    out[3] = s->contact_force_sum;
+}
+
+static void cb_frame(void *user_data, double *buf)
+{
+    const sbc_engine *e = user_data;
+    sbc_driver_frame_from_snapshot(&e->snap, e->frame->dim, e->frame->n, buf);
+}
+
+static int cb_confined(void *user_data, const double *fx, int increment, char *message, size_t cap)
+{
+    const sbc_engine *e = user_data;
+    sbc_confine c;
+    sbc_error err;
+    sbc_status st = SBC_OK;
+    int k;
+    sbc_confine_prepare(&c, e->frame, fx);
+    for (k = 0; k < e->n && st == SBC_OK; ++k)
+        if (!isfinite(e->x[2 * k]) || !isfinite(e->x[2 * k + 1]))
+            st = sbc_confine_check(&c, increment, k, &e->x[2 * k], &e->v[2 * k], &err);
+    for (k = 0; k < e->n && st == SBC_OK; ++k)
+        if (!e->kinematic[k])
+            st = sbc_confine_check(&c, increment, k, &e->x[2 * k], &e->v[2 * k], &err);
+    if (st != SBC_OK)
+        snprintf(message, cap, "%s", err.message);
+    return st;
+}
+
+sbc_driver_callbacks sbc_engine_callbacks(sbc_engine *e)
+{
+    sbc_driver_callbacks cb;
+    memset(&cb, 0, sizeof cb);
+    cb.user_data = e;
+    cb.fire_sums = cb_fire_sums;
+    cb.interior = cb_interior;
+    cb.contacts = cb_contacts;
+    cb.frame = cb_frame;
+    cb.confined = cb_confined;
+    return cb;
 }

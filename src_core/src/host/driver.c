@@ -167,7 +167,7 @@ sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err)
         char line[320], message[SBC_ERROR_LEN] = "";
         int status;
         sbc_result_line(row, d->s.bc, sbc_settings_total_increments(&d->s), line, sizeof line);
-        if ((status = d->cb.row(d->cb.user_data, row, line, message, sizeof message)) != SBC_OK) {
+        if ((status = d->cb.row(d->cb.row_data ? d->cb.row_data : d->cb.user_data, row, line, message, sizeof message)) != SBC_OK) {
             sbc_fail(err, (sbc_status)status, "%s", message);
             return SBC_EVENT_FAILED;
         }

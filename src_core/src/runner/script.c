@@ -119,26 +119,6 @@ static sbc_status cmd_snapshots(int nw, char **w, int *every_out, char *prefix, 
     return SBC_OK;
 }
 
-/* confine.h on every particle the frame does not move (their own index is
- * their id); a non-finite position anywhere is named first */
-static sbc_status check_confined(const sbc_frame *frame, const sbc_engine *engine, double *fx, int increment,
-                                 sbc_error *err)
-{
-    sbc_engine_view w = sbc_engine_get_view(engine);
-    sbc_confine c;
-    int k;
-    sbc_status st;
-    sbc_frame_centres(frame, w.x, fx);
-    sbc_confine_prepare(&c, frame, fx);
-    for (k = 0; k < w.n; ++k)
-        if (!isfinite(w.x[2 * k]) || !isfinite(w.x[2 * k + 1]))
-            return sbc_confine_check(&c, increment, k, &w.x[2 * k], &w.v[2 * k], err);
-    for (k = 0; k < w.n; ++k)
-        if (!w.kinematic[k] && (st = sbc_confine_check(&c, increment, k, &w.x[2 * k], &w.v[2 * k], err)) != SBC_OK)
-            return st;
-    return SBC_OK;
-}
-
 /* the snapshots due at a converged increment */
 static sbc_status write_snapshots(const script *s, const sbc_engine *engine, const sbc_frame *frame, int increment,
                                   int last, sbc_error *err)
@@ -162,7 +142,6 @@ typedef struct run_state {
     sbc_engine *engine;
     sbc_controller *ctl;
     double *mass;
-    double *fx; /* [3Q] the frame's centres for confine.h, m */
     sbc_csv csv;
     sbc_result *rows;
     int nrows, cap;
@@ -171,7 +150,6 @@ typedef struct run_state {
     struct timespec start, reported; /* the run's start, the last progress line */
     sbc_driver *driver; /* the per-step protocol (driver.h) over the engine */
     const script *s;
-    sbc_snapshot snap;  /* the engine's measures of this step */
 } run_state;
 
 static double seconds_between(const struct timespec *a, const struct timespec *b)
@@ -204,7 +182,6 @@ static void run_free(run_state *r)
     sbc_engine_free(r->engine);
     sbc_controller_free(r->ctl);
     free(r->mass);
-    free(r->fx);
     free(r->rows);
     sbc_csv_close(&r->csv);
 }
@@ -277,49 +254,6 @@ static sbc_status expect_touching(const sbc_packing *p, sbc_error *err)
         return sbc_fail(err, SBC_ERR_GEOMETRY,
                         "run: the packing has no contacts (no two particles touch; check radius and spacing)");
     return SBC_OK;
-}
-
-/* The engine as a host of the driver (driver.h): one process, its own
- * measures of the step. */
-static void engine_fire_sums(void *user_data, double *sums)
-{
-    sbc_engine_fire_sums(((run_state *)user_data)->engine, sums);
-}
-
-static void engine_interior(void *user_data, const sbc_fire_mix *mix, int again, double out[2])
-{
-    run_state *r = user_data;
-    (void)again;
-    sbc_engine_integrate(r->engine, mix);
-    sbc_engine_snapshot(r->engine, &r->snap);
-    out[0] = r->snap.kinetic_energy;
-    out[1] = r->snap.unbalanced_max;
-}
-
-static void engine_contacts(void *user_data, double out[4])
-{
-    const sbc_snapshot *s = &((run_state *)user_data)->snap;
-    out[0] = s->potential_energy;
-    out[1] = s->overlap_sum;
-    out[2] = (double)s->contact_count;
-    out[3] = s->contact_force_sum;
-}
-
-static void engine_frame(void *user_data, double *buf)
-{
-    const run_state *r = user_data;
-    sbc_driver_frame_from_snapshot(&r->snap, r->frame.dim, r->frame.n, buf);
-}
-
-static int engine_confined(void *user_data, const double *fx, int increment, char *message, size_t cap)
-{
-    run_state *r = user_data;
-    sbc_error err;
-    (void)fx; /* the same centres, gathered from the engine */
-    if (check_confined(&r->frame, r->engine, r->fx, increment, &err) == SBC_OK)
-        return SBC_OK;
-    snprintf(message, cap, "%s", err.message);
-    return err.status;
 }
 
 /* a converged increment: kept for the plot, the results file, the snapshots
@@ -400,8 +334,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         return err->status;
     }
     r.mass = malloc(sizeof(double) * (size_t)r.frame.n);
-    r.fx = malloc(sizeof(double) * 3 * (size_t)r.frame.n);
-    if (!r.mass || !r.fx) {
+    if (!r.mass) {
         run_free(&r);
         return sbc_fail(err, SBC_ERR_NOMEM, "run: out of memory");
     }
@@ -446,15 +379,9 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         fprintf(s->log, "servo_bc: %d cohesive bonds between the pairs touching at the start\n",
                 sbc_engine_get_view(r.engine).bonds_initial);
     {
-        sbc_driver_callbacks cb = {0};
-        cb.user_data = &r;
-        cb.fire_sums = engine_fire_sums;
-        cb.interior = engine_interior;
-        cb.contacts = engine_contacts;
-        cb.frame = engine_frame;
-        cb.reduce = NULL;
-        cb.confined = engine_confined;
+        sbc_driver_callbacks cb = sbc_engine_callbacks(r.engine);
         cb.row = engine_row;
+        cb.row_data = &r;
         r.s = s;
         if (!(r.driver = sbc_driver_create(r.ctl, &s->settings, &cb, err))) {
             run_free(&r);

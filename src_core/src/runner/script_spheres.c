@@ -131,47 +131,16 @@ sbc_status sbc_script_write_spheres(script *s, const char *format, const char *p
     return st;
 }
 
-/* the run's side of the driver: the engine's callbacks (spheres.h) and the
-   row; the driver's user_data is the run, which forwards to the engine */
+/* the run's side of the driver: the row (the driver's row_data); the
+   particles' callbacks are the engine's (spheres.h) */
 typedef struct sphere_run {
     const script *s;
-    sbc_driver_callbacks engine;
     const sbc_spheres *spheres;
     const sbc_frame *frame;
     sbc_csv csv;
     int nrows;
     struct timespec start, reported;
 } sphere_run;
-
-static void run_fire_sums(void *u, double *sums)
-{
-    const sphere_run *r = u;
-    r->engine.fire_sums(r->engine.user_data, sums);
-}
-
-static void run_interior(void *u, const sbc_fire_mix *mix, int again, double out[2])
-{
-    const sphere_run *r = u;
-    r->engine.interior(r->engine.user_data, mix, again, out);
-}
-
-static void run_contacts(void *u, double out[4])
-{
-    const sphere_run *r = u;
-    r->engine.contacts(r->engine.user_data, out);
-}
-
-static void run_frame(void *u, double *buf)
-{
-    const sphere_run *r = u;
-    r->engine.frame(r->engine.user_data, buf);
-}
-
-static int run_confined(void *u, const double *fx, int increment, char *message, size_t cap)
-{
-    const sphere_run *r = u;
-    return r->engine.confined(r->engine.user_data, fx, increment, message, cap);
-}
 
 /* a converged increment: its row in the results file and the log line */
 static int sphere_row(void *user_data, const sbc_result *row, const char *line, char *message, size_t cap)
@@ -307,17 +276,11 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
         fprintf(s->log, "servo_bc %s (servo-bc %s): %d spheres, frame of %d, %d increments, dt = %g s (critical %g s)\n",
                 sbc_bc_name(s->settings.bc), sbc_version(), s->n3, p.frame.n,
                 sbc_settings_total_increments(&s->settings), dt, dtc);
-    r.engine = sbc_spheres_callbacks(p.engine);
     r.spheres = p.engine;
     r.frame = &p.frame;
-    memset(&cb, 0, sizeof cb);
-    cb.user_data = &r;
-    cb.fire_sums = run_fire_sums;
-    cb.interior = run_interior;
-    cb.contacts = run_contacts;
-    cb.frame = run_frame;
-    cb.confined = run_confined;
+    cb = sbc_spheres_callbacks(p.engine);
     cb.row = sphere_row;
+    cb.row_data = &r;
     if (!(p.driver = sbc_driver_create(p.ctl, &s->settings, &cb, err))) {
         parts_free(&p, &r);
         return err->status;

@@ -15,6 +15,7 @@
 
 #include "sbc/contact.h"
 #include "sbc/controller.h"
+#include "sbc/driver.h"
 #include "sbc/fire_damping.h"
 #include "sbc/frame.h"
 
@@ -72,6 +73,13 @@ void sbc_engine_integrate(sbc_engine *e, const sbc_fire_mix *mix);
  * reactions before the frame moves, Ek after the interior moved (arrays
  * owned by the engine). */
 void sbc_engine_snapshot(sbc_engine *e, sbc_snapshot *snap);
+
+/* The engine as a host of the driver (driver.h): fire_sums, interior (which
+ * integrates and takes the step's snapshot), contacts, frame and confined
+ * (confine.h on every particle the frame does not move; a non-finite
+ * position anywhere is named first), with the engine as user_data; row is
+ * left to the caller (row_data). After sbc_engine_set_frame. */
+sbc_driver_callbacks sbc_engine_callbacks(sbc_engine *e);
 
 /* Moves the frame particles to the commanded targets within the step just
  * taken (cmd NULL: the frame stays where it is). */

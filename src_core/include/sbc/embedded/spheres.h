@@ -62,7 +62,7 @@ sbc_status sbc_spheres_forces(sbc_spheres *e, sbc_error *err);
 
 /* The engine as a host of the driver: fire_sums, interior (which integrates
  * the interior), contacts, frame and confined, with the engine as user_data;
- * row is left to the caller. */
+ * row is left to the caller (row_data). */
 sbc_driver_callbacks sbc_spheres_callbacks(sbc_spheres *e);
 
 /* Frame particles to the commanded targets within the step just taken
