@@ -62,17 +62,6 @@ void sbc_driver_free(sbc_driver *d)
 
 sbc_fire_state *sbc_driver_fire(sbc_driver *d) { return &d->fire; }
 
-void sbc_driver_frame_from_snapshot(const sbc_snapshot *s, int dim, int Q, double *buf)
-{
-    const size_t q = (size_t)Q, r = (size_t)SBC_ROTATIONS(dim);
-    memcpy(buf, s->x, sizeof(double) * 3 * q);
-    memcpy(buf + 3 * q, s->force, sizeof(double) * 3 * q);
-    memcpy(buf + SBC_DRIVER_TORQUE(dim, Q), s->torque, sizeof(double) * r * q);
-    memcpy(buf + SBC_DRIVER_THETA(dim, Q), s->theta, sizeof(double) * r * q);
-    buf[SBC_DRIVER_SUMS(dim, Q)] = s->rotation_sum;
-    buf[SBC_DRIVER_SUMS(dim, Q) + 1] = (double)s->particle_count;
-}
-
 static void reduce(const sbc_driver *d, const double *in, double *out, int n, sbc_reduce_op op)
 {
     if (d->cb.reduce)
