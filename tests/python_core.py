@@ -54,5 +54,29 @@ check(bool(h) and lib.sbc_host_frame_size(h) == 16, 'a host handle on the 5 x 5 
       % (lib.sbc_host_frame_size(h) if h else -1))
 if h:
     lib.sbc_host_free(h)
+
+# the material point (material_point.h) through the module: (D) on the prestressed 5 x 5 lattice (radius 1.01 mm,
+# frictionless), P11 = -N kn (2R - d F11) / ((N - 1) d) and C1111 = N kn / (N - 1); a state saved as bytes and
+# loaded into a new point continues bit for bit
+lattice = dict(x=xy, r=[1.01e-3] * n, kn=1e4, density=2e3, dt=2e-6)
+point = core.MaterialPoint(words='D accuracy tight', **lattice)
+ok, P, ratio = point.integrate([0.999, 0, 0, 0, 0.998, 0, 0, 0, 0])
+want = -5 * 1e4 * (2.02e-3 - 2e-3 * 0.999) / (4 * 2e-3)
+check(ok and ratio == 1.0 and abs(P[0] - want) <= 1e-6 * abs(want), 'material point (D): P11 %.9g N/m, closed form %.9g'
+      % (P[0], want))
+point.commit()
+C = point.tangent(1e-4)
+check(abs(C[0] - 12500) <= 1e-4 * 12500, 'material point: perturbation C1111 %.6g, closed form 12500' % C[0])
+other = core.MaterialPoint(words='D accuracy tight', **lattice)
+other.load(point.state())
+F2 = [0.998, 0.0005, 0, 0, 0.999, 0, 0, 0, 0]
+a, b = point.integrate(F2), other.integrate(F2)
+check(a[0] and a == b, 'material point: the committed state as %d bytes, loaded into another point, continues bit for bit'
+      % len(point.state()))
+try:
+    core.MaterialPoint(words='D F 0.99 0 0 1', **lattice)
+    check(False, 'material point: F in the words refused')
+except core.ServoBCError as e:
+    check("keyword 'F'" in str(e), 'material point: F in the words refused: %s' % e)
 print('%d passed, %d failed' % (passed, failed))
 sys.exit(failed > 0)

@@ -14,7 +14,8 @@ The library is found at $SERVO_BC_LIB, beside this file, or in ../build/.
 import ctypes
 import os
 
-__all__ = ['ServoBCError', 'library', 'version', 'columns', 'doubles', 'frame_size', 'frame_offsets', 'HostCallbacks', 'DAMPING_NONE',
+__all__ = ['ServoBCError', 'library', 'version', 'columns', 'doubles', 'frame_size', 'frame_offsets', 'HostCallbacks',
+           'MaterialPoint', 'DAMPING_NONE',
            'DAMPING_LOCAL', 'DAMPING_FIRE', 'FIRE_SUMS', 'RELAXING', 'CORRECTED', 'INCREMENT', 'FINISHED', 'FAILED']
 
 DAMPING_NONE, DAMPING_LOCAL, DAMPING_FIRE = 0, 1, 2  # sbc_damping (settings.h)
@@ -50,6 +51,13 @@ def frame_offsets(q, dim=2):
 def frame_size(q, dim=2):
     """SBC_DRIVER_FRAME_SIZE (driver.h): the doubles of the frame callback's buffer for q frame particles."""
     return frame_offsets(q, dim)[2] + 2
+
+
+class PointDef(ctypes.Structure):
+    """sbc_point_def (material_point.h)."""
+    _fields_ = [('dim', ctypes.c_int), ('n', ctypes.c_int), ('x', _pd), ('r', _pd), ('words', ctypes.c_char_p),
+                ('kn', ctypes.c_double), ('ks', ctypes.c_double), ('mu', ctypes.c_double),
+                ('density', ctypes.c_double), ('dt', ctypes.c_double)]
 
 
 class ServoBCError(RuntimeError):
@@ -102,6 +110,15 @@ def _load():
         'sbc_cohesive_host_loads': (I, [P, pd, pd, pd, D, pd]),
         'sbc_cohesive_host_message': (ctypes.c_char_p, [P]),
         'sbc_cohesive_host_sums': (None, [P, pd]),
+        'sbc_point_create': (P, [ctypes.POINTER(PointDef), P]),
+        'sbc_point_free': (None, [P]),
+        'sbc_point_integrate': (I, [P, pd, pd, pd, P]),
+        'sbc_point_commit': (None, [P]),
+        'sbc_point_revert': (None, [P]),
+        'sbc_point_state_size': (ctypes.c_size_t, [P]),
+        'sbc_point_save': (None, [P, pd]),
+        'sbc_point_load': (I, [P, pd, ctypes.c_size_t, P]),
+        'sbc_point_tangent_perturbation': (I, [P, D, pd, P]),
         'sbc_host_sealed': (I, [P]),
         'sbc_host_seal': (I, [P, pd, pd, pd]),
     }
@@ -142,3 +159,59 @@ def free(name, handle):
 def version():
     """The version of the servo_bc core (CHANGELOG.md)."""
     return library().sbc_version().decode()
+
+
+class _Error(ctypes.Structure):
+    """sbc_error (status.h): the status and the message."""
+    _fields_ = [('status', ctypes.c_int), ('message', ctypes.c_char * 512)]   # SBC_ERROR_LEN
+
+
+class MaterialPoint:
+    """The aggregate as a material point (material_point.h, docs/fe2.md): a 2D packing under (D), (P) or (T)
+    on the embedded engine. integrate(F) -> (converged, P, step_ratio) from the committed state; commit(),
+    revert(); state() -> bytes of the committed state, load(bytes) in a point made alike; tangent(h) -> C
+    (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation. F and P: 9 values, row-major 3 x 3
+    slots (the 2 x 2 block in 2D)."""
+
+    def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6):
+        lib = library()
+        self._x, self._r = doubles(x), doubles(r)
+        self._words = words.encode()
+        d = PointDef(2, len(r), self._x, self._r, self._words, kn, ks, mu, density, dt)
+        err = _Error()
+        self._p = lib.sbc_point_create(ctypes.byref(d), ctypes.byref(err))
+        if not self._p:
+            raise ServoBCError(err.message.decode())
+
+    def __del__(self):
+        free('sbc_point_free', getattr(self, '_p', None))
+
+    def integrate(self, F):
+        P, ratio, err = (ctypes.c_double * 9)(), ctypes.c_double(), _Error()
+        status = library().sbc_point_integrate(self._p, doubles(F), P, ctypes.byref(ratio), ctypes.byref(err))
+        self.message = err.message.decode() if status else ''
+        return status == 0, list(P), ratio.value
+
+    def commit(self):
+        library().sbc_point_commit(self._p)
+
+    def revert(self):
+        library().sbc_point_revert(self._p)
+
+    def state(self):
+        n = library().sbc_point_state_size(self._p)
+        out = (ctypes.c_double * n)()
+        library().sbc_point_save(self._p, out)
+        return bytes(out)
+
+    def load(self, data):
+        n = len(data) // ctypes.sizeof(ctypes.c_double)
+        err = _Error()
+        if library().sbc_point_load(self._p, (ctypes.c_double * n).from_buffer_copy(data), n, ctypes.byref(err)):
+            raise ServoBCError(err.message.decode())
+
+    def tangent(self, h):
+        C, err = (ctypes.c_double * 81)(), _Error()
+        if library().sbc_point_tangent_perturbation(self._p, h, C, ctypes.byref(err)):
+            raise ServoBCError(err.message.decode())
+        return list(C)

@@ -141,6 +141,14 @@ void sbc_controller_target_F(const sbc_controller *c, int increment, double F[9]
  * whose X, A and V a mixed BC renews after its stress stage (Sect. 5.1). */
 const sbc_frame *sbc_controller_frame(const sbc_controller *c);
 
+/* A material point's next increment (material_point.h): once the path is
+ * finished (the last increment accepted), the increment that starts now
+ * aims at F (3 x 3 slots; the first dim x dim block is read) from the state
+ * reached, as the path's last increment again: (D), (P) and (T), not mixed.
+ * Fails, changing nothing, while an increment is under way or when det F
+ * <= 0. */
+sbc_status sbc_controller_aim(sbc_controller *c, const double F[9], sbc_error *err);
+
 /* Increment now being relaxed, 0 .. i_tot. */
 int sbc_controller_increment(const sbc_controller *c);
 

@@ -114,6 +114,10 @@ double sbc_settings_preset_accuracy(const char *name);
  *   keyword 'relax': tolE value 'abc' is not a number (expected a real > 0) */
 sbc_status sbc_settings_parse(sbc_settings *s, int nwords, const char *const *words, sbc_error *err);
 
+/* sbc_settings_parse on the words of one string ("P accuracy balanced F 1
+ * 0.01 0 1"), split at blanks. */
+sbc_status sbc_settings_parse_words(sbc_settings *s, const char *words, sbc_error *err);
+
 /* Holds the words to the dimension dim of the host's packing: words
  * without a deformation (no F, or F 1 0 0 1) take dim; otherwise F's values
  * must be dim x dim (4 or 9), and mixed conditions and stresses are 2D. On

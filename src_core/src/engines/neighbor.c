@@ -1,5 +1,6 @@
 /* Cell-binned Verlet pair list (O(N) build), history carried by merge. */
 #include "neighbor.h"
+#include "sbc/saved.h"
 
 #include <float.h>
 #include <math.h>
@@ -255,4 +256,70 @@ int sbc_pairs_bond_touching(sbc_pairs *p, const double *x, const double *r, doub
         bonds += p->bond[k];
     }
     return bonds;
+}
+
+size_t sbc_pairs_state_size(const sbc_pairs *p)
+{
+    const size_t per = 2 + (p->fs ? 1 : 0) + (p->bond ? 2 : 0);
+    return 1 + (size_t)p->n + 1 + per * (size_t)p->count + 2 * (size_t)p->n;
+}
+
+double *sbc_pairs_save(const sbc_pairs *p, double *out)
+{
+    int k;
+    *out++ = p->count;
+    for (k = 0; k <= p->n; ++k)
+        *out++ = p->start[k];
+    for (k = 0; k < p->count; ++k) {
+        *out++ = p->i[k];
+        *out++ = p->j[k];
+        if (p->fs)
+            *out++ = p->fs[k];
+        if (p->bond) {
+            *out++ = p->m[k];
+            *out++ = p->bond[k];
+        }
+    }
+    for (k = 0; k < 2 * p->n; ++k)
+        *out++ = p->x_build[k];
+    return out;
+}
+
+sbc_status sbc_pairs_load(sbc_pairs *p, sbc_saved *s)
+{
+    const long most = (long)p->n * (long)(p->n > 1 ? p->n - 1 : 1) / 2;
+    const int count = (int)sbc_saved_int(s, "pair count", 0, most);
+    int k;
+    if (s->st != SBC_OK)
+        return s->st;
+    if (count > p->capacity) {
+        new_list q = {p->i, p->j, p->start, p->fs, p->m, p->bond};
+        if (!grow(p, count, &q))
+            return sbc_fail(s->err, SBC_ERR_NOMEM, "neighbour list: out of memory for %d pairs", count);
+        p->i = q.i;
+        p->j = q.j;
+        p->fs = q.fs;
+        p->m = q.m;
+        p->bond = q.bond;
+    }
+    for (k = 0; k <= p->n; ++k)
+        p->start[k] = (int)sbc_saved_int(s, "pair list start", k ? p->start[k - 1] : 0, k < p->n ? count : count);
+    if (s->st == SBC_OK && p->start[p->n] != count)
+        return sbc_fail(s->err, SBC_ERR_INPUT, "%s: the pair list's starts end at %d, not at its %d pairs", s->what,
+                        p->start[p->n], count);
+    for (k = 0; k < count && s->st == SBC_OK; ++k) {
+        p->i[k] = (int)sbc_saved_int(s, "pair particle i", 0, p->n - 1);
+        p->j[k] = (int)sbc_saved_int(s, "pair particle j", p->i[k] + 1, p->n - 1);
+        if (p->fs)
+            p->fs[k] = sbc_saved_real(s, "pair tangential force");
+        if (p->bond) {
+            p->m[k] = sbc_saved_real(s, "pair bond moment");
+            p->bond[k] = (unsigned char)sbc_saved_int(s, "pair bond flag", 0, 1);
+        }
+    }
+    for (k = 0; k < 2 * p->n; ++k)
+        p->x_build[k] = sbc_saved_real(s, "pair list build position");
+    if (s->st == SBC_OK)
+        p->count = count;
+    return s->st;
 }

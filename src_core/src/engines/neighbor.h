@@ -5,6 +5,8 @@
 #ifndef SBC_NEIGHBOR_H
 #define SBC_NEIGHBOR_H
 
+#include <stddef.h>
+
 #include "sbc/status.h"
 
 typedef struct sbc_pairs {
@@ -34,5 +36,15 @@ sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, doubl
 /* Bonds every listed pair whose gap |x_j - x_i| - R_i - R_j is below gap (m);
  * returns the number of bonds. */
 int sbc_pairs_bond_touching(sbc_pairs *p, const double *x, const double *r, double gap);
+
+/* The list's state (pairs, their history and bonds, the positions of the
+ * last build) as doubles: sbc_pairs_state_size counts them, sbc_pairs_save
+ * writes them at out and returns the end, sbc_pairs_load reads them back
+ * from s into a list initialised for the same n, history and bonds (every
+ * value checked; the cell grid is scratch). */
+size_t sbc_pairs_state_size(const sbc_pairs *p);
+double *sbc_pairs_save(const sbc_pairs *p, double *out);
+struct sbc_saved;
+sbc_status sbc_pairs_load(sbc_pairs *p, struct sbc_saved *s);
 
 #endif

@@ -69,36 +69,16 @@ sbc_host *sbc_host_create(const char *words, int dim, int n, const double *x, co
 {
     sbc_host *h = calloc(1, sizeof *h);
     sbc_error err;
-    char *line, **w;
-    int nw, q;
+    int q;
     double *frame_mass;
     sbc_error_clear(&err);
     if (!h || !words) {
         sbc_fail(&err, SBC_ERR_NOMEM, "servo_bc: out of memory");
         return fail_create(h, &err, msg, cap);
     }
-    if (!(line = malloc(strlen(words) + 1))) {
-        sbc_fail(&err, SBC_ERR_NOMEM, "servo_bc: out of memory");
+    if (sbc_settings_parse_words(&h->settings, words, &err) != SBC_OK ||
+        sbc_settings_check_dimension(&h->settings, dim, &err) != SBC_OK)
         return fail_create(h, &err, msg, cap);
-    }
-    strcpy(line, words);
-    nw = sbc_split_words(line, NULL, 0);
-    strcpy(line, words);
-    w = malloc(sizeof *w * (size_t)(nw > 0 ? nw : 1));
-    if (!w) {
-        free(line);
-        sbc_fail(&err, SBC_ERR_NOMEM, "servo_bc: out of memory");
-        return fail_create(h, &err, msg, cap);
-    }
-    sbc_split_words(line, w, nw);
-    if (sbc_settings_parse(&h->settings, nw, (const char *const *)w, &err) != SBC_OK ||
-        sbc_settings_check_dimension(&h->settings, dim, &err) != SBC_OK) {
-        free(w);
-        free(line);
-        return fail_create(h, &err, msg, cap);
-    }
-    free(w);
-    free(line);
     if (n < 4) {
         sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: %d particles given; a frame needs at least 4", n);
         return fail_create(h, &err, msg, cap);

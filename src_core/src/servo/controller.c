@@ -265,6 +265,28 @@ void sbc_controller_progress(const sbc_controller *c, int *iteration, double *r_
     *r_deformation = c->norms.r_deformation;
 }
 
+sbc_status sbc_controller_aim(sbc_controller *c, const double F[9], sbc_error *err)
+{
+    const int dim = c->frame->dim;
+    double G[9] = {0};
+    int i, j;
+    if (c->s.bc == SBC_BC_MIXED)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc mixed: a material point takes (D), (P) or (T) in this version");
+    if (c->increment <= c->total)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: increment %d of %d is under way; a new F is aimed at between "
+                        "increments", sbc_bc_name(c->s.bc), c->increment, c->total);
+    for (i = 0; i < dim; ++i)
+        for (j = 0; j < dim; ++j)
+            G[SBC_IJ(i, j)] = F[SBC_IJ(i, j)];
+    if (!(sbc_tensor_det(dim, G) > 0.0) || !isfinite(sbc_tensor_norm(dim, G)))
+        return sbc_fail(err, SBC_ERR_GEOMETRY, "servo_bc %s: det F = %g is not positive and finite",
+                        sbc_bc_name(c->s.bc), sbc_tensor_det(dim, G));
+    c->increment = c->total;
+    memcpy(c->F_now, G, sizeof c->F_now);
+    start_increment(c);
+    return SBC_OK;
+}
+
 void sbc_controller_progress_line(const sbc_controller *c, long step, double elapsed, char *out, size_t cap)
 {
     snprintf(out, cap, "increment %d: servo iteration %d, residuals force %.3e moment %.3e deformation %.3e, step %ld, "

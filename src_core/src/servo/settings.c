@@ -4,6 +4,7 @@
 
 #include "settings_mixed.h"
 #include "sbc/keywords.h"
+#include "base/words.h"
 
 #include <errno.h>
 #include <math.h>
@@ -482,4 +483,26 @@ void sbc_settings_target_F(const sbc_settings *s, int increment, double F[9])
 int sbc_settings_total_increments(const sbc_settings *s)
 {
     return s->increments + (s->bc == SBC_BC_MIXED ? s->stress_increments : 0);
+}
+
+sbc_status sbc_settings_parse_words(sbc_settings *s, const char *words, sbc_error *err)
+{
+    const size_t len = words ? strlen(words) : 0;
+    char *line = malloc(len + 1), **w;
+    sbc_status st;
+    int nw;
+    if (!line)
+        return sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
+    memcpy(line, words ? words : "", len + 1);
+    nw = sbc_split_words(line, NULL, 0);
+    memcpy(line, words ? words : "", len + 1);
+    if (!(w = malloc(sizeof *w * (size_t)(nw > 0 ? nw : 1)))) {
+        free(line);
+        return sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
+    }
+    sbc_split_words(line, w, nw);
+    st = sbc_settings_parse(s, nw, (const char *const *)w, err);
+    free(w);
+    free(line);
+    return st;
 }

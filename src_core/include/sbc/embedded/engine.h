@@ -131,6 +131,16 @@ sbc_status sbc_engine_set_pair_records(sbc_engine *e, const double *rec, int cou
  * 2 sqrt(I_min / (2 kr)) for the bending spring, whichever is smaller. */
 double sbc_engine_critical_dt(const sbc_engine *e);
 
+/* The engine's state (positions, velocities, rotations, the last forces,
+ * the pair list with its contact and bond history, the step count) as
+ * doubles, for a material point's commit and revert and its saved bytes:
+ * sbc_engine_state_size counts them, sbc_engine_save writes them,
+ * sbc_engine_load reads them into an engine created from the same packing
+ * and definition (every value checked; the run then continues bit for bit). */
+size_t sbc_engine_state_size(const sbc_engine *e);
+void sbc_engine_save(const sbc_engine *e, double *out);
+sbc_status sbc_engine_load(sbc_engine *e, const double *in, size_t n, sbc_error *err);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,97 @@
+/* servo_bc: the servo-controlled aggregate as a material point of a finite
+ * element model (FE^2, docs/fe2.md).
+ *
+ * A point is a packing on the embedded engine under (D), (P) or (T). An FE
+ * code asks it for the first Piola stress P(F) of a deformation F (eq. 23 of
+ * the frame's forces, eq. 15 holding F), starting from its last committed
+ * state; it commits the state of a converged global iteration or reverts to
+ * the committed one, and stores the committed state per integration point as
+ * an array of doubles. The tangent C_ijkl = dP_ij / dF_kl by perturbation
+ * solves from the committed state. Like Box2D's b2WorldDef: a definition
+ * with its defaults, then create.
+ *
+ *   sbc_point_def d = sbc_point_def_default();
+ *   d.n = n; d.x = xy; d.r = r; d.words = "P accuracy balanced";
+ *   sbc_point *p = sbc_point_create(&d, &err);       relaxed at F = I, committed
+ *   if (sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED)
+ *       sbc_point_commit(p);                          else: cut the step by ratio
+ *
+ * 2D in this version (3D packings are refused by name). */
+#ifndef SBC_MATERIAL_POINT_H
+#define SBC_MATERIAL_POINT_H
+
+#include <stddef.h>
+
+#include "sbc/contact.h"
+#include "sbc/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct sbc_point_def {
+    int dim;            /* 2 */
+    int n;              /* particles */
+    const double *x;    /* [dim n] centres, m (the packing's frame is detected as the runner's is) */
+    const double *r;    /* [n] radii, m */
+    const char *words;  /* servo_bc words: the BC (D, P or T) and its keywords (accuracy, ...);
+                           F, increments, stress, file and mixed are the point's and refused */
+    sbc_frictional law; /* eq. 6 */
+    double density;     /* kg/m^2 in 2D */
+    double dt;          /* time step, s */
+} sbc_point_def;
+
+/* dim 2, no packing, words "D", the contact law's default, density 2e3
+ * kg/m^2, dt 1e-6 s (the embedded engine's defaults). */
+sbc_point_def sbc_point_def_default(void);
+
+typedef struct sbc_point sbc_point;
+
+/* Builds the engine, the frame and the controller, relaxes the packing at
+ * F = I and commits that state. NULL with the message in err. */
+sbc_point *sbc_point_create(const sbc_point_def *def, sbc_error *err);
+void sbc_point_free(sbc_point *p);
+
+typedef enum sbc_point_status {
+    SBC_POINT_CONVERGED = 0, /* the increment converged and its state is certified at the words' accuracy */
+    SBC_POINT_FAILED         /* the controller stopped (message in err); the point is back at its committed state */
+} sbc_point_status;
+
+/* One increment from the committed state to F (3 x 3 slots, the dim x dim
+ * block read): P (3 x 3 slots, N/m in 2D) and a suggested step ratio (1
+ * when converged; 0.5 when failed: retry with a step that much smaller).
+ * Never aborts. The point then holds the new state until commit or revert;
+ * a second integrate starts from the committed state again. */
+sbc_point_status sbc_point_integrate(sbc_point *p, const double F[9], double P[9], double *step_ratio,
+                                     sbc_error *err);
+
+/* The state of the last converged integrate becomes the committed one. */
+void sbc_point_commit(sbc_point *p);
+
+/* Back to the committed state. */
+void sbc_point_revert(sbc_point *p);
+
+/* The committed F and P (3 x 3 slots). */
+void sbc_point_committed(const sbc_point *p, double F[9], double P[9]);
+
+/* The committed state as doubles (engine, controller, FIRE, F, P), for an
+ * FE code to store per integration point: sbc_point_state_size counts them,
+ * sbc_point_save writes them, sbc_point_load makes them the committed and
+ * current state of a point created from the same definition (in another
+ * process too: it continues bit for bit). */
+size_t sbc_point_state_size(const sbc_point *p);
+void sbc_point_save(const sbc_point *p, double *out);
+sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *err);
+
+/* C_ijkl = dP_ij / dF_kl at the committed state by central differences of
+ * step h on each F_kl (2 dim^2 integrates from the committed state, which
+ * the point is back at afterwards); C [81], C[9 (3i + j) + 3k + l], the
+ * components beyond dim 0. Fails with the message of the first
+ * perturbation that does not converge. */
+sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], sbc_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,166 @@
+/* The material point (material_point.h) on a prestressed frictionless 5 x 5
+ * lattice (spacing d = 2 mm, radius R = 1.01 mm: every chain overlaps by
+ * 0.02 mm; kn 1e4 N/m):
+ * - under (D) at F = diag(a, b) every horizontal chain carries kn (2R - d a),
+ *   so P11 = -N kn (2R - d a) / ((N - 1) d) (eq. 23 over the right edge's N
+ *   particles, V = ((N - 1) d)^2), and the perturbation tangent has
+ *   C1111 = C2222 = N kn / (N - 1), C1212 = P22 / F22, C2121 = P11 / F11 and
+ *   every other component 0, to 1e-4 of C1111 (the issue's figure);
+ * - (P) gives the same P (the lattice is its own periodic image);
+ * - integrate, revert, integrate: the same P bit for bit; the committed state
+ *   saved as doubles and loaded into a new point continues bit for bit;
+ * - words that give the path (F, increments, mixed) and 3D are refused by name. */
+#include "check.h"
+#include "tests.h"
+
+#include "sbc/material_point.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define N 5
+#define D_SPACING 2e-3
+#define RADIUS 1.01e-3
+#define KN 1e4
+
+static double xy[2 * N * N], rad[N * N];
+
+static sbc_point_def lattice(const char *words)
+{
+    sbc_point_def d = sbc_point_def_default();
+    int i, j;
+    for (j = 0; j < N; ++j)
+        for (i = 0; i < N; ++i) {
+            xy[2 * (N * j + i)] = D_SPACING * i;
+            xy[2 * (N * j + i) + 1] = D_SPACING * j;
+            rad[N * j + i] = RADIUS;
+        }
+    d.n = N * N;
+    d.x = xy;
+    d.r = rad;
+    d.words = words;
+    d.law.kn = KN;
+    d.law.ks = 0.0;
+    d.law.mu = 0.0;
+    d.density = 2e3;
+    d.dt = 2e-6;
+    return d;
+}
+
+static double chain_stress(double stretch) { return -N * KN * (2.0 * RADIUS - D_SPACING * stretch) / ((N - 1) * D_SPACING); }
+
+static void diag(double a, double b, double F[9])
+{
+    memset(F, 0, sizeof(double) * 9);
+    F[0] = a;
+    F[4] = b;
+}
+
+static void tangent_closed_form(void)
+{
+    const sbc_point_def d = lattice("D accuracy tight");
+    sbc_error err;
+    sbc_point *p = sbc_point_create(&d, &err);
+    double F[9], P[9], C[81], ratio, worst = 0.0;
+    int ij, kl;
+    CHECK(p != NULL);
+    if (!p) {
+        printf("  point: %s\n", err.message);
+        return;
+    }
+    diag(0.999, 0.998, F);
+    CHECK(sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED && ratio == 1.0);
+    CHECK_REL(P[0], chain_stress(0.999), 1e-6);
+    CHECK_REL(P[4], chain_stress(0.998), 1e-6);
+    sbc_point_commit(p);
+    CHECK(sbc_point_tangent_perturbation(p, 1e-4, C, &err) == SBC_OK);
+    {
+        const double c1111 = N * KN / (N - 1);
+        double want[81] = {0};
+        want[9 * 0 + 0] = c1111;                 /* C1111 */
+        want[9 * 4 + 4] = c1111;                 /* C2222 */
+        want[9 * 1 + 1] = P[4] / F[4];           /* C1212 */
+        want[9 * 3 + 3] = P[0] / F[0];           /* C2121 */
+        for (ij = 0; ij < 81; ++ij)
+            worst = fmax(worst, fabs(C[ij] - want[ij]) / c1111);
+        CHECK(worst <= 1e-4);
+        printf("  point: (D) perturbation tangent of the 5 x 5 lattice: C1111 %.6g (closed form %.6g), C1212 %.6g "
+               "(%.6g), largest difference %.2e of C1111\n", C[0], c1111, C[10], want[10], worst);
+        for (kl = 0; kl < 81; ++kl)
+            if (fabs(C[kl] - want[kl]) > 1e-4 * c1111)
+                printf("  point: C[%d] = %g, expected %g\n", kl, C[kl], want[kl]);
+    }
+    sbc_point_free(p);
+}
+
+/* integrate, revert, integrate: the same bits; the state into a new point */
+static void commit_revert_restore(void)
+{
+    const sbc_point_def d = lattice("P accuracy balanced");
+    sbc_error err;
+    sbc_point *p = sbc_point_create(&d, &err), *q = NULL;
+    double F[9], P1[9], P2[9], P3[9], ratio, *state = NULL;
+    size_t n;
+    CHECK(p != NULL);
+    if (!p) {
+        printf("  point: %s\n", err.message);
+        return;
+    }
+    diag(0.999, 1.0, F);
+    CHECK(sbc_point_integrate(p, F, P1, &ratio, &err) == SBC_POINT_CONVERGED);
+    CHECK_REL(P1[0], chain_stress(0.999), 1e-4);
+    sbc_point_revert(p);
+    CHECK(sbc_point_integrate(p, F, P2, &ratio, &err) == SBC_POINT_CONVERGED);
+    CHECK(memcmp(P1, P2, sizeof P1) == 0);
+    CHECK(sbc_point_integrate(p, F, P2, &ratio, &err) == SBC_POINT_CONVERGED); /* from the committed state again */
+    CHECK(memcmp(P1, P2, sizeof P1) == 0);
+    sbc_point_commit(p);
+    n = sbc_point_state_size(p);
+    state = malloc(sizeof(double) * n);
+    q = sbc_point_create(&d, &err);
+    CHECK(state != NULL && q != NULL);
+    if (state && q) {
+        sbc_point_save(p, state);
+        CHECK(sbc_point_load(q, state, n, &err) == SBC_OK);
+        diag(0.998, 1.001, F);
+        F[1] = 0.0005;
+        CHECK(sbc_point_integrate(p, F, P2, &ratio, &err) == SBC_POINT_CONVERGED);
+        CHECK(sbc_point_integrate(q, F, P3, &ratio, &err) == SBC_POINT_CONVERGED);
+        CHECK(memcmp(P2, P3, sizeof P2) == 0);
+        state[0] = 99.0; /* another version's state */
+        CHECK(sbc_point_load(q, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "not one of this point"));
+        CHECK(sbc_point_load(q, state, n - 1, &err) == SBC_ERR_INPUT);
+    }
+    free(state);
+    sbc_point_free(q);
+    sbc_point_free(p);
+}
+
+static void refusals(void)
+{
+    static const struct {
+        const char *words, *expect;
+    } bad[] = {{"D F 0.99 0 0 1", "keyword 'F' is the FE code's"},
+               {"P increments 3", "mixed, stress, increments and file are the path's"},
+               {"mixed stress P22 -1 1", "the path's"},
+               {"Q", "Q"}};
+    sbc_point_def d = lattice("D");
+    sbc_error err;
+    size_t k;
+    for (k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        d.words = bad[k].words;
+        CHECK(sbc_point_create(&d, &err) == NULL && strstr(err.message, bad[k].expect));
+    }
+    d.words = "D";
+    d.dim = 3;
+    CHECK(sbc_point_create(&d, &err) == NULL && strstr(err.message, "takes 2D packings"));
+}
+
+void test_point(void)
+{
+    refusals();
+    tangent_closed_form();
+    commit_revert_restore();
+}
