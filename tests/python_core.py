@@ -67,6 +67,9 @@ check(ok and ratio == 1.0 and abs(P[0] - want) <= 1e-6 * abs(want), 'material po
 point.commit()
 C = point.tangent(1e-4)
 check(abs(C[0] - 12500) <= 1e-4 * 12500, 'material point: perturbation C1111 %.6g, closed form 12500' % C[0])
+A = point.tangent()
+check(abs(A[0] - 12500) <= 1e-8 * 12500 and abs(A[10] - P[4] / 0.998) <= 1e-8 * 12500,
+      'material point: affine C1111 %.9g, C1212 %.9g (closed forms 12500, %.9g)' % (A[0], A[10], P[4] / 0.998))
 other = core.MaterialPoint(words='D accuracy tight', **lattice)
 other.load(point.state())
 F2 = [0.998, 0.0005, 0, 0, 0.999, 0, 0, 0, 0]

@@ -5,7 +5,8 @@
  *   so P11 = -N kn (2R - d a) / ((N - 1) d) (eq. 23 over the right edge's N
  *   particles, V = ((N - 1) d)^2), and the perturbation tangent has
  *   C1111 = C2222 = N kn / (N - 1), C1212 = P22 / F22, C2121 = P11 / F11 and
- *   every other component 0, to 1e-4 of C1111 (the issue's figure);
+ *   every other component 0, to 1e-4 of C1111 (the issue's figure), and the
+ *   affine tangent (contact stiffnesses, every disc following F) to 1e-8;
  * - (P) gives the same P (the lattice is its own periodic image);
  * - integrate, revert, integrate: the same P bit for bit; the committed state
  *   saved as doubles and loaded into a new point continues bit for bit;
@@ -86,6 +87,15 @@ static void tangent_closed_form(void)
         for (ij = 0; ij < 81; ++ij)
             worst = fmax(worst, fabs(C[ij] - want[ij]) / c1111);
         CHECK(worst <= 1e-4);
+        {
+            double A[81], worst_affine = 0.0;
+            CHECK(sbc_point_tangent_affine(p, A, &err) == SBC_OK);
+            for (ij = 0; ij < 81; ++ij)
+                worst_affine = fmax(worst_affine, fabs(A[ij] - want[ij]) / c1111);
+            CHECK(worst_affine <= 1e-8);
+            printf("  point: (D) affine tangent of the lattice: largest difference %.2e of C1111 (the issue's 1e-8)\n",
+                   worst_affine);
+        }
         printf("  point: (D) perturbation tangent of the 5 x 5 lattice: C1111 %.6g (closed form %.6g), C1212 %.6g "
                "(%.6g), largest difference %.2e of C1111\n", C[0], c1111, C[10], want[10], worst);
         for (kl = 0; kl < 81; ++kl)

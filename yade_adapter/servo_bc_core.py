@@ -55,7 +55,7 @@ def frame_size(q, dim=2):
 
 class PointDef(ctypes.Structure):
     """sbc_point_def (material_point.h)."""
-    _fields_ = [('dim', ctypes.c_int), ('n', ctypes.c_int), ('x', _pd), ('r', _pd), ('words', ctypes.c_char_p),
+    _fields_ = [('dim', ctypes.c_int), ('n', ctypes.c_int), ('x', _pd), ('r', _pd), ('box', _pd), ('words', ctypes.c_char_p),
                 ('kn', ctypes.c_double), ('ks', ctypes.c_double), ('mu', ctypes.c_double),
                 ('density', ctypes.c_double), ('dt', ctypes.c_double)]
 
@@ -119,6 +119,7 @@ def _load():
         'sbc_point_save': (None, [P, pd]),
         'sbc_point_load': (I, [P, pd, ctypes.c_size_t, P]),
         'sbc_point_tangent_perturbation': (I, [P, D, pd, P]),
+        'sbc_point_tangent_affine': (I, [P, pd, P]),
         'sbc_host_sealed': (I, [P]),
         'sbc_host_seal': (I, [P, pd, pd, pd]),
     }
@@ -170,14 +171,15 @@ class MaterialPoint:
     """The aggregate as a material point (material_point.h, docs/fe2.md): a 2D packing under (D), (P) or (T)
     on the embedded engine. integrate(F) -> (converged, P, step_ratio) from the committed state; commit(),
     revert(); state() -> bytes of the committed state, load(bytes) in a point made alike; tangent(h) -> C
-    (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation. F and P: 9 values, row-major 3 x 3
+    (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation, tangent() the affine one. F and P: 9 values, row-major 3 x 3
     slots (the 2 x 2 block in 2D)."""
 
-    def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6):
+    def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6, box=None):
         lib = library()
         self._x, self._r = doubles(x), doubles(r)
+        self._box = doubles(box) if box else None
         self._words = words.encode()
-        d = PointDef(2, len(r), self._x, self._r, self._words, kn, ks, mu, density, dt)
+        d = PointDef(2, len(r), self._x, self._r, self._box, self._words, kn, ks, mu, density, dt)
         err = _Error()
         self._p = lib.sbc_point_create(ctypes.byref(d), ctypes.byref(err))
         if not self._p:
@@ -210,8 +212,12 @@ class MaterialPoint:
         if library().sbc_point_load(self._p, (ctypes.c_double * n).from_buffer_copy(data), n, ctypes.byref(err)):
             raise ServoBCError(err.message.decode())
 
-    def tangent(self, h):
+    def tangent(self, h=None):
+        """By perturbation of step h, or affine (Voigt) without h."""
         C, err = (ctypes.c_double * 81)(), _Error()
-        if library().sbc_point_tangent_perturbation(self._p, h, C, ctypes.byref(err)):
+        lib = library()
+        status = lib.sbc_point_tangent_perturbation(self._p, h, C, ctypes.byref(err)) if h else \
+            lib.sbc_point_tangent_affine(self._p, C, ctypes.byref(err))
+        if status:
             raise ServoBCError(err.message.decode())
         return list(C)

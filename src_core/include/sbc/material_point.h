@@ -32,8 +32,10 @@ extern "C" {
 typedef struct sbc_point_def {
     int dim;            /* 2 */
     int n;              /* particles */
-    const double *x;    /* [dim n] centres, m (the packing's frame is detected as the runner's is) */
+    const double *x;    /* [dim n] centres, m (the frame is detected as the runner's is) */
     const double *r;    /* [n] radii, m */
+    const double *box;  /* NULL, or [4] xlo xhi ylo yhi of a geometrically periodic packing's square (m):
+                           its frame is the discs crossing the square's edges (packing.h) */
     const char *words;  /* servo_bc words: the BC (D, P or T) and its keywords (accuracy, ...);
                            F, increments, stress, file and mixed are the point's and refused */
     sbc_frictional law; /* eq. 6 */
@@ -89,6 +91,19 @@ sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *e
  * components beyond dim 0. Fails with the message of the first
  * perturbation that does not converge. */
 sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], sbc_error *err);
+
+/* The affine (Voigt) tangent at the committed state: every particle
+ * follows F, each contact c (reference branch L = F^-1 l of its current
+ * branch l from a to b, unit normal n, overlap dn) stiffens by
+ *   K = -kn n (x) n + (kn dn / |l|) (I - n (x) n) - ks (I - n (x) n)
+ * (the normal spring, its force turning with the branch, the tangential
+ * spring of a contact that sticks; a sliding one has none), and with
+ * P = -(1/V) sum_c f_c (x) L_c (eq. 23 over the contacts, f_c the force on b)
+ *   C_ijkl = -(1/V) sum_c K_ik L_l L_j.
+ * Rotations and the relaxation of the interior are left out: stiffer than
+ * the aggregate, exact where it deforms affinely (a lattice under (D)).
+ * Same layout as sbc_point_tangent_perturbation. */
+sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err);
 
 #ifdef __cplusplus
 }

@@ -546,6 +546,7 @@ sbc_engine_view sbc_engine_get_view(const sbc_engine *e)
     w.pair_i = e->pairs.i;
     w.pair_j = e->pairs.j;
     w.pair_bond = e->pairs.bond;
+    w.pair_fs = e->pairs.fs;
     w.bond_count = e->bond_count;
     w.bonds_initial = e->bonds_initial;
     w.law = e->law;

@@ -203,6 +203,10 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
     pk.n = d->n;
     pk.x = (double *)d->x; /* read only */
     pk.r = (double *)d->r;
+    if (d->box) {
+        pk.has_box = 1;
+        memcpy(pk.box, d->box, sizeof pk.box);
+    }
     e.n = d->n;
     e.x = d->x;
     e.r = d->r;
@@ -281,5 +285,46 @@ sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], 
             for (ij = 0; ij < 9; ++ij) /* eq. 23's P at F + h e_kl and F - h e_kl */
                 C[9 * ij + SBC_IJ(k, l)] = (P[0][ij] - P[1][ij]) / (2.0 * h);
         }
+    return SBC_OK;
+}
+
+sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
+{
+    const int dim = p->frame.dim;
+    double Finv[9];
+    sbc_engine_view w;
+    int c, i, j, k, l;
+    sbc_point_revert(p);
+    memset(C, 0, sizeof(double) * 81);
+    if (!sbc_tensor_inverse(dim, p->F, Finv))
+        return sbc_fail(err, SBC_ERR_GEOMETRY, "material point: the committed F cannot be inverted");
+    w = sbc_engine_get_view(p->engine);
+    for (c = 0; c < w.pair_count; ++c) {
+        const int a = w.pair_i[c], b = w.pair_j[c];
+        double lv[3] = {0, 0, 0}, L[3], n[3] = {0, 0, 0}, K[9], len = 0.0, dn;
+        int stick;
+        for (k = 0; k < dim; ++k) {
+            lv[k] = w.x[dim * b + k] - w.x[dim * a + k];
+            len += lv[k] * lv[k];
+        }
+        len = sqrt(len);
+        dn = w.r[a] + w.r[b] - len;
+        if (!(dn > 0.0) || (w.pair_bond && w.pair_bond[c]))
+            continue; /* open (bonded pairs: not in this version's points) */
+        for (k = 0; k < dim; ++k)
+            n[k] = lv[k] / len;
+        sbc_tensor_apply(dim, Finv, lv, L);
+        stick = w.law.ks > 0.0 && w.pair_fs && fabs(w.pair_fs[c]) < w.law.mu * w.law.kn * dn * (1.0 - 1e-12);
+        for (i = 0; i < dim; ++i)
+            for (k = 0; k < dim; ++k) {
+                const double t = (i == k ? 1.0 : 0.0) - n[i] * n[k]; /* I - n (x) n */
+                K[SBC_IJ(i, k)] = -w.law.kn * n[i] * n[k] + w.law.kn * dn / len * t - (stick ? w.law.ks * t : 0.0);
+            }
+        for (i = 0; i < dim; ++i)
+            for (j = 0; j < dim; ++j)
+                for (k = 0; k < dim; ++k)
+                    for (l = 0; l < dim; ++l)
+                        C[9 * SBC_IJ(i, j) + SBC_IJ(k, l)] -= K[SBC_IJ(i, k)] * L[l] * L[j] / p->frame.V;
+    }
     return SBC_OK;
 }

@@ -94,6 +94,7 @@ typedef struct sbc_engine_view {
     int pair_count;
     const int *pair_i, *pair_j;
     const unsigned char *pair_bond; /* [pair_count] 1 = intact bond; NULL in a scene without bonds */
+    const double *pair_fs;          /* [pair_count] tangential spring force, N; NULL without friction */
     int bond_count, bonds_initial;  /* intact bonds now and at creation */
     sbc_frictional law;
     long step;
