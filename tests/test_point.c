@@ -10,7 +10,11 @@
  * - (P) gives the same P (the lattice is its own periodic image);
  * - integrate, revert, integrate: the same P bit for bit; the committed state
  *   saved as doubles and loaded into a new point continues bit for bit;
- * - words that give the path (F, increments, mixed) and 3D are refused by name. */
+ * - words that give the path (F, increments, mixed) are refused by name;
+ * - the same on a prestressed frictionless 4^3 sphere lattice (3D): P11 =
+ *   -N^2 kn (2R - d a) / ((N - 1)^2 d^2), C1111 = N^2 kn / ((N - 1)^2 d),
+ *   C_ijij = P_jj / F_jj (i != j), the rest 0: affine to 1e-8, perturbation
+ *   to 1e-4 of C1111; a (P) state into a new point bit for bit. */
 #include "check.h"
 #include "tests.h"
 
@@ -164,12 +168,96 @@ static void refusals(void)
         CHECK(sbc_point_create(&d, &err) == NULL && strstr(err.message, bad[k].expect));
     }
     d.words = "D";
+    d.dim = 4;
+    CHECK(sbc_point_create(&d, &err) == NULL && strstr(err.message, "dimension 4 (expected 2 or 3)"));
+}
+
+#define N3 4
+static double xyz[3 * N3 * N3 * N3], rad3[N3 * N3 * N3];
+
+static sbc_point_def cube(const char *words)
+{
+    sbc_point_def d = sbc_point_def_default();
+    int i, j, k, m = 0;
+    for (k = 0; k < N3; ++k)
+        for (j = 0; j < N3; ++j)
+            for (i = 0; i < N3; ++i, ++m) {
+                xyz[3 * m] = D_SPACING * i;
+                xyz[3 * m + 1] = D_SPACING * j;
+                xyz[3 * m + 2] = D_SPACING * k;
+                rad3[m] = RADIUS;
+            }
     d.dim = 3;
-    CHECK(sbc_point_create(&d, &err) == NULL && strstr(err.message, "takes 2D packings"));
+    d.n = m;
+    d.x = xyz;
+    d.r = rad3;
+    d.words = words;
+    d.law.kn = KN;
+    d.law.ks = 0.0;
+    d.law.mu = 0.0;
+    d.density = 2650;
+    d.dt = 2e-5;
+    return d;
+}
+
+static void spheres_3d(void)
+{
+    const sbc_point_def d = cube("D accuracy tight");
+    const double c1111 = N3 * N3 * KN / ((N3 - 1.0) * (N3 - 1.0) * D_SPACING);
+    sbc_error err;
+    sbc_point *p = sbc_point_create(&d, &err), *q = NULL;
+    double F[9] = {0.999, 0, 0, 0, 0.998, 0, 0, 0, 0.997}, P[9], P2[9], C[81], A[81], want[81] = {0}, ratio;
+    double worst_p = 0.0, worst_a = 0.0, *state = NULL;
+    int i, j, ij;
+    CHECK(p != NULL);
+    if (!p) {
+        printf("  point 3d: %s\n", err.message);
+        return;
+    }
+    CHECK(sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED);
+    for (i = 0; i < 3; ++i)
+        CHECK_REL(P[4 * i], -N3 * N3 * KN * (2.0 * RADIUS - D_SPACING * F[4 * i]) /
+                                ((N3 - 1.0) * (N3 - 1.0) * D_SPACING * D_SPACING), 1e-6);
+    sbc_point_commit(p);
+    CHECK(sbc_point_tangent_affine(p, A, &err) == SBC_OK);
+    CHECK(sbc_point_tangent_perturbation(p, 1e-4, C, &err) == SBC_OK);
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j)
+            want[9 * (3 * i + j) + 3 * i + j] = i == j ? c1111 : P[4 * j] / F[4 * j];
+    for (ij = 0; ij < 81; ++ij) {
+        worst_a = fmax(worst_a, fabs(A[ij] - want[ij]) / c1111);
+        worst_p = fmax(worst_p, fabs(C[ij] - want[ij]) / c1111);
+    }
+    CHECK(worst_a <= 1e-8);
+    CHECK(worst_p <= 1e-4);
+    printf("  point 3d: (D) on the 4^3 lattice: C1111 %.6g (closed form %.6g); largest difference of the affine "
+           "tangent %.2e, of the perturbation tangent %.2e of C1111\n", C[0], c1111, worst_a, worst_p);
+    sbc_point_free(p);
+    /* (P): a committed state into a new point, bit for bit */
+    {
+        const sbc_point_def dp = cube("P accuracy balanced");
+        double G[9] = {0.999, 0.0005, 0, 0, 1.0, 0, 0, 0, 0.999};
+        p = sbc_point_create(&dp, &err);
+        q = sbc_point_create(&dp, &err);
+        CHECK(p != NULL && q != NULL);
+        if (p && q && (state = malloc(sizeof(double) * sbc_point_state_size(p)))) {
+            CHECK(sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED);
+            sbc_point_commit(p);
+            sbc_point_save(p, state);
+            CHECK(sbc_point_load(q, state, sbc_point_state_size(p), &err) == SBC_OK);
+            CHECK(sbc_point_integrate(p, G, P, &ratio, &err) == SBC_POINT_CONVERGED);
+            CHECK(sbc_point_integrate(q, G, P2, &ratio, &err) == SBC_POINT_CONVERGED);
+            CHECK(memcmp(P, P2, sizeof P) == 0);
+        }
+        free(state);
+        sbc_point_free(p);
+        sbc_point_free(q);
+    }
 }
 
 void test_point(void)
 {
+    spheres_3d();
     refusals();
     tangent_closed_form();
     commit_revert_restore();

@@ -168,18 +168,18 @@ class _Error(ctypes.Structure):
 
 
 class MaterialPoint:
-    """The aggregate as a material point (material_point.h, docs/fe2.md): a 2D packing under (D), (P) or (T)
-    on the embedded engine. integrate(F) -> (converged, P, step_ratio) from the committed state; commit(),
+    """The aggregate as a material point (material_point.h, docs/fe2.md): a packing (x [dim n], dim 2 or 3)
+    under (D), (P) or (T) on an embedded engine. integrate(F) -> (converged, P, step_ratio) from the committed state; commit(),
     revert(); state() -> bytes of the committed state, load(bytes) in a point made alike; tangent(h) -> C
-    (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation, tangent() the affine one. F and P: 9 values, row-major 3 x 3
-    slots (the 2 x 2 block in 2D)."""
+    (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation, tangent() the affine one. F and P:
+    9 values, row-major 3 x 3 slots (the 2 x 2 block in 2D)."""
 
-    def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6, box=None):
+    def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6, box=None, dim=2):
         lib = library()
         self._x, self._r = doubles(x), doubles(r)
         self._box = doubles(box) if box else None
         self._words = words.encode()
-        d = PointDef(2, len(r), self._x, self._r, self._box, self._words, kn, ks, mu, density, dt)
+        d = PointDef(dim, len(r), self._x, self._r, self._box, self._words, kn, ks, mu, density, dt)
         err = _Error()
         self._p = lib.sbc_point_create(ctypes.byref(d), ctypes.byref(err))
         if not self._p:

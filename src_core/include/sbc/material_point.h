@@ -1,7 +1,8 @@
 /* servo_bc: the servo-controlled aggregate as a material point of a finite
  * element model (FE^2, docs/fe2.md).
  *
- * A point is a packing on the embedded engine under (D), (P) or (T). An FE
+ * A point is a packing on an embedded engine (2D discs or 3D spheres) under
+ * (D), (P) or (T). An FE
  * code asks it for the first Piola stress P(F) of a deformation F (eq. 23 of
  * the frame's forces, eq. 15 holding F), starting from its last committed
  * state; it commits the state of a converged global iteration or reverts to
@@ -16,7 +17,8 @@
  *   if (sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED)
  *       sbc_point_commit(p);                          else: cut the step by ratio
  *
- * 2D in this version (3D packings are refused by name). */
+ * The condensed tangent, mixed conditions and bonds are not in this
+ * version (docs/fe2.md). */
 #ifndef SBC_MATERIAL_POINT_H
 #define SBC_MATERIAL_POINT_H
 
@@ -30,16 +32,17 @@ extern "C" {
 #endif
 
 typedef struct sbc_point_def {
-    int dim;            /* 2 */
+    int dim;            /* 2 (discs) or 3 (spheres) */
     int n;              /* particles */
-    const double *x;    /* [dim n] centres, m (the frame is detected as the runner's is) */
+    const double *x;    /* [dim n] centres, m (the frame is detected as the runner's is, in 3D by
+                           sbc_frame_detect_3d: lattice faces or a geometrically periodic packing) */
     const double *r;    /* [n] radii, m */
-    const double *box;  /* NULL, or [4] xlo xhi ylo yhi of a geometrically periodic packing's square (m):
-                           its frame is the discs crossing the square's edges (packing.h) */
+    const double *box;  /* 2D: NULL, or [4] xlo xhi ylo yhi of a geometrically periodic packing's
+                           square (m): its frame is the discs crossing the square's edges (packing.h) */
     const char *words;  /* servo_bc words: the BC (D, P or T) and its keywords (accuracy, ...);
                            F, increments, stress, file and mixed are the point's and refused */
     sbc_frictional law; /* eq. 6 */
-    double density;     /* kg/m^2 in 2D */
+    double density;     /* kg/m^2 in 2D, kg/m^3 in 3D */
     double dt;          /* time step, s */
 } sbc_point_def;
 
@@ -60,7 +63,7 @@ typedef enum sbc_point_status {
 } sbc_point_status;
 
 /* One increment from the committed state to F (3 x 3 slots, the dim x dim
- * block read): P (3 x 3 slots, N/m in 2D) and a suggested step ratio (1
+ * block read): P (3 x 3 slots, N/m in 2D, N/m^2 in 3D) and a suggested step ratio (1
  * when converged; 0.5 when failed: retry with a step that much smaller).
  * Never aborts. The point then holds the new state until commit or revert;
  * a second integrate starts from the committed state again. */

@@ -3,6 +3,7 @@
 #include "sbc/bpm_bond.h"
 #include "sbc/confine.h"
 #include "sbc/damping.h"
+#include "sbc/saved.h"
 #include "sbc/seal.h"
 
 #include <float.h>
@@ -551,4 +552,106 @@ sbc_spheres_view sbc_spheres_get_view(const sbc_spheres *e)
     w.step = e->step;
     w.builds = e->builds;
     return w;
+}
+
+void sbc_spheres_pair(const sbc_spheres *e, int k, int ij[2], double *fs)
+{
+    const pair *p = &e->pairs[k];
+    ij[0] = p->i;
+    ij[1] = p->j;
+    *fs = sqrt(p->c.fs[0] * p->c.fs[0] + p->c.fs[1] * p->c.fs[1] + p->c.fs[2] * p->c.fs[2]);
+}
+
+/* ---- the state (sbc_spheres_save, sbc_spheres_load) ---- */
+
+#define SPHERES_STATE_HEAD 10 /* n, stale, builds, step, Ep, overlaps, forces, contacts, rotations, pairs */
+#define SPHERES_PAIR_STATE 9  /* i, j, fs [3], f [3], w */
+
+size_t sbc_spheres_state_size(const sbc_spheres *e)
+{
+    return SPHERES_STATE_HEAD + 21 * (size_t)e->n + SPHERES_PAIR_STATE * (size_t)e->npair;
+}
+
+void sbc_spheres_save(const sbc_spheres *e, double *out)
+{
+    const size_t n3 = 3 * (size_t)e->n;
+    double *const arrays[7] = {e->x, e->v, e->f, e->theta, e->w, e->tq, e->x_build};
+    int k, m;
+    *out++ = e->n;
+    *out++ = e->stale;
+    *out++ = (double)e->builds;
+    *out++ = (double)e->step;
+    *out++ = e->ep;
+    *out++ = e->overlap_sum;
+    *out++ = e->force_sum;
+    *out++ = (double)e->contacts;
+    *out++ = e->rotation_sum;
+    *out++ = e->npair;
+    for (m = 0; m < 7; ++m) {
+        memcpy(out, arrays[m], sizeof(double) * n3);
+        out += n3;
+    }
+    for (k = 0; k < e->npair; ++k) {
+        const pair *p = &e->pairs[k];
+        *out++ = p->i;
+        *out++ = p->j;
+        for (m = 0; m < 3; ++m)
+            *out++ = p->c.fs[m];
+        for (m = 0; m < 3; ++m)
+            *out++ = p->c.f[m];
+        *out++ = p->c.w;
+    }
+}
+
+sbc_status sbc_spheres_load(sbc_spheres *e, const double *in, size_t count, sbc_error *err)
+{
+    static const char *const names[7] = {"position", "velocity", "force", "rotation", "angular velocity",
+                                         "moment", "pair list build position"};
+    const size_t n3 = 3 * (size_t)e->n;
+    double *const arrays[7] = {e->x, e->v, e->f, e->theta, e->w, e->tq, e->x_build};
+    const long most = (long)e->n * (long)(e->n > 1 ? e->n - 1 : 1) / 2;
+    sbc_saved s;
+    pair *list = NULL;
+    long npair;
+    size_t j;
+    int k, m;
+    sbc_saved_start(&s, in, count, "sphere engine state", err);
+    sbc_saved_int(&s, "sphere count", e->n, e->n);
+    e->stale = (int)sbc_saved_int(&s, "stale flag", 0, 1);
+    e->builds = sbc_saved_int(&s, "pair list builds", 0, 1L << 52);
+    e->step = sbc_saved_int(&s, "step", 0, 1L << 52);
+    e->ep = sbc_saved_real(&s, "potential energy");
+    e->overlap_sum = sbc_saved_real(&s, "overlap sum");
+    e->force_sum = sbc_saved_real(&s, "contact force sum");
+    e->contacts = sbc_saved_int(&s, "contact count", 0, 1L << 52);
+    e->rotation_sum = sbc_saved_real(&s, "rotation sum");
+    npair = sbc_saved_int(&s, "pair count", 0, most);
+    for (m = 0; m < 7 && s.st == SBC_OK; ++m)
+        for (j = 0; j < n3; ++j)
+            arrays[m][j] = sbc_saved_real(&s, names[m]);
+    if (s.st == SBC_OK && npair > 0 && !(list = calloc((size_t)npair, sizeof *list)))
+        return sbc_fail(err, SBC_ERR_NOMEM, "sphere engine state: out of memory for %ld pairs", npair);
+    for (k = 0; k < npair && s.st == SBC_OK; ++k) {
+        pair *p = &list[k];
+        p->i = (int)sbc_saved_int(&s, "pair sphere i", 0, e->n - 1);
+        p->j = (int)sbc_saved_int(&s, "pair sphere j", p->i + 1, e->n - 1);
+        for (m = 0; m < 3; ++m)
+            p->c.fs[m] = sbc_saved_real(&s, "pair tangential force");
+        for (m = 0; m < 3; ++m)
+            p->c.f[m] = sbc_saved_real(&s, "pair force");
+        p->c.w = sbc_saved_real(&s, "pair work");
+    }
+    if (s.st != SBC_OK) {
+        free(list);
+        return s.st;
+    }
+    if (s.at != count) {
+        free(list);
+        return sbc_fail(err, SBC_ERR_INPUT, "sphere engine state: %zu values given, %zu read", count, s.at);
+    }
+    free(e->pairs);
+    e->pairs = list;
+    e->npair = (int)npair;
+    e->cap = (int)npair;
+    return SBC_OK;
 }

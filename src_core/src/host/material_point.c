@@ -5,6 +5,7 @@
 #include "sbc/controller.h"
 #include "sbc/driver.h"
 #include "sbc/embedded/engine.h"
+#include "sbc/embedded/spheres.h"
 #include "sbc/frame.h"
 #include "sbc/packing.h"
 #include "sbc/saved.h"
@@ -17,10 +18,110 @@
 
 #define POINT_STATE_VERSION 1.0
 
+/* The engine behind a point, by dimension (as GSL's step types): the 2D
+ * disc engine or the 3D sphere engine, through the same operations. */
+typedef struct point_engine {
+    int dim;
+    void *(*create)(const sbc_point_def *d, const sbc_settings *s, sbc_error *err);
+    void (*free)(void *e);
+    void (*set_frame)(void *e, const sbc_frame *f);
+    sbc_driver_callbacks (*callbacks)(void *e);
+    sbc_status (*forces)(void *e, sbc_error *err);
+    void (*move_frame)(void *e, const sbc_commands *cmd);
+    void (*frame_masses)(const void *e, double *mass);
+    double (*critical_dt)(const void *e);
+    size_t (*state_size)(const void *e);
+    void (*save)(const void *e, double *out);
+    sbc_status (*load)(void *e, const double *in, size_t n, sbc_error *err);
+    /* the pairs for the affine tangent: their count, pair k's particles and |tangential spring| (N),
+       the centres [dim n] and radii */
+    int (*pair_count)(const void *e);
+    void (*pair)(const void *e, int k, int ij[2], double *fs);
+    const double *(*centres)(const void *e);
+    const double *(*radii)(const void *e);
+} point_engine;
+
+static void *discs_create(const sbc_point_def *d, const sbc_settings *s, sbc_error *err)
+{
+    sbc_engine_def e = sbc_engine_def_default();
+    e.n = d->n;
+    e.x = d->x;
+    e.r = d->r;
+    e.density = d->density;
+    e.law = d->law;
+    e.dt = d->dt;
+    e.alpha = s->damping ? s->alpha : 0.0;
+    e.beta = s->damping ? s->beta : 0.0;
+    e.fire = s->damping == SBC_DAMPING_FIRE;
+    return sbc_engine_create(&e, err);
+}
+static void discs_free(void *e) { sbc_engine_free(e); }
+static void discs_set_frame(void *e, const sbc_frame *f) { sbc_engine_set_frame(e, f); }
+static sbc_driver_callbacks discs_callbacks(void *e) { return sbc_engine_callbacks(e); }
+static sbc_status discs_forces(void *e, sbc_error *err) { return sbc_engine_forces(e, err); }
+static void discs_move(void *e, const sbc_commands *cmd) { sbc_engine_move_frame(e, cmd); }
+static void discs_masses(const void *e, double *mass) { sbc_engine_frame_masses(e, mass); }
+static double discs_dt(const void *e) { return sbc_engine_critical_dt(e); }
+static size_t discs_size(const void *e) { return sbc_engine_state_size(e); }
+static void discs_save(const void *e, double *out) { sbc_engine_save(e, out); }
+static sbc_status discs_load(void *e, const double *in, size_t n, sbc_error *err) { return sbc_engine_load(e, in, n, err); }
+static int discs_pairs(const void *e) { return sbc_engine_get_view(e).pair_count; }
+static void discs_pair(const void *e, int k, int ij[2], double *fs)
+{
+    const sbc_engine_view w = sbc_engine_get_view(e);
+    ij[0] = w.pair_i[k];
+    ij[1] = w.pair_j[k];
+    *fs = w.pair_fs ? fabs(w.pair_fs[k]) : 0.0;
+}
+static const double *discs_centres(const void *e) { return sbc_engine_get_view(e).x; }
+static const double *discs_radii(const void *e) { return sbc_engine_get_view(e).r; }
+
+static const point_engine discs = {2, discs_create, discs_free, discs_set_frame, discs_callbacks, discs_forces,
+                                   discs_move, discs_masses, discs_dt, discs_size, discs_save, discs_load,
+                                   discs_pairs, discs_pair, discs_centres, discs_radii};
+
+static void *spheres_create(const sbc_point_def *d, const sbc_settings *s, sbc_error *err)
+{
+    sbc_spheres_def e = sbc_spheres_def_default();
+    e.n = d->n;
+    e.x = d->x;
+    e.r = d->r;
+    e.density = d->density;
+    e.law = d->law;
+    e.dt = d->dt;
+    e.alpha = s->damping ? s->alpha : 0.0;
+    e.beta = s->damping ? s->beta : 0.0;
+    e.fire = s->damping == SBC_DAMPING_FIRE;
+    return sbc_spheres_create(&e, err);
+}
+static void spheres_free(void *e) { sbc_spheres_free(e); }
+static void spheres_set_frame(void *e, const sbc_frame *f) { sbc_spheres_set_frame(e, f); }
+static sbc_driver_callbacks spheres_callbacks(void *e) { return sbc_spheres_callbacks(e); }
+static sbc_status spheres_forces(void *e, sbc_error *err) { return sbc_spheres_forces(e, err); }
+static void spheres_move(void *e, const sbc_commands *cmd) { sbc_spheres_move_frame(e, cmd); }
+static void spheres_masses(const void *e, double *mass) { sbc_spheres_frame_masses(e, mass); }
+static double spheres_dt(const void *e) { return sbc_spheres_critical_dt(e); }
+static size_t spheres_size(const void *e) { return sbc_spheres_state_size(e); }
+static void spheres_save(const void *e, double *out) { sbc_spheres_save(e, out); }
+static sbc_status spheres_load(void *e, const double *in, size_t n, sbc_error *err)
+{
+    return sbc_spheres_load(e, in, n, err);
+}
+static int spheres_pairs(const void *e) { return sbc_spheres_get_view(e).pair_count; }
+static void spheres_pair(const void *e, int k, int ij[2], double *fs) { sbc_spheres_pair(e, k, ij, fs); }
+static const double *spheres_centres(const void *e) { return sbc_spheres_get_view(e).x; }
+static const double *spheres_radii(const void *e) { return sbc_spheres_get_view(e).r; }
+
+static const point_engine spheres = {3, spheres_create, spheres_free, spheres_set_frame, spheres_callbacks,
+                                     spheres_forces, spheres_move, spheres_masses, spheres_dt, spheres_size,
+                                     spheres_save, spheres_load, spheres_pairs, spheres_pair, spheres_centres,
+                                     spheres_radii};
+
 struct sbc_point {
+    const point_engine *type;
     sbc_settings settings;
     sbc_frame frame;
-    sbc_engine *engine;
+    void *engine;
     sbc_controller *ctl;
     sbc_driver *driver;
     double *mass;          /* [Q] kg */
@@ -28,6 +129,7 @@ struct sbc_point {
     size_t size;
     int at_committed;      /* the engine and the controller hold the committed state */
     double F[9], P[9];     /* committed */
+    sbc_frictional law; /* the contact law (eq. 6), for the affine tangent */
 };
 
 sbc_point_def sbc_point_def_default(void)
@@ -49,7 +151,8 @@ void sbc_point_free(sbc_point *p)
         return;
     sbc_driver_free(p->driver);
     sbc_controller_free(p->ctl);
-    sbc_engine_free(p->engine);
+    if (p->engine)
+        p->type->free(p->engine);
     sbc_frame_free(&p->frame);
     free(p->mass);
     free(p->committed);
@@ -62,11 +165,12 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
 {
     double I[9];
     int k;
-    if (d->dim != 2)
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: dimension %d (this version takes 2D packings)", d->dim);
-    if (sbc_settings_parse_words(s, d->words, err) != SBC_OK || sbc_settings_check_dimension(s, 2, err) != SBC_OK)
+    if (d->dim != 2 && d->dim != 3)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: dimension %d (expected 2 or 3)", d->dim);
+    if (sbc_settings_parse_words(s, d->words, err) != SBC_OK ||
+        sbc_settings_check_dimension(s, d->dim, err) != SBC_OK)
         return err->status;
-    sbc_tensor_identity(2, I);
+    sbc_tensor_identity(d->dim, I);
     for (k = 0; k < 9; ++k)
         if (s->F[k] != I[k])
             return sbc_fail(err, SBC_ERR_INPUT, "material point: keyword 'F' is the FE code's (each integrate gives "
@@ -84,8 +188,8 @@ static sbc_event run_increment(sbc_point *p, int first, sbc_error *err)
         sbc_event ev;
         if (!first) {
             sbc_commands cmd = sbc_controller_commands(p->ctl);
-            sbc_engine_move_frame(p->engine, &cmd);
-            if (sbc_engine_forces(p->engine, err) != SBC_OK)
+            p->type->move_frame(p->engine, &cmd);
+            if (p->type->forces(p->engine, err) != SBC_OK)
                 return SBC_EVENT_FAILED;
         }
         first = 0;
@@ -100,11 +204,11 @@ size_t sbc_point_state_size(const sbc_point *p) { return p->size; }
 /* the current state into out (sbc_point_save's layout) */
 static void save_current(const sbc_point *p, const double F[9], const double P[9], double *out)
 {
-    const size_t ne = sbc_engine_state_size(p->engine), nc = sbc_controller_state_size(p->ctl);
+    const size_t ne = p->type->state_size(p->engine), nc = sbc_controller_state_size(p->ctl);
     sbc_fire_state *fire = sbc_driver_fire(p->driver);
     *out++ = POINT_STATE_VERSION;
     *out++ = (double)ne;
-    sbc_engine_save(p->engine, out);
+    p->type->save(p->engine, out);
     out += ne;
     *out++ = (double)nc;
     sbc_controller_save(p->ctl, out);
@@ -118,7 +222,7 @@ static void save_current(const sbc_point *p, const double F[9], const double P[9
 /* in [n] into the engine, the controller, FIRE, F and P */
 static sbc_status load_state(sbc_point *p, const double *in, size_t n, double F[9], double P[9], sbc_error *err)
 {
-    const size_t ne = sbc_engine_state_size(p->engine), nc = sbc_controller_state_size(p->ctl);
+    const size_t ne = p->type->state_size(p->engine), nc = sbc_controller_state_size(p->ctl);
     sbc_fire_state *fire = sbc_driver_fire(p->driver);
     sbc_saved s;
     size_t at;
@@ -126,7 +230,7 @@ static sbc_status load_state(sbc_point *p, const double *in, size_t n, double F[
     if (n != p->size || in[0] != POINT_STATE_VERSION || in[1] != (double)ne || in[2 + ne] != (double)nc)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: the saved state (%zu values, version %g) is not one of "
                         "this point (%zu values, version %g)", n, n > 0 ? in[0] : 0.0, p->size, POINT_STATE_VERSION);
-    if (sbc_engine_load(p->engine, in + 2, ne, err) != SBC_OK ||
+    if (p->type->load(p->engine, in + 2, ne, err) != SBC_OK ||
         sbc_controller_load(p->ctl, in + 3 + ne, nc, err) != SBC_OK)
         return err->status;
     at = 3 + ne + nc;
@@ -186,9 +290,9 @@ sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *e
 sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
 {
     sbc_point *p = calloc(1, sizeof *p);
-    sbc_engine_def e = sbc_engine_def_default();
     sbc_packing pk;
     sbc_driver_callbacks cb;
+    sbc_status st;
     if (!p) {
         sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
         return NULL;
@@ -199,45 +303,44 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
         sbc_point_free(p);
         return NULL;
     }
-    memset(&pk, 0, sizeof pk);
-    pk.n = d->n;
-    pk.x = (double *)d->x; /* read only */
-    pk.r = (double *)d->r;
-    if (d->box) {
-        pk.has_box = 1;
-        memcpy(pk.box, d->box, sizeof pk.box);
+    p->type = d->dim == 3 ? &spheres : &discs;
+    p->law = d->law;
+    if (d->dim == 3) {
+        st = sbc_frame_detect_3d(&p->frame, d->n, d->x, d->r, 0.0, err);
+    } else {
+        memset(&pk, 0, sizeof pk);
+        pk.n = d->n;
+        pk.x = (double *)d->x; /* read only */
+        pk.r = (double *)d->r;
+        if (d->box) {
+            pk.has_box = 1;
+            memcpy(pk.box, d->box, sizeof pk.box);
+        }
+        st = sbc_packing_distinct(d->n, d->x, d->r, err);
+        if (st == SBC_OK)
+            st = sbc_frame_detect_packing(&p->frame, &pk, err);
     }
-    e.n = d->n;
-    e.x = d->x;
-    e.r = d->r;
-    e.density = d->density;
-    e.law = d->law;
-    e.dt = d->dt;
-    e.alpha = p->settings.damping ? p->settings.alpha : 0.0;
-    e.beta = p->settings.damping ? p->settings.beta : 0.0;
-    e.fire = p->settings.damping == SBC_DAMPING_FIRE;
-    if (sbc_packing_distinct(d->n, d->x, d->r, err) != SBC_OK || sbc_frame_detect_packing(&p->frame, &pk, err) != SBC_OK ||
-        !(p->engine = sbc_engine_create(&e, err)) ||
-        sbc_time_step_bound(d->dt, sbc_engine_critical_dt(p->engine), "2 sqrt(M_min / (2 kn))",
+    if (st != SBC_OK || !(p->engine = p->type->create(d, &p->settings, err)) ||
+        sbc_time_step_bound(d->dt, p->type->critical_dt(p->engine), "2 sqrt(M_min / (2 kn))",
                             p->settings.max_relax_steps, err) != SBC_OK) {
         sbc_point_free(p);
         return NULL;
     }
-    sbc_engine_set_frame(p->engine, &p->frame);
+    p->type->set_frame(p->engine, &p->frame);
     if (!(p->mass = malloc(sizeof(double) * (size_t)p->frame.n))) {
         sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
         sbc_point_free(p);
         return NULL;
     }
-    sbc_engine_frame_masses(p->engine, p->mass);
-    cb = sbc_engine_callbacks(p->engine);
+    p->type->frame_masses(p->engine, p->mass);
+    cb = p->type->callbacks(p->engine);
     if (!(p->ctl = sbc_controller_create(&p->frame, &p->settings, p->mass, d->dt, d->law.kn, err)) ||
-        !(p->driver = sbc_driver_create(p->ctl, &p->settings, &cb, err)) || sbc_engine_forces(p->engine, err) != SBC_OK ||
-        run_increment(p, 1, err) != SBC_EVENT_FINISHED) {
+        !(p->driver = sbc_driver_create(p->ctl, &p->settings, &cb, err)) ||
+        p->type->forces(p->engine, err) != SBC_OK || run_increment(p, 1, err) != SBC_EVENT_FINISHED) {
         sbc_point_free(p);
         return NULL;
     }
-    p->size = 2 + sbc_engine_state_size(p->engine) + 1 + sbc_controller_state_size(p->ctl) + 2 + 18;
+    p->size = 2 + p->type->state_size(p->engine) + 1 + sbc_controller_state_size(p->ctl) + 2 + 18;
     if (!(p->committed = malloc(sizeof(double) * p->size))) {
         sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
         sbc_point_free(p);
@@ -290,35 +393,35 @@ sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], 
 
 sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
 {
-    const int dim = p->frame.dim;
+    const int dim = p->frame.dim, npair = p->type->pair_count(p->engine);
+    const double *x = p->type->centres(p->engine), *r = p->type->radii(p->engine);
+    const sbc_frictional *law = &p->law;
     double Finv[9];
-    sbc_engine_view w;
     int c, i, j, k, l;
     sbc_point_revert(p);
     memset(C, 0, sizeof(double) * 81);
     if (!sbc_tensor_inverse(dim, p->F, Finv))
         return sbc_fail(err, SBC_ERR_GEOMETRY, "material point: the committed F cannot be inverted");
-    w = sbc_engine_get_view(p->engine);
-    for (c = 0; c < w.pair_count; ++c) {
-        const int a = w.pair_i[c], b = w.pair_j[c];
-        double lv[3] = {0, 0, 0}, L[3], n[3] = {0, 0, 0}, K[9], len = 0.0, dn;
-        int stick;
+    for (c = 0; c < npair; ++c) {
+        double lv[3] = {0, 0, 0}, L[3], n[3] = {0, 0, 0}, K[9], len = 0.0, dn, fs;
+        int ij[2], stick;
+        p->type->pair(p->engine, c, ij, &fs);
         for (k = 0; k < dim; ++k) {
-            lv[k] = w.x[dim * b + k] - w.x[dim * a + k];
+            lv[k] = x[dim * ij[1] + k] - x[dim * ij[0] + k];
             len += lv[k] * lv[k];
         }
         len = sqrt(len);
-        dn = w.r[a] + w.r[b] - len;
-        if (!(dn > 0.0) || (w.pair_bond && w.pair_bond[c]))
-            continue; /* open (bonded pairs: not in this version's points) */
+        dn = r[ij[0]] + r[ij[1]] - len;
+        if (!(dn > 0.0))
+            continue; /* open */
         for (k = 0; k < dim; ++k)
             n[k] = lv[k] / len;
         sbc_tensor_apply(dim, Finv, lv, L);
-        stick = w.law.ks > 0.0 && w.pair_fs && fabs(w.pair_fs[c]) < w.law.mu * w.law.kn * dn * (1.0 - 1e-12);
+        stick = law->ks > 0.0 && fs < law->mu * law->kn * dn * (1.0 - 1e-12);
         for (i = 0; i < dim; ++i)
             for (k = 0; k < dim; ++k) {
                 const double t = (i == k ? 1.0 : 0.0) - n[i] * n[k]; /* I - n (x) n */
-                K[SBC_IJ(i, k)] = -w.law.kn * n[i] * n[k] + w.law.kn * dn / len * t - (stick ? w.law.ks * t : 0.0);
+                K[SBC_IJ(i, k)] = -law->kn * n[i] * n[k] + law->kn * dn / len * t - (stick ? law->ks * t : 0.0);
             }
         for (i = 0; i < dim; ++i)
             for (j = 0; j < dim; ++j)

@@ -89,6 +89,18 @@ typedef struct sbc_spheres_view {
 
 sbc_spheres_view sbc_spheres_get_view(const sbc_spheres *e);
 
+/* Pair k of the list (0 .. pair_count - 1): its spheres ij [2] and the
+ * magnitude of its tangential spring force (N), 0 for an open pair. */
+void sbc_spheres_pair(const sbc_spheres *e, int k, int ij[2], double *fs);
+
+/* The engine's state as doubles, as sbc_engine_save's (positions,
+ * velocities, rotations, the last loads, the pair list with each contact's
+ * spring, the step count): sbc_spheres_load reads it into an engine created
+ * from the same packing and definition, every value checked. */
+size_t sbc_spheres_state_size(const sbc_spheres *e);
+void sbc_spheres_save(const sbc_spheres *e, double *out);
+sbc_status sbc_spheres_load(sbc_spheres *e, const double *in, size_t n, sbc_error *err);
+
 #ifdef __cplusplus
 }
 #endif
