@@ -220,13 +220,17 @@ $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 $(B)/bench_spheres: bench/spheres_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
 
-bench: $(B)/bench_engine $(B)/bench_spheres
+$(B)/bench_points: bench/point_batch.c $(B)/libservo_bc.a
+	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
+
+bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points
 	@bash scripts/install-deps.sh lammps || echo "bench: LAMMPS not available; measuring the embedded engine only"
 	bash bench/engine_vs_lammps.sh $(B)/bench_engine
 	bash bench/engine_vs_lammps.sh $(B)/bench_spheres 500 3
 	bash bench/bpm.sh
 	bash bench/bpm_hosts.sh
 	bash bench/cohesive_hosts.sh
+	$(B)/bench_points 16 10 2
 
 clean:
 	rm -rf $(B) out

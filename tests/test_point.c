@@ -14,7 +14,8 @@
  * - the same on a prestressed frictionless 4^3 sphere lattice (3D): P11 =
  *   -N^2 kn (2R - d a) / ((N - 1)^2 d^2), C1111 = N^2 kn / ((N - 1)^2 d),
  *   C_ijij = P_jj / F_jj (i != j), the rest 0: affine to 1e-8, perturbation
- *   to 1e-4 of C1111; a (P) state into a new point bit for bit. */
+ *   to 1e-4 of C1111; a (P) state into a new point bit for bit;
+ * - a batch on 1 and 3 threads gives the same bits. */
 #include "check.h"
 #include "tests.h"
 
@@ -255,8 +256,44 @@ static void spheres_3d(void)
     }
 }
 
+/* a batch of 6 lattice points under (P) on 1 and 3 threads: the same P bit
+   for bit, each that of its point alone; a point given det F < 0 fails by
+   name while the others converge */
+static void batch(void)
+{
+    enum { COUNT = 6 };
+    const sbc_point_def d = lattice("P accuracy balanced");
+    sbc_point *pts[2][COUNT];
+    double F[9 * COUNT], P[2][9 * COUNT], ratio[COUNT], alone[9];
+    int status[COUNT], k, t, made = 1;
+    sbc_error err;
+    for (k = 0; k < COUNT; ++k) {
+        diag(1.0 - 0.0005 * k, 1.0 - 0.0003 * (COUNT - k), &F[9 * k]);
+        F[9 * k + 1] = 0.0002 * k;
+        for (t = 0; t < 2; ++t)
+            made &= (pts[t][k] = sbc_point_create(&d, &err)) != NULL;
+    }
+    CHECK(made);
+    if (made) {
+        CHECK(sbc_points_integrate(pts[0], COUNT, F, P[0], status, ratio, 1, &err) == SBC_OK);
+        CHECK(sbc_points_integrate(pts[1], COUNT, F, P[1], status, ratio, 3, &err) == SBC_OK);
+        CHECK(memcmp(P[0], P[1], sizeof P[0]) == 0);
+        CHECK(sbc_point_integrate(pts[0][4], &F[36], alone, &ratio[0], &err) == SBC_POINT_CONVERGED &&
+              memcmp(alone, &P[0][36], sizeof alone) == 0);
+        F[9 * 2] = -1.0; /* det F < 0 */
+        CHECK(sbc_points_integrate(pts[1], COUNT, F, P[1], status, ratio, 2, &err) == SBC_ERR_GEOMETRY &&
+              strstr(err.message, "point 2: ") && status[2] == SBC_POINT_FAILED && status[3] == SBC_POINT_CONVERGED &&
+              ratio[2] == 0.5);
+        CHECK(memcmp(&P[0][27], &P[1][27], sizeof alone) == 0);
+    }
+    for (k = 0; k < COUNT; ++k)
+        for (t = 0; t < 2; ++t)
+            sbc_point_free(pts[t][k]);
+}
+
 void test_point(void)
 {
+    batch();
     spheres_3d();
     refusals();
     tangent_closed_form();

@@ -95,6 +95,16 @@ sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *e
  * perturbation that does not converge. */
 sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], sbc_error *err);
 
+/* Many points at once (the integration points of a mesh): points[k] to F
+ * [9k .. 9k + 8], into P [9k ..], status [k] (sbc_point_status) and ratio
+ * [k], on `threads` threads (C11 threads; <= 1: in the calling thread). A
+ * point is integrated by one thread, so every result is that of
+ * sbc_point_integrate on it alone, bit for bit, whatever the thread count.
+ * SBC_OK when every point converged, else the status and message of the
+ * first that did not ("point 7: ..."); the others' results stand. */
+sbc_status sbc_points_integrate(sbc_point *const *points, int count, const double *F, double *P, int *status,
+                                double *ratio, int threads, sbc_error *err);
+
 /* The affine (Voigt) tangent at the committed state: every particle
  * follows F, each contact c (reference branch L = F^-1 l of its current
  * branch l from a to b, unit normal n, overlap dn) stiffens by
