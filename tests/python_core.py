@@ -76,6 +76,11 @@ F2 = [0.998, 0.0005, 0, 0, 0.999, 0, 0, 0, 0]
 a, b = point.integrate(F2), other.integrate(F2)
 check(a[0] and a == b, 'material point: the committed state as %d bytes, loaded into another point, continues bit for bit'
       % len(point.state()))
+batch = [core.MaterialPoint(words='P accuracy balanced', **lattice) for _ in range(4)]
+Fs = [[1 - 0.0005 * k, 0.0002 * k, 0, 0, 0.999, 0, 0, 0, 0] for k in range(4)]
+P2, conv2, _, _ = core.integrate_points(batch, Fs, threads=2)
+alone = [core.MaterialPoint(words='P accuracy balanced', **lattice).integrate(F)[1] for F in Fs]
+check(all(conv2) and P2 == alone, 'material points: a batch of 4 on 2 threads, bit for bit each point alone')
 try:
     core.MaterialPoint(words='D F 0.99 0 0 1', **lattice)
     check(False, 'material point: F in the words refused')

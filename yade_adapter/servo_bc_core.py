@@ -15,7 +15,7 @@ import ctypes
 import os
 
 __all__ = ['ServoBCError', 'library', 'version', 'columns', 'doubles', 'frame_size', 'frame_offsets', 'HostCallbacks',
-           'MaterialPoint', 'DAMPING_NONE',
+           'MaterialPoint', 'integrate_points', 'DAMPING_NONE',
            'DAMPING_LOCAL', 'DAMPING_FIRE', 'FIRE_SUMS', 'RELAXING', 'CORRECTED', 'INCREMENT', 'FINISHED', 'FAILED']
 
 DAMPING_NONE, DAMPING_LOCAL, DAMPING_FIRE = 0, 1, 2  # sbc_damping (settings.h)
@@ -120,6 +120,7 @@ def _load():
         'sbc_point_load': (I, [P, pd, ctypes.c_size_t, P]),
         'sbc_point_tangent_perturbation': (I, [P, D, pd, P]),
         'sbc_point_tangent_affine': (I, [P, pd, P]),
+        'sbc_points_integrate': (I, [ctypes.POINTER(P), I, pd, pd, pi, pd, I, P]),
         'sbc_host_sealed': (I, [P]),
         'sbc_host_seal': (I, [P, pd, pd, pd]),
     }
@@ -221,3 +222,17 @@ class MaterialPoint:
         if status:
             raise ServoBCError(err.message.decode())
         return list(C)
+
+
+def integrate_points(points, Fs, threads=1):
+    """Many MaterialPoints at once (sbc_points_integrate, C11 threads): points[k] to Fs[k] (9 values each).
+    Returns (P, converged, ratios, message): P a list of 9-value lists, converged a list of booleans, the
+    step ratios, and the first failed point's message ('' when all converged). Bit for bit the results of
+    integrating each point alone, whatever the thread count."""
+    n = len(points)
+    handles = (ctypes.c_void_p * n)(*[p._p for p in points])
+    F = doubles([v for f in Fs for v in f])
+    P, status, ratio, err = (ctypes.c_double * (9 * n))(), (ctypes.c_int * n)(), (ctypes.c_double * n)(), _Error()
+    library().sbc_points_integrate(handles, n, F, P, status, ratio, threads, ctypes.byref(err))
+    return ([list(P[9 * k:9 * k + 9]) for k in range(n)], [s == 0 for s in status], list(ratio),
+            err.message.decode() if any(status) else '')
