@@ -86,8 +86,13 @@ deps:
 $(B)/cxx_headers: tests/cxx_headers.cpp $(B)/libservo_bc.a $(wildcard src_core/include/sbc/*.h src_core/include/sbc/embedded/*.h)
 	c++ -std=c++11 -Wall -Wextra -pedantic -Werror -Isrc_core/include -o $@ tests/cxx_headers.cpp $(B)/libservo_bc.a -lm
 
-check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B)/libservo_bc.so $(B)/fuzz/restart_seed
+$(B)/fe2_example: inputs/fe2/material_point.c $(B)/libservo_bc.a
+	$(CC) $(CFLAGS) -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
+
+check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B)/libservo_bc.so $(B)/fuzz/restart_seed \
+            $(B)/fe2_example
 	$(B)/run_tests $(B)/servo-bc
+	$(B)/fe2_example
 	$(B)/cxx_headers
 	bash tests/headers.sh
 	bash tests/tables.sh $(B)
