@@ -303,7 +303,7 @@ sbc_status sbc_pairs_load(sbc_pairs *p, sbc_saved *s)
         p->bond = q.bond;
     }
     for (k = 0; k <= p->n; ++k)
-        p->start[k] = (int)sbc_saved_int(s, "pair list start", k ? p->start[k - 1] : 0, k < p->n ? count : count);
+        p->start[k] = (int)sbc_saved_int(s, "pair list start", k ? p->start[k - 1] : 0, count);
     if (s->st == SBC_OK && p->start[p->n] != count)
         return sbc_fail(s->err, SBC_ERR_INPUT, "%s: the pair list's starts end at %d, not at its %d pairs", s->what,
                         p->start[p->n], count);
