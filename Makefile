@@ -2,13 +2,14 @@
 #   make          core libraries (static, shared) and the runner build/servo-bc
 #   make demo     the paper's 25-particle (D) case on the embedded engine
 #   make check    every test: core, ASan+UBSan build, valgrind, LAMMPS, LIGGGHTS, the hosts side by
-#                 side, YADE (installs what it needs)
+#                 side, YADE, the FE^2 patch test (installs what it needs)
 #   make lammps   build/lmp_servo: LAMMPS with fix servo_bc (Debian package)
 #   make liggghts build/liggghts_servo: LIGGGHTS with fix servo_bc (Debian package)
 #   make yade     the YADE engine's library (build/libservo_bc.so) and the Debian YADE package
 #   make compare CASE=FILE.sbc   one case on every engine, report in out/compare/ (docs/cross-host.md)
 #   make bench    benchmarks (prints figures; LAMMPS side when installed)
 #   make figures  every figure and table of docs/reproduction-*.md, regenerated (hours; FIGURES=... for some)
+#   make fe2-patch   the FE^2 patch test on GetFEM (docs/fe2.md)
 #   make fuzz     libFuzzer campaigns over the core's input surfaces (FUZZ_RUNS per harness; docs/reliability.md)
 
 CC      ?= cc
@@ -39,7 +40,7 @@ FUZZ_RUNS  ?= 1000000
 FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src -DSBC_PACKING_MAX=64L
 
 .PHONY: all demo compare check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
-  check-yade lammps liggghts fuzz figures \
+  check-yade fe2-patch lammps liggghts fuzz figures \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
@@ -77,7 +78,7 @@ demo: all
 
 check: deps
 	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
-	  check-yade
+	  check-yade fe2-patch
 
 deps:
 	@bash scripts/install-deps.sh core
@@ -97,6 +98,7 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B
 	bash tests/headers.sh
 	bash tests/tables.sh $(B)
 	python3 tests/python_core.py $(B)/libservo_bc.so $(B)/servo-bc
+	python3 tests/tangent_irregular.py $(B)/libservo_bc.so $(B)/servo-bc
 	bash tests/layers.sh $(B)
 	bash tests/restart_layout.sh $(B)
 	bash tests/path_error.sh
@@ -137,9 +139,16 @@ $(B)/fuzz/corpus/restart/seed.bin: $(B)/fuzz/restart_seed
 fuzz: $(FUZZ_NAMES:%=$(B)/fuzz/%_fuzzer) $(B)/fuzz/corpus/restart/seed.bin
 	bash fuzz/campaign.sh $(B)/fuzz $(FUZZ_RUNS) $(FUZZ_NAMES)
 
+# The C suite under valgrind in two halves side by side (about 9 minutes each on
+# the CI machine): the suites named here, and all the others.
+VALGRIND = valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect -q
+VALGRIND_HALF = generate,mixed,irregular3d,point
 check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
-	valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect -q \
-	  $(B)/run_tests $(B)/servo-bc
+	@mkdir -p $(B)/valgrind-a $(B)/valgrind-b
+	@SBC_TEST_SUITE=$(VALGRIND_HALF) $(VALGRIND) $(B)/run_tests $(B)/servo-bc $(B)/valgrind-a > $(B)/valgrind-a.log 2>&1 & \
+	  half=$$!; SBC_TEST_SKIP=$(VALGRIND_HALF) $(VALGRIND) $(B)/run_tests $(B)/servo-bc $(B)/valgrind-b \
+	  > $(B)/valgrind-b.log 2>&1; b=$$?; wait $$half; a=$$?; cat $(B)/valgrind-a.log $(B)/valgrind-b.log; \
+	  echo "valgrind: $(VALGRIND_HALF): exit $$a; the other suites: exit $$b"; test $$a = 0 && test $$b = 0
 
 # LAMMPS adapter against the Debian package: build/lmp_servo. The few headers
 # Debian's liblammps-dev lacks are shipped in lammps_fix/debian_headers/ (README there).
@@ -218,6 +227,17 @@ yade: $(B)/libservo_bc.so $(B)/servo-bc
 
 check-yade: yade
 	bash tests/yade/run.sh $(B)/libservo_bc.so $(B)/servo-bc
+
+# FE^2 on GetFEM (fe2/, docs/fe2.md), with the Debian interpreter its module is installed for
+FE2_PYTHON = /usr/bin/python3
+$(B)/fe2-deps.installed:
+	@mkdir -p $(B)
+	@bash scripts/install-deps.sh fe2
+	@touch $@
+
+FE2_TANGENTS ?= condensed affine
+fe2-patch: $(B)/libservo_bc.so $(B)/fe2-deps.installed
+	SERVO_BC_LIB=$(B)/libservo_bc.so $(FE2_PYTHON) fe2/patch.py $(FE2_TANGENTS)
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)

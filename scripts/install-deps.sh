@@ -6,6 +6,7 @@
 #   scripts/install-deps.sh liggghts-dev   LIGGGHTS, its headers and an MPI C++ compiler (make liggghts)
 #   scripts/install-deps.sh yade     the Debian YADE package (make yade, make check)
 #   scripts/install-deps.sh fuzz     clang with libFuzzer (make fuzz)
+#   scripts/install-deps.sh fe2      GetFEM's Python module, NumPy, SciPy (make fe2-patch, make fe2-demo)
 # Already-installed tools are left alone; without root or apt-get it only reports.
 set -euo pipefail
 need=()
@@ -36,10 +37,14 @@ for what in "$@"; do
     fuzz)
       command -v clang >/dev/null || need+=(clang)
       ;;
+    fe2)
+      /usr/bin/python3 -c 'import getfem' 2>/dev/null || need+=(python3-getfem)
+      /usr/bin/python3 -c 'import numpy, scipy.sparse.linalg' 2>/dev/null || need+=(python3-numpy python3-scipy)
+      ;;
     yade)
       command -v yade >/dev/null || need+=(yade python3-yade)
       ;;
-    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev, liggghts-dev, yade or fuzz)" >&2; exit 2 ;;
+    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev, liggghts-dev, yade, fuzz or fe2)" >&2; exit 2 ;;
   esac
 done
 [ ${#need[@]} -eq 0 ] && exit 0

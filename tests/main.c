@@ -1,5 +1,6 @@
 /* Test runner: run_tests [SERVO_BC_BINARY [TMPDIR]]; last line "N passed, N failed".
- * SBC_TEST_SUITE=NAME runs one suite. */
+ * SBC_TEST_SUITE=NAME[,NAME...] runs those suites, SBC_TEST_SKIP=NAME[,NAME...]
+ * all others (make check-valgrind runs the two halves side by side). */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 #include "tests.h"
@@ -26,6 +27,19 @@ int file_contains(const char *path, const char *needle)
     return found;
 }
 
+/* name is one of the comma-separated names of list */
+static int listed(const char *list, const char *name)
+{
+    const size_t n = strlen(name);
+    const char *at = list;
+    while ((at = strstr(at, name)) != NULL) {
+        if ((at == list || at[-1] == ',') && (at[n] == '\0' || at[n] == ','))
+            return 1;
+        at += n;
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     struct {
@@ -43,8 +57,8 @@ int main(int argc, char **argv)
     mkdir(test_tmpdir, 0777);
     for (k = 0; k < sizeof suites / sizeof suites[0]; ++k) {
         int f0 = check_failed, p0 = check_passed;
-        const char *only = getenv("SBC_TEST_SUITE"); /* one suite by name, e.g. for timing */
-        if (only && strcmp(only, suites[k].name) != 0)
+        const char *only = getenv("SBC_TEST_SUITE"), *skip = getenv("SBC_TEST_SKIP");
+        if ((only && !listed(only, suites[k].name)) || (skip && listed(skip, suites[k].name)))
             continue;
         suites[k].fn();
         printf("%-12s %4d checks, %d failed\n", suites[k].name, check_passed - p0 + check_failed - f0,

@@ -70,6 +70,9 @@ check(abs(C[0] - 12500) <= 1e-4 * 12500, 'material point: perturbation C1111 %.6
 A = point.tangent()
 check(abs(A[0] - 12500) <= 1e-8 * 12500 and abs(A[10] - P[4] / 0.998) <= 1e-8 * 12500,
       'material point: affine C1111 %.9g, C1212 %.9g (closed forms 12500, %.9g)' % (A[0], A[10], P[4] / 0.998))
+K, mechanisms = point.condensed()
+check(abs(K[0] - 12500) <= 1e-8 * 12500 and abs(K[10] - P[4] / 0.998) <= 1e-8 * 12500 and mechanisms == 9,
+      'material point: condensed C1111 %.9g, C1212 %.9g, %d degrees of freedom without stiffness' % (K[0], K[10], mechanisms))
 other = core.MaterialPoint(words='D accuracy tight', **lattice)
 other.load(point.state())
 F2 = [0.998, 0.0005, 0, 0, 0.999, 0, 0, 0, 0]

@@ -101,6 +101,17 @@ static void tangent_closed_form(void)
             printf("  point: (D) affine tangent of the lattice: largest difference %.2e of C1111 (the issue's 1e-8)\n",
                    worst_affine);
         }
+        {
+            double K[81], worst_condensed = 0.0;
+            int mechanisms = -1;
+            CHECK(sbc_point_tangent_condensed(p, K, &mechanisms, &err) == SBC_OK);
+            for (ij = 0; ij < 81; ++ij)
+                worst_condensed = fmax(worst_condensed, fabs(K[ij] - want[ij]) / c1111);
+            CHECK(worst_condensed <= 1e-8);
+            CHECK(mechanisms == 9); /* the rotations of the 9 interior discs: no tangential springs */
+            printf("  point: (D) condensed tangent of the lattice: largest difference %.2e of C1111 (the issue's 1e-8), "
+                   "%d degrees of freedom without stiffness\n", worst_condensed, mechanisms);
+        }
         printf("  point: (D) perturbation tangent of the 5 x 5 lattice: C1111 %.6g (closed form %.6g), C1212 %.6g "
                "(%.6g), largest difference %.2e of C1111\n", C[0], c1111, C[10], want[10], worst);
         for (kl = 0; kl < 81; ++kl)
@@ -108,6 +119,90 @@ static void tangent_closed_form(void)
                 printf("  point: C[%d] = %g, expected %g\n", kl, C[kl], want[kl]);
     }
     sbc_point_free(p);
+}
+
+/* the tangents at the current (uncommitted) state, which stays: a macro
+   Newton's consistent tangent. Committed at diag(0.999, 0.998), integrated
+   to diag(0.998, 0.997): C1212 = P22/F22 and C2121 = P11/F11 of the new F. */
+static void tangent_at_current(void)
+{
+    const sbc_point_def d = lattice("D accuracy tight");
+    sbc_error err;
+    sbc_point *p = sbc_point_create(&d, &err), *q = sbc_point_create(&d, &err);
+    double F[9], P[9], Pq[9], C[81], A[81], ratio, after[9], afterq[9], Fc[9], Pcm[9], Fq[9], Pqm[9];
+    CHECK(p != NULL && q != NULL);
+    if (!p || !q) {
+        printf("  point: %s\n", err.message);
+        sbc_point_free(p);
+        sbc_point_free(q);
+        return;
+    }
+    diag(0.999, 0.998, F);
+    CHECK(sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED);
+    sbc_point_commit(p);
+    CHECK(sbc_point_integrate(q, F, Pq, &ratio, &err) == SBC_POINT_CONVERGED);
+    sbc_point_commit(q);
+    diag(0.998, 0.997, F);
+    CHECK(sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED);
+    CHECK(sbc_point_integrate(q, F, Pq, &ratio, &err) == SBC_POINT_CONVERGED);
+    CHECK(sbc_point_tangent_perturbation(p, 1e-4, C, &err) == SBC_OK);
+    CHECK(sbc_point_tangent_affine(p, A, &err) == SBC_OK);
+    CHECK_REL(A[9 * 1 + 1], P[4] / F[4], 1e-8);
+    CHECK_REL(A[9 * 3 + 3], P[0] / F[0], 1e-8);
+    CHECK(fabs(C[9 * 1 + 1] - P[4] / F[4]) <= 1e-4 * N * KN / (N - 1));
+    CHECK(fabs(C[0] - N * KN / (N - 1)) <= 1e-4 * N * KN / (N - 1));
+    /* the point kept its current state: committed, it is q's, bit for bit */
+    sbc_point_commit(p);
+    sbc_point_commit(q);
+    sbc_point_committed(p, Fc, Pcm);
+    sbc_point_committed(q, Fq, Pqm);
+    CHECK(memcmp(Pcm, Pqm, sizeof Pq) == 0 && memcmp(Fc, Fq, sizeof F) == 0 && memcmp(Pcm, Pq, sizeof Pq) == 0);
+    diag(0.997, 0.997, F);
+    CHECK(sbc_point_integrate(p, F, after, &ratio, &err) == SBC_POINT_CONVERGED);
+    CHECK(sbc_point_integrate(q, F, afterq, &ratio, &err) == SBC_POINT_CONVERGED);
+    CHECK(memcmp(after, afterq, sizeof after) == 0);
+    printf("  point: tangents at the current F22 = 0.997: affine C1212 %.9g, perturbation %.9g, P22/F22 %.9g\n",
+           A[10], C[10], P[4] / 0.997);
+    sbc_point_free(p);
+    sbc_point_free(q);
+}
+
+/* the condensed tangent against the perturbation one on the frictional
+   lattice (ks 2e3 N/m, mu 0.4, nothing slides at diag(0.999, 0.998)): (D),
+   (P) and (T) within 1e-3 of |C| (the issue's figure before sliding) */
+static void condensed_frictional(void)
+{
+    static const char *words[3] = {"D accuracy tight", "P accuracy tight", "T accuracy tight"};
+    int b;
+    for (b = 0; b < 3; ++b) {
+        sbc_point_def d = lattice(words[b]);
+        sbc_error err;
+        sbc_point *p;
+        double F[9], P[9], C[81], K[81], ratio, norm = 0.0, diff = 0.0;
+        int ij, mechanisms = -1;
+        d.law.ks = 2e3;
+        d.law.mu = 0.4;
+        p = sbc_point_create(&d, &err);
+        CHECK(p != NULL);
+        if (!p) {
+            printf("  point: %s\n", err.message);
+            continue;
+        }
+        diag(0.999, 0.998, F);
+        CHECK(sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED);
+        CHECK(sbc_point_tangent_condensed(p, K, &mechanisms, &err) == SBC_OK);
+        CHECK(sbc_point_tangent_perturbation(p, 1e-5, C, &err) == SBC_OK);
+        for (ij = 0; ij < 81; ++ij) {
+            norm += C[ij] * C[ij];
+            diff += (C[ij] - K[ij]) * (C[ij] - K[ij]);
+        }
+        diff = sqrt(diff / norm);
+        CHECK(diff <= 1e-3);
+        CHECK(mechanisms <= 1);
+        printf("  point: %s, frictional lattice: condensed against perturbation %.2e of |C| (C1111 %.6g, %.6g; "
+               "C1212 %.6g, %.6g)\n", words[b], diff, K[0], C[0], K[10], C[10]);
+        sbc_point_free(p);
+    }
 }
 
 /* integrate, revert, integrate: the same bits; the state into a new point */
@@ -231,6 +326,10 @@ static void spheres_3d(void)
     }
     CHECK(worst_a <= 1e-8);
     CHECK(worst_p <= 1e-4);
+    { /* the condensed tangent is 2D's: refused by name in 3D */
+        double K[81];
+        CHECK(sbc_point_tangent_condensed(p, K, NULL, &err) == SBC_ERR_INPUT && strstr(err.message, "2D") != NULL);
+    }
     printf("  point 3d: (D) on the 4^3 lattice: C1111 %.6g (closed form %.6g); largest difference of the affine "
            "tangent %.2e, of the perturbation tangent %.2e of C1111\n", C[0], c1111, worst_a, worst_p);
     sbc_point_free(p);
@@ -297,5 +396,7 @@ void test_point(void)
     spheres_3d();
     refusals();
     tangent_closed_form();
+    tangent_at_current();
+    condensed_frictional();
     commit_revert_restore();
 }

@@ -120,6 +120,7 @@ def _load():
         'sbc_point_load': (I, [P, pd, ctypes.c_size_t, P]),
         'sbc_point_tangent_perturbation': (I, [P, D, pd, P]),
         'sbc_point_tangent_affine': (I, [P, pd, P]),
+        'sbc_point_tangent_condensed': (I, [P, pd, ctypes.POINTER(I), P]),
         'sbc_points_integrate': (I, [ctypes.POINTER(P), I, pd, pd, pi, pd, I, P]),
         'sbc_host_sealed': (I, [P]),
         'sbc_host_seal': (I, [P, pd, pd, pd]),
@@ -172,7 +173,8 @@ class MaterialPoint:
     """The aggregate as a material point (material_point.h, docs/fe2.md): a packing (x [dim n], dim 2 or 3)
     under (D), (P) or (T) on an embedded engine. integrate(F) -> (converged, P, step_ratio) from the committed state; commit(),
     revert(); state() -> bytes of the committed state, load(bytes) in a point made alike; tangent(h) -> C
-    (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation, tangent() the affine one. F and P:
+    (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation, tangent() the affine one, condensed()
+    the condensed one (2D). F and P:
     9 values, row-major 3 x 3 slots (the 2 x 2 block in 2D)."""
 
     def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6, box=None, dim=2):
@@ -213,8 +215,15 @@ class MaterialPoint:
         if library().sbc_point_load(self._p, (ctypes.c_double * n).from_buffer_copy(data), n, ctypes.byref(err)):
             raise ServoBCError(err.message.decode())
 
+    def condensed(self):
+        """The condensed tangent at the current state (2D): (C, mechanisms), C as tangent() gives it."""
+        C, count, err = (ctypes.c_double * 81)(), ctypes.c_int(), _Error()
+        if library().sbc_point_tangent_condensed(self._p, C, ctypes.byref(count), ctypes.byref(err)):
+            raise ServoBCError(err.message.decode())
+        return list(C), count.value
+
     def tangent(self, h=None):
-        """By perturbation of step h, or affine (Voigt) without h."""
+        """At the current state (the last integrate): by perturbation of step h, or affine (Voigt) without h."""
         C, err = (ctypes.c_double * 81)(), _Error()
         lib = library()
         status = lib.sbc_point_tangent_perturbation(self._p, h, C, ctypes.byref(err)) if h else \

@@ -7,8 +7,9 @@
  * the frame's forces, eq. 15 holding F), starting from its last committed
  * state; it commits the state of a converged global iteration or reverts to
  * the committed one, and stores the committed state per integration point as
- * an array of doubles. The tangent C_ijkl = dP_ij / dF_kl by perturbation
- * solves from the committed state. Like Box2D's b2WorldDef: a definition
+ * an array of doubles. The tangent C_ijkl = dP_ij / dF_kl at the current
+ * state (the last converged integrate: a macro Newton's consistent tangent)
+ * by perturbation solves from the committed state, or affine. Like Box2D's b2WorldDef: a definition
  * with its defaults, then create.
  *
  *   sbc_point_def d = sbc_point_def_default();
@@ -88,11 +89,14 @@ size_t sbc_point_state_size(const sbc_point *p);
 void sbc_point_save(const sbc_point *p, double *out);
 sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *err);
 
-/* C_ijkl = dP_ij / dF_kl at the committed state by central differences of
- * step h on each F_kl (2 dim^2 integrates from the committed state, which
- * the point is back at afterwards); C [81], C[9 (3i + j) + 3k + l], the
- * components beyond dim 0. Fails with the message of the first
- * perturbation that does not converge. */
+/* C_ijkl = dP_ij / dF_kl at the current F (of the last converged integrate
+ * since commit or revert, else the committed F) by central differences of
+ * step h on each F_kl: 2 dim^2 integrates from the committed state, the
+ * derivative of the map F -> P that integrate is (the consistent tangent of
+ * a macro Newton iteration); the point is back at its current state
+ * afterwards, bit for bit. C [81], C[9 (3i + j) + 3k + l], the components
+ * beyond dim 0. Fails with the message of the first perturbation that does
+ * not converge (C then 0). */
 sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], sbc_error *err);
 
 /* Many points at once (the integration points of a mesh): points[k] to F
@@ -105,7 +109,7 @@ sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], 
 sbc_status sbc_points_integrate(sbc_point *const *points, int count, const double *F, double *P, int *status,
                                 double *ratio, int threads, sbc_error *err);
 
-/* The affine (Voigt) tangent at the committed state: every particle
+/* The affine (Voigt) tangent at the current state: every particle
  * follows F, each contact c (reference branch L = F^-1 l of its current
  * branch l from a to b, unit normal n, overlap dn) stiffens by
  *   K = -kn n (x) n + (kn dn / |l|) (I - n (x) n) - ks (I - n (x) n)
@@ -117,6 +121,18 @@ sbc_status sbc_points_integrate(sbc_point *const *points, int count, const doubl
  * the aggregate, exact where it deforms affinely (a lattice under (D)).
  * Same layout as sbc_point_tangent_perturbation. */
 sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err);
+
+/* The condensed tangent at the current state (2D): the contact network's
+ * stiffness (normal springs, the tangential springs of sticking contacts,
+ * the slip law of sliding ones, the terms of the forces turning with their
+ * contacts) with the interior condensed out and the frame's kinematics of
+ * the point's condition applied: (D) the frame follows F, (P) its periodic
+ * pairs share a fluctuation and a rotation and their forces balance, (T)
+ * its forces are P A_q under eq. 15 (docs/fe2.md). Solved densely (a few
+ * thousand discs at most). *mechanisms (may be NULL): the degrees of
+ * freedom that carry no stiffness (rattlers, rotations of discs whose
+ * contacts all slide), set to zero. Same layout as the others. */
+sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanisms, sbc_error *err);
 
 #ifdef __cplusplus
 }

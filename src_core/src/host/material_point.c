@@ -2,6 +2,8 @@
  * embedded engine, its frame and the controller behind one F -> P call, with
  * the committed state kept as doubles. */
 #include "sbc/material_point.h"
+
+#include "condensed.h"
 #include "sbc/controller.h"
 #include "sbc/driver.h"
 #include "sbc/embedded/engine.h"
@@ -129,6 +131,7 @@ struct sbc_point {
     size_t size;
     int at_committed;      /* the engine and the controller hold the committed state */
     double F[9], P[9];     /* committed */
+    double Fc[9], Pc[9];   /* current: of the last converged integrate since commit or revert, else F, P */
     sbc_frictional law; /* the contact law (eq. 6), for the affine tangent */
 };
 
@@ -246,9 +249,8 @@ static sbc_status load_state(sbc_point *p, const double *in, size_t n, double F[
 
 void sbc_point_commit(sbc_point *p)
 {
-    const sbc_result *r = sbc_controller_result(p->ctl);
-    memcpy(p->F, r->F, sizeof p->F);
-    memcpy(p->P, r->P, sizeof p->P);
+    memcpy(p->F, p->Fc, sizeof p->F);
+    memcpy(p->P, p->Pc, sizeof p->P);
     save_current(p, p->F, p->P, p->committed);
     p->at_committed = 1;
 }
@@ -261,6 +263,8 @@ void sbc_point_revert(sbc_point *p)
         return;
     /* a state this point saved itself: it loads */
     load_state(p, p->committed, p->size, F, P, &err);
+    memcpy(p->Fc, p->F, sizeof p->F);
+    memcpy(p->Pc, p->P, sizeof p->P);
     p->at_committed = 1;
 }
 
@@ -283,6 +287,8 @@ sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *e
     memcpy(p->committed, in, sizeof(double) * n);
     memcpy(p->F, F, sizeof F);
     memcpy(p->P, P, sizeof P);
+    memcpy(p->Fc, F, sizeof F);
+    memcpy(p->Pc, P, sizeof P);
     p->at_committed = 1;
     return SBC_OK;
 }
@@ -346,6 +352,8 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
         sbc_point_free(p);
         return NULL;
     }
+    memcpy(p->Fc, sbc_controller_result(p->ctl)->F, sizeof p->Fc);
+    memcpy(p->Pc, sbc_controller_result(p->ctl)->P, sizeof p->Pc);
     sbc_point_commit(p);
     return p;
 }
@@ -363,7 +371,9 @@ sbc_point_status sbc_point_integrate(sbc_point *p, const double F[9], double P[9
         sbc_point_revert(p);
         return SBC_POINT_FAILED;
     }
-    memcpy(P, sbc_controller_result(p->ctl)->P, sizeof(double) * 9);
+    memcpy(p->Fc, sbc_controller_result(p->ctl)->F, sizeof p->Fc);
+    memcpy(p->Pc, sbc_controller_result(p->ctl)->P, sizeof p->Pc);
+    memcpy(P, p->Pc, sizeof(double) * 9);
     *step_ratio = 1.0;
     return SBC_POINT_CONVERGED;
 }
@@ -371,24 +381,43 @@ sbc_point_status sbc_point_integrate(sbc_point *p, const double F[9], double P[9
 sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], sbc_error *err)
 {
     const int dim = p->frame.dim;
-    double F[9], P[2][9], ratio;
+    double F0[9], Pc[9], F[9], P[2][9], ratio, *current = NULL;
     int k, l, side, ij;
+    sbc_status st = SBC_OK;
     memset(C, 0, sizeof(double) * 81);
     if (!(h > 0.0) || !isfinite(h))
         return sbc_fail(err, SBC_ERR_INPUT, "material point: perturbation step %g is not positive", h);
-    for (k = 0; k < dim; ++k)
-        for (l = 0; l < dim; ++l) {
-            for (side = 0; side < 2; ++side) {
-                memcpy(F, p->F, sizeof F);
+    memcpy(F0, p->Fc, sizeof F0);
+    memcpy(Pc, p->Pc, sizeof Pc);
+    if (!p->at_committed) { /* the current state comes back afterwards */
+        if (!(current = malloc(sizeof(double) * p->size)))
+            return sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
+        save_current(p, F0, Pc, current);
+    }
+    for (k = 0; k < dim && st == SBC_OK; ++k)
+        for (l = 0; l < dim && st == SBC_OK; ++l) {
+            for (side = 0; side < 2 && st == SBC_OK; ++side) {
+                memcpy(F, F0, sizeof F);
                 F[SBC_IJ(k, l)] += side ? -h : h;
                 if (sbc_point_integrate(p, F, P[side], &ratio, err) != SBC_POINT_CONVERGED)
-                    return err->status;
-                sbc_point_revert(p);
+                    st = err->status;
             }
-            for (ij = 0; ij < 9; ++ij) /* eq. 23's P at F + h e_kl and F - h e_kl */
+            for (ij = 0; ij < 9 && st == SBC_OK; ++ij) /* eq. 23's P at F + h e_kl and F - h e_kl */
                 C[9 * ij + SBC_IJ(k, l)] = (P[0][ij] - P[1][ij]) / (2.0 * h);
         }
-    return SBC_OK;
+    sbc_point_revert(p);
+    if (current) { /* a state this point saved itself: it loads */
+        sbc_error ignored;
+        double Fs[9], Ps[9];
+        load_state(p, current, p->size, Fs, Ps, &ignored);
+        memcpy(p->Fc, F0, sizeof F0);
+        memcpy(p->Pc, Pc, sizeof Pc);
+        p->at_committed = 0;
+        free(current);
+    }
+    if (st != SBC_OK)
+        memset(C, 0, sizeof(double) * 81);
+    return st;
 }
 
 sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
@@ -398,10 +427,9 @@ sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
     const sbc_frictional *law = &p->law;
     double Finv[9];
     int c, i, j, k, l;
-    sbc_point_revert(p);
     memset(C, 0, sizeof(double) * 81);
-    if (!sbc_tensor_inverse(dim, p->F, Finv))
-        return sbc_fail(err, SBC_ERR_GEOMETRY, "material point: the committed F cannot be inverted");
+    if (!sbc_tensor_inverse(dim, p->Fc, Finv))
+        return sbc_fail(err, SBC_ERR_GEOMETRY, "material point: the current F cannot be inverted");
     for (c = 0; c < npair; ++c) {
         double lv[3] = {0, 0, 0}, L[3], n[3] = {0, 0, 0}, K[9], len = 0.0, dn, fs;
         int ij[2], stick;
@@ -430,4 +458,28 @@ sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
                         C[9 * SBC_IJ(i, j) + SBC_IJ(k, l)] -= K[SBC_IJ(i, k)] * L[l] * L[j] / p->frame.V;
     }
     return SBC_OK;
+}
+
+sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanisms, sbc_error *err)
+{
+    sbc_network net;
+    sbc_engine_view w;
+    int ignored;
+    memset(C, 0, sizeof(double) * 81);
+    if (!mechanisms)
+        mechanisms = &ignored;
+    *mechanisms = 0;
+    if (p->frame.dim != 2)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: the condensed tangent is built for 2D points only "
+                        "(this one is 3D: use the affine or the perturbation tangent)");
+    w = sbc_engine_get_view(p->engine);
+    net.n = w.n;
+    net.x = w.x;
+    net.r = w.r;
+    net.npair = w.pair_count;
+    net.i = w.pair_i;
+    net.j = w.pair_j;
+    net.fs = w.pair_fs;
+    net.law = p->law;
+    return sbc_condensed_tangent(&net, &p->frame, p->settings.bc, C, mechanisms, err);
 }

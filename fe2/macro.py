@@ -1,0 +1,214 @@
+"""FE^2 on GetFEM: a plane-strain, finite-strain, quasi-static finite element model whose quadrature
+points are servo_bc material points (material_point.h through yade_adapter/servo_bc_core.py).
+
+Total Lagrangian: the unknown is the displacement u(X) on the reference mesh (bilinear quadrilaterals,
+2 x 2 Gauss points); at every Gauss point F = I + Grad u goes to the point, which returns the first
+Piola stress P (N/m: a 2D aggregate's force per unit length, so nodal forces are in N per unit
+thickness of the model). The residual and the tangent are GetFEM's generic assembly of
+
+    r_a = int P : Grad N_a dA            K_ab = int (C : Grad N_b) : Grad N_a dA,   C_ijkl = dP_ij/dF_kl
+
+with P and C stored at the Gauss points (GetFEM im_data, column-major). The macro Newton, its
+convergence test, the commit / revert of every point and the cut of a load step are ours (docs/fe2.md).
+"""
+import concurrent.futures
+import math
+import os
+import sys
+
+import getfem as gf
+import numpy as np
+import scipy.sparse
+import scipy.sparse.linalg
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'yade_adapter'))
+import servo_bc_core as core  # noqa: E402
+
+TANGENTS = ('condensed', 'affine', 'perturbation')
+
+
+class MacroFailure(RuntimeError):
+    """A load step that cannot be completed: the points failed below the smallest step, or the Newton did not
+    converge; the message names the step, the iteration and the residual."""
+
+
+def _column_major(rows, dim=2):
+    """9-slot row-major 3 x 3 tensors -> GetFEM's column-major dim x dim blocks, all points in one vector."""
+    out = np.empty((len(rows), dim * dim))
+    for k, t in enumerate(rows):
+        for i in range(dim):
+            for j in range(dim):
+                out[k, i + dim * j] = t[3 * i + j]
+    return out.ravel()
+
+
+def _tangent_column_major(rows, dim=2):
+    """81-slot C[9 (3i + j) + 3k + l] -> column-major dim^4 blocks (index i + d j + d^2 k + d^3 l)."""
+    d = dim
+    out = np.empty((len(rows), d ** 4))
+    for n, C in enumerate(rows):
+        for i in range(d):
+            for j in range(d):
+                for k in range(d):
+                    for l in range(d):
+                        out[n, i + d * j + d * d * k + d ** 3 * l] = C[9 * (3 * i + j) + 3 * k + l]
+    return out.ravel()
+
+
+class Macro:
+    """A rectangle [0, W] x [0, H] of nx x ny bilinear elements, a material point per Gauss point made by
+    make_point(index, X) (X the point's reference position, m). tangent: 'condensed', 'affine' or 'perturbation'
+    (step h)."""
+
+    def __init__(self, W, H, nx, ny, make_point, tangent='condensed', h=1e-5, threads=2):
+        if tangent not in TANGENTS:
+            raise ValueError("fe2: tangent '%s' (expected one of %s)" % (tangent, ', '.join(TANGENTS)))
+        self.tangent, self.h, self.threads = tangent, h, threads
+        self.mesh = gf.Mesh('cartesian', np.linspace(0.0, W, nx + 1), np.linspace(0.0, H, ny + 1))
+        self.mf = gf.MeshFem(self.mesh, 2)
+        self.mf.set_classical_fem(1)
+        self.mim = gf.MeshIm(self.mesh, gf.Integ('IM_GAUSS_PARALLELEPIPED(2,3)'))
+        self.md = gf.Model('real')
+        self.md.add_fem_variable('u', self.mf)
+        self.md.add_im_data('P', gf.MeshImData(self.mim, -1, [2, 2]))
+        self.md.add_im_data('C', gf.MeshImData(self.mim, -1, [2, 2, 2, 2]))
+        self.mimd_F = gf.MeshImData(self.mim, -1, [2, 2])
+        where = self.md.interpolation('X', gf.MeshImData(self.mim, -1, [2])).reshape(-1, 2)
+        self.points = [make_point(k, where[k]) for k in range(len(where))]
+        self.X = self.mf.basic_dof_nodes()          # [2, ndof] the node of each dof
+        self.comp = np.arange(self.mf.nbdof()) % 2   # the component of each dof (Q1 vector: interleaved)
+        self.U = np.zeros(self.mf.nbdof())
+        self.pool = concurrent.futures.ThreadPoolExecutor(max(1, threads))
+
+    # the fields at the Gauss points
+    def deformation(self, U):
+        """F at every Gauss point, 9-slot row-major (F33 = 1)."""
+        self.md.set_variable('u', U)
+        Fc = self.md.interpolation('Id(2)+Grad_u', self.mimd_F).reshape(-1, 4)
+        return [[f[0], f[2], 0.0, f[1], f[3], 0.0, 0.0, 0.0, 1.0] for f in Fc]
+
+    def internal_forces(self, P):
+        """r_a = int P : Grad N_a dA (N per unit thickness)."""
+        self.md.set_variable('P', _column_major(P))
+        return np.asarray(gf.asm_generic(self.mim, 1, 'P:Grad_Test_u', -1, self.md, 'select_output', 'u'))
+
+    def stiffness(self, C):
+        self.md.set_variable('C', _tangent_column_major(C))
+        K = gf.asm_generic(self.mim, 2, '(C:Grad_Test2_u):Grad_Test_u', -1, self.md, 'select_output', 'u', 'u')
+        jc, ir = K.csc_ind()
+        n = self.mf.nbdof()
+        return scipy.sparse.csc_matrix((np.asarray(K.csc_val()), np.asarray(ir), np.asarray(jc)), shape=(n, n))
+
+    def tangents(self):
+        """C at every point's current state (the last integrate), the points' own (material_point.h)."""
+        if self.tangent == 'condensed':
+            return list(self.pool.map(lambda p: p.condensed()[0], self.points))
+        h = self.h if self.tangent == 'perturbation' else None
+        return list(self.pool.map(lambda p: p.tangent(h), self.points))
+
+    # one load step
+    def newton(self, fixed, values, tol=1e-8, max_iterations=12, step=0):
+        """Newton from the committed state to the dofs `fixed` at `values`. Returns (converged, ratio, history):
+        history the residual norms relative to the reaction norm, ratio the points' suggested step ratio when
+        one failed (else 1). The points hold the state of the last iteration (commit or revert it)."""
+        free = np.setdiff1d(np.arange(self.mf.nbdof()), fixed)
+        U = self.U.copy()
+        U[fixed] = values
+        history = []
+        for iteration in range(max_iterations + 1):
+            P, ok, ratios, message = core.integrate_points(self.points, self.deformation(U), self.threads)
+            if not all(ok):
+                self.last_message = 'step %d, iteration %d: %s' % (step, iteration, message)
+                return False, min(ratios), history
+            r = self.internal_forces(P)
+            reaction = np.linalg.norm(r[fixed])
+            norm = np.linalg.norm(r[free]) / (reaction if reaction > 0 else 1.0)
+            history.append(norm)
+            if norm <= tol:
+                self.trial_U, self.trial_P, self.trial_r = U, P, r
+                return True, 1.0, history
+            if iteration == max_iterations:
+                break
+            K = self.stiffness(self.tangents())
+            U[free] -= scipy.sparse.linalg.spsolve(K[free][:, free].tocsc(), r[free])
+        self.last_message = 'step %d: the macro Newton did not converge in %d iterations (residual %.3g of the ' \
+            'reaction)' % (step, max_iterations, history[-1])
+        return False, 0.5, history
+
+    def commit(self):
+        for p in self.points:
+            p.commit()
+        self.U = self.trial_U
+
+    def revert(self):
+        for p in self.points:
+            p.revert()
+
+    def load(self, fixed, values_at, steps, tol=1e-8, max_iterations=12, min_fraction=1e-3, on_step=None):
+        """The load path t in [0, 1] in `steps` equal steps, the dofs `fixed` at values_at(t); a step whose points
+        fail or whose Newton does not converge is reverted and cut (by the points' ratio, else by half), down to
+        min_fraction of a step. on_step(t, macro, history) after every committed step."""
+        t, dt, cuts, k = 0.0, 1.0 / steps, 0, 0
+        while t < 1.0 - 1e-12:
+            dt = min(dt, 1.0 - t)
+            ok, ratio, history = self.newton(fixed, values_at(t + dt), tol, max_iterations, k + 1)
+            if not ok:
+                self.revert()
+                cuts += 1
+                dt *= ratio
+                if dt < min_fraction / steps:
+                    raise MacroFailure('fe2: load step at t = %.6g cut below %.3g of a step: %s'
+                                       % (t, min_fraction, self.last_message))
+                continue
+            self.commit()
+            t += dt
+            k += 1
+            if on_step:
+                on_step(t, self, history)
+        return cuts
+
+    def dofs_where(self, predicate):
+        """The dofs whose node satisfies predicate(x, y, component)."""
+        return np.array([k for k in range(self.mf.nbdof()) if predicate(self.X[0, k], self.X[1, k], self.comp[k])],
+                        dtype=int)
+
+
+def lattice_point(words, N=5, spacing=2e-3, radius=1.01e-3, kn=1e4, ks=2e3, mu=0.4, density=2e3, dt=2e-6):
+    """A material point on a prestressed N x N square lattice (radius > spacing / 2), frictional."""
+    x = [c * spacing for j in range(N) for i in range(N) for c in (i, j)]
+    return core.MaterialPoint(x, [radius] * (N * N), words, kn=kn, ks=ks, mu=mu, density=density, dt=dt)
+
+
+def read_packing(path):
+    """A 2D packing written by the runner's `write_packing text`: x [2n], r [n], box [4] or None."""
+    x, r, box = [], [], None
+    with open(path) as f:
+        for line in f:
+            words = line.split()
+            if not words or words[0].startswith('#'):
+                continue
+            if words[0] == 'box':
+                box = [float(v) for v in words[1:5]]
+                continue
+            x += [float(words[0]), float(words[1])]
+            r.append(float(words[2]))
+    return x, r, box
+
+
+def boundary_forces(P, W, H, nx, ny, X, comp):
+    """The nodal forces of a uniform P on the rectangle's edges (f_a = P . int N_a N0 dS), per dof."""
+    f = np.zeros(len(comp))
+    hx, hy = W / nx, H / ny
+    for k in range(len(comp)):
+        x, y, i = X[0, k], X[1, k], comp[k]
+        for on, normal, share in ((math.isclose(x, 0.0, abs_tol=1e-12 * W), (-1.0, 0.0), hy),
+                                  (math.isclose(x, W, abs_tol=1e-12 * W), (1.0, 0.0), hy),
+                                  (math.isclose(y, 0.0, abs_tol=1e-12 * H), (0.0, -1.0), hx),
+                                  (math.isclose(y, H, abs_tol=1e-12 * H), (0.0, 1.0), hx)):
+            if not on:
+                continue
+            ends = (normal[0] != 0.0 and (math.isclose(y, 0.0, abs_tol=1e-12 * H) or math.isclose(y, H, abs_tol=1e-12 * H))) \
+                or (normal[1] != 0.0 and (math.isclose(x, 0.0, abs_tol=1e-12 * W) or math.isclose(x, W, abs_tol=1e-12 * W)))
+            length = share / 2.0 if ends else share
+            f[k] += (P[3 * i] * normal[0] + P[3 * i + 1] * normal[1]) * length
+    return f

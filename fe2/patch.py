@@ -1,0 +1,74 @@
+"""The FE^2 patch test (make fe2-patch, docs/fe2.md): a 3 x 3 mesh whose 36 Gauss points carry the same
+aggregate (a prestressed 5 x 5 frictional lattice) under (D), (P) and (T).
+
+1. The mesh deformed uniformly by F (every node at u = (F - I) X): the nodal forces equal those of the single
+   aggregate's P on the mesh's edges, f_a = P . int N_a N0 dS (zero inside).
+2. The boundary nodes at (F - I) X, the four inside nodes free and started at u = 0: the macro Newton with the
+   condensed tangent finds the uniform state again; its residual ratios and those of the perturbation and the
+   affine tangents are printed, and the nodal forces at convergence against the same closed form.
+
+Prints one line per condition and tangent, then `patch max relative difference VALUE` (the largest over
+everything above with the condensed tangent, relative to the largest closed-form nodal force); exits 1 when it
+exceeds 1e-6 or a Newton with the condensed or the perturbation tangent does not converge.
+Usage: python3 fe2/patch.py [TANGENT ...]   (default: condensed affine; perturbation on request)"""
+import sys
+import time
+
+import numpy as np
+
+import macro
+
+W, H, NX, NY = 0.3, 0.3, 3, 3
+F = [0.9985, 0.0008, 0.0, -0.0003, 0.999, 0.0, 0.0, 0.0, 1.0]
+LIMIT = 1e-6
+TANGENTS = sys.argv[1:] or ['condensed', 'affine']
+for name in TANGENTS:
+    if name not in macro.TANGENTS:
+        sys.exit("fe2/patch.py: tangent '%s' (expected %s)" % (name, ', '.join(macro.TANGENTS)))
+
+
+def uniform(model):
+    return np.array([(F[3 * c] - (1.0 if c == 0 else 0.0)) * x + (F[3 * c + 1] - (1.0 if c == 1 else 0.0)) * y
+                     for x, y, c in zip(model.X[0], model.X[1], model.comp)])
+
+
+def relative(f, want):
+    return np.max(np.abs(f - want)) / np.max(np.abs(want))
+
+
+worst, failures = 0.0, 0
+for bc in ('D', 'P', 'T'):
+    words = '%s accuracy tight' % bc
+    single = macro.lattice_point(words)
+    ok, P, _ = single.integrate(F)
+    if not ok:
+        print('FAIL patch %s: the single aggregate: %s' % (bc, single.message))
+        failures += 1
+        continue
+    for tangent in TANGENTS:
+        t0 = time.time()
+        model = macro.Macro(W, H, NX, NY, lambda k, X: macro.lattice_point(words), tangent=tangent)
+        want = macro.boundary_forces(P, W, H, NX, NY, model.X, model.comp)
+        target = uniform(model)
+        if tangent == TANGENTS[0]:
+            P_all, conv, _, message = macro.core.integrate_points(model.points, model.deformation(target), 2)
+            uniform_diff = relative(model.internal_forces(P_all), want) if all(conv) else float('inf')
+            worst = max(worst, uniform_diff)
+            print('patch %s uniform: 36 points, nodal forces against P . int N_a N0 dS: %.3e%s'
+                  % (bc, uniform_diff, '' if all(conv) else ' (' + message + ')'))
+        boundary = model.dofs_where(lambda x, y, c: x in (0.0, W) or y in (0.0, H) or
+                                    np.isclose(x, W) or np.isclose(y, H))
+        converged, _, history = model.newton(boundary, target[boundary], tol=1e-8, max_iterations=20)
+        newton_diff = relative(model.trial_r, want) if converged else float('inf')
+        ratios = ['%.2e' % v for v in history]
+        print('patch %s Newton %-12s %2d iterations, residual/reaction %s; nodal forces %.3e, largest |u - (F - I) X| '
+              '%.2e m (%.1f s)' % (bc, tangent, len(history) - 1, ' '.join(ratios), newton_diff,
+                                   np.max(np.abs(model.trial_U - target)) if converged else float('nan'),
+                                   time.time() - t0))
+        if tangent == 'condensed':
+            worst = max(worst, newton_diff)
+        if not converged and tangent != 'affine':
+            print('FAIL patch %s: %s' % (bc, model.last_message))
+            failures += 1
+print('patch max relative difference %.3e' % worst)
+sys.exit(1 if failures or not worst <= LIMIT else 0)

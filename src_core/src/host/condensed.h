@@ -1,0 +1,32 @@
+/* Private: the condensed tangent of an aggregate (material_point.c, docs/fe2.md). */
+#ifndef SBC_CONDENSED_H
+#define SBC_CONDENSED_H
+
+#include "sbc/contact.h"
+#include "sbc/frame.h"
+#include "sbc/settings.h"
+#include "sbc/status.h"
+
+/* The contact network of a 2D disc aggregate in its current state. */
+typedef struct sbc_network {
+    int n;              /* discs */
+    const double *x;    /* [2n] centres, m */
+    const double *r;    /* [n] radii, m */
+    int npair;          /* pairs of the engine's list (open ones are skipped) */
+    const int *i, *j;   /* [npair] */
+    const double *fs;   /* [npair] tangential spring force, N, in the engine's convention: the force on i
+                           is -fn n + fs t with n from i to j and t = (-n_y, n_x); NULL without friction */
+    sbc_frictional law; /* eq. 6 */
+} sbc_network;
+
+/* C_ijkl = dP_ij / dF_kl (C[9 (3i + j) + 3k + l]) of the aggregate at
+ * equilibrium under bc (D, P or T) on frame f: the stiffness of the contact
+ * network (normal springs, tangential springs of sticking contacts, the slip
+ * law of sliding ones, the terms of the forces turning with their contacts)
+ * with the interior's and the free frame's degrees of freedom condensed out
+ * and the frame's kinematics of bc applied. *mechanisms: the degrees of
+ * freedom found to carry no stiffness (set to zero). */
+sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc_bc bc, double C[81],
+                                 int *mechanisms, sbc_error *err);
+
+#endif
