@@ -3,7 +3,8 @@ condensed tangent"): generate periodic n0 40 (53 discs), kn 1e4, ks 2e3 N/m, mu 
 F = diag(0.9995, 0.9995) where no contact slides: (D) and (P) within 1e-3 of |C| (the issue's figure); the affine
 tangent's excess over the perturbation one reported. Then sheared to F12 = 0.002, where contacts slide: the
 differences reported. (D) runs with `speed 1e-4` (see the docs: at the preset's frame speed the (D) relaxation's
-path leaves 2.7e-3 of |C| in the perturbation tangent itself).
+path leaves 2.7e-3 of |C| in the perturbation tangent itself). In 3D, (D) on a generated 71-sphere packing
+(generate periodic n0 30, strain 0.002) within 1e-3 of |C| (its (P) perturbation tangent is no reference: the docs).
 Prints "N passed, N failed". Usage: python3 tests/tangent_irregular.py LIBSERVO_BC.so SERVO_BC"""
 import math
 import os
@@ -31,11 +32,11 @@ def relative(C, reference):
     return math.sqrt(sum((C[c] - reference[c]) ** 2 for c in COMPONENTS)) / norm
 
 
-with tempfile.TemporaryDirectory() as tmp:
-    path = os.path.join(tmp, 'packing.txt')
+def generated(tmp, dim, generate, law):
+    path = os.path.join(tmp, 'packing%d.txt' % dim)
     with open(os.path.join(tmp, 'make.sbc'), 'w') as f:
-        f.write('dimension 2\ncontact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2e3\ntimestep 1e-6\n'
-                'generate periodic n0 40 rmin 1e-3 polydispersity 2 seed 3 strain 0.01\nwrite_packing text %s\n' % path)
+        f.write('dimension %d\ncontact frictional %s\ndensity 2e3\ntimestep 1e-6\n%s\nwrite_packing text %s\n'
+                % (dim, law, generate, path))
     subprocess.run([runner, os.path.join(tmp, 'make.sbc')], check=True, capture_output=True)
     x, r, box = [], [], None
     for line in open(path):
@@ -45,8 +46,25 @@ with tempfile.TemporaryDirectory() as tmp:
         if w[0] == 'box':
             box = [float(v) for v in w[1:5]]
         else:
-            x += [float(w[0]), float(w[1])]
-            r.append(float(w[2]))
+            x += [float(v) for v in w[:dim]]
+            r.append(float(w[dim]))
+    return x, r, box
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    x, r, box = generated(tmp, 2, 'generate periodic n0 40 rmin 1e-3 polydispersity 2 seed 3 strain 0.01',
+                          'kn 1e4 ks 2e3 mu 0.4')
+    x3, r3, _ = generated(tmp, 3, 'generate periodic n0 30 rmin 1e-3 polydispersity 1.5 seed 1 strain 0.002',
+                          'kn 1e4 ks 2e3 mu 0.4')
+point = core.MaterialPoint(x3, r3, 'D accuracy tight speed 1e-4', kn=1e4, ks=2e3, mu=0.4, density=2650, dt=9e-6, dim=3)
+ok, P, _ = point.integrate([0.9995, 0, 0, 0, 0.9995, 0, 0, 0, 0.9995])
+point.commit()
+K, mechanisms = point.condensed()
+C = point.tangent(1e-6)
+norm = math.sqrt(sum(v * v for v in C))
+diff = math.sqrt(sum((a - b) ** 2 for a, b in zip(K, C))) / norm
+check(ok and diff <= 1e-3, '(D) on %d spheres at F = 0.9995 I: condensed against perturbation %.2e of |C| (C1111 %.4g, %.4g)'
+      % (len(r3), diff, K[0], C[0]))
 
 for bc, extra in (('D', ' speed 1e-4'), ('P', '')):
     point = core.MaterialPoint(x, r, '%s accuracy tight%s' % (bc, extra), kn=1e4, ks=2e3, mu=0.4, density=2e3,

@@ -167,42 +167,47 @@ static void tangent_at_current(void)
     sbc_point_free(q);
 }
 
-/* the condensed tangent against the perturbation one on the frictional
-   lattice (ks 2e3 N/m, mu 0.4, nothing slides at diag(0.999, 0.998)): (D),
-   (P) and (T) within 1e-3 of |C| (the issue's figure before sliding) */
+/* the condensed tangent of a frictional point (ks 2e3 N/m, mu 0.4) at F
+   against its perturbation tangent of step h: within 1e-3 of |C| (the
+   issue's figure before sliding), at most max_mechanisms without stiffness */
+static void condensed_against_perturbation(sbc_point_def d, const double F[9], double h, int max_mechanisms,
+                                           const char *label)
+{
+    sbc_error err;
+    sbc_point *p;
+    double P[9], C[81], K[81], ratio, norm = 0.0, diff = 0.0;
+    int ij, mechanisms = -1;
+    d.law.ks = 2e3;
+    d.law.mu = 0.4;
+    p = sbc_point_create(&d, &err);
+    CHECK(p != NULL);
+    if (!p) {
+        printf("  point: %s\n", err.message);
+        return;
+    }
+    CHECK(sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED);
+    CHECK(sbc_point_tangent_condensed(p, K, &mechanisms, &err) == SBC_OK);
+    CHECK(sbc_point_tangent_perturbation(p, h, C, &err) == SBC_OK);
+    for (ij = 0; ij < 81; ++ij) {
+        norm += C[ij] * C[ij];
+        diff += (C[ij] - K[ij]) * (C[ij] - K[ij]);
+    }
+    diff = sqrt(diff / norm);
+    CHECK(diff <= 1e-3);
+    CHECK(mechanisms <= max_mechanisms);
+    printf("  point: %s, %s: condensed against perturbation %.2e of |C| (C1111 %.6g, %.6g; C1212 %.6g, %.6g)\n",
+           d.words, label, diff, K[0], C[0], K[10], C[10]);
+    sbc_point_free(p);
+}
+
+/* the frictional 5 x 5 lattice at diag(0.999, 0.998), where nothing slides: (D), (P), (T) */
 static void condensed_frictional(void)
 {
-    static const char *words[3] = {"D accuracy tight", "P accuracy tight", "T accuracy tight"};
-    int b;
-    for (b = 0; b < 3; ++b) {
-        sbc_point_def d = lattice(words[b]);
-        sbc_error err;
-        sbc_point *p;
-        double F[9], P[9], C[81], K[81], ratio, norm = 0.0, diff = 0.0;
-        int ij, mechanisms = -1;
-        d.law.ks = 2e3;
-        d.law.mu = 0.4;
-        p = sbc_point_create(&d, &err);
-        CHECK(p != NULL);
-        if (!p) {
-            printf("  point: %s\n", err.message);
-            continue;
-        }
-        diag(0.999, 0.998, F);
-        CHECK(sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED);
-        CHECK(sbc_point_tangent_condensed(p, K, &mechanisms, &err) == SBC_OK);
-        CHECK(sbc_point_tangent_perturbation(p, 1e-5, C, &err) == SBC_OK);
-        for (ij = 0; ij < 81; ++ij) {
-            norm += C[ij] * C[ij];
-            diff += (C[ij] - K[ij]) * (C[ij] - K[ij]);
-        }
-        diff = sqrt(diff / norm);
-        CHECK(diff <= 1e-3);
-        CHECK(mechanisms <= 1);
-        printf("  point: %s, frictional lattice: condensed against perturbation %.2e of |C| (C1111 %.6g, %.6g; "
-               "C1212 %.6g, %.6g)\n", words[b], diff, K[0], C[0], K[10], C[10]);
-        sbc_point_free(p);
-    }
+    double F[9];
+    diag(0.999, 0.998, F);
+    condensed_against_perturbation(lattice("D accuracy tight"), F, 1e-5, 1, "frictional lattice");
+    condensed_against_perturbation(lattice("P accuracy tight"), F, 1e-5, 1, "frictional lattice");
+    condensed_against_perturbation(lattice("T accuracy tight"), F, 1e-5, 1, "frictional lattice");
 }
 
 /* integrate, revert, integrate: the same bits; the state into a new point */
@@ -296,6 +301,14 @@ static sbc_point_def cube(const char *words)
     return d;
 }
 
+/* the frictional 4^3 sphere lattice at a sheared F: (D) and (P) */
+static void condensed_3d(void)
+{
+    const double F[9] = {0.999, 0.0003, 0, 0, 0.998, 0.0002, 0, 0, 0.997};
+    condensed_against_perturbation(cube("D accuracy tight"), F, 1e-6, 0, "frictional 4^3 lattice");
+    condensed_against_perturbation(cube("P accuracy tight"), F, 1e-6, 0, "frictional 4^3 lattice");
+}
+
 static void spheres_3d(void)
 {
     const sbc_point_def d = cube("D accuracy tight");
@@ -326,9 +339,16 @@ static void spheres_3d(void)
     }
     CHECK(worst_a <= 1e-8);
     CHECK(worst_p <= 1e-4);
-    { /* the condensed tangent is 2D's: refused by name in 3D */
-        double K[81];
-        CHECK(sbc_point_tangent_condensed(p, K, NULL, &err) == SBC_ERR_INPUT && strstr(err.message, "2D") != NULL);
+    {
+        double K[81], worst_k = 0.0;
+        int mechanisms = -1;
+        CHECK(sbc_point_tangent_condensed(p, K, &mechanisms, &err) == SBC_OK);
+        for (ij = 0; ij < 81; ++ij)
+            worst_k = fmax(worst_k, fabs(K[ij] - want[ij]) / c1111);
+        CHECK(worst_k <= 1e-8);
+        CHECK(mechanisms == 3 * 8); /* the rotations of the 8 interior spheres: no tangential springs */
+        printf("  point 3d: (D) condensed tangent of the 4^3 lattice: largest difference %.2e of C1111, %d degrees "
+               "of freedom without stiffness\n", worst_k, mechanisms);
     }
     printf("  point 3d: (D) on the 4^3 lattice: C1111 %.6g (closed form %.6g); largest difference of the affine "
            "tangent %.2e, of the perturbation tangent %.2e of C1111\n", C[0], c1111, worst_a, worst_p);
@@ -394,6 +414,7 @@ void test_point(void)
 {
     batch();
     spheres_3d();
+    condensed_3d();
     refusals();
     tangent_closed_form();
     tangent_at_current();

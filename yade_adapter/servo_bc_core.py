@@ -174,7 +174,7 @@ class MaterialPoint:
     under (D), (P) or (T) on an embedded engine. integrate(F) -> (converged, P, step_ratio) from the committed state; commit(),
     revert(); state() -> bytes of the committed state, load(bytes) in a point made alike; tangent(h) -> C
     (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation, tangent() the affine one, condensed()
-    the condensed one (2D). F and P:
+    the condensed one. F and P:
     9 values, row-major 3 x 3 slots (the 2 x 2 block in 2D)."""
 
     def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6, box=None, dim=2):
@@ -216,7 +216,7 @@ class MaterialPoint:
             raise ServoBCError(err.message.decode())
 
     def condensed(self):
-        """The condensed tangent at the current state (2D): (C, mechanisms), C as tangent() gives it."""
+        """The condensed tangent at the current state: (C, mechanisms), C as tangent() gives it."""
         C, count, err = (ctypes.c_double * 81)(), ctypes.c_int(), _Error()
         if library().sbc_point_tangent_condensed(self._p, C, ctypes.byref(count), ctypes.byref(err)):
             raise ServoBCError(err.message.decode())

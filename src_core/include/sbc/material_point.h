@@ -9,7 +9,7 @@
  * the committed one, and stores the committed state per integration point as
  * an array of doubles. The tangent C_ijkl = dP_ij / dF_kl at the current
  * state (the last converged integrate: a macro Newton's consistent tangent)
- * by perturbation solves from the committed state, or affine. Like Box2D's b2WorldDef: a definition
+ * by perturbation solves from the committed state, affine, or condensed. Like Box2D's b2WorldDef: a definition
  * with its defaults, then create.
  *
  *   sbc_point_def d = sbc_point_def_default();
@@ -18,8 +18,7 @@
  *   if (sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED)
  *       sbc_point_commit(p);                          else: cut the step by ratio
  *
- * The condensed tangent, mixed conditions and bonds are not in this
- * version (docs/fe2.md). */
+ * Mixed conditions and bonds are not in this version (docs/fe2.md). */
 #ifndef SBC_MATERIAL_POINT_H
 #define SBC_MATERIAL_POINT_H
 
@@ -122,14 +121,15 @@ sbc_status sbc_points_integrate(sbc_point *const *points, int count, const doubl
  * Same layout as sbc_point_tangent_perturbation. */
 sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err);
 
-/* The condensed tangent at the current state (2D): the contact network's
+/* The condensed tangent at the current state: the contact network's
  * stiffness (normal springs, the tangential springs of sticking contacts,
  * the slip law of sliding ones, the terms of the forces turning with their
  * contacts) with the interior condensed out and the frame's kinematics of
  * the point's condition applied: (D) the frame follows F, (P) its periodic
  * pairs share a fluctuation and a rotation and their forces balance, (T)
- * its forces are P A_q under eq. 15 (docs/fe2.md). Solved densely (a few
- * thousand discs at most). *mechanisms (may be NULL): the degrees of
+ * its forces are P A_q under eq. 15 (docs/fe2.md). 2D and 3D. Solved
+ * densely: memory grows as the square of the degrees of freedom (3 per
+ * disc, 6 per sphere), a few thousand discs or a thousand spheres at most. *mechanisms (may be NULL): the degrees of
  * freedom that carry no stiffness (rattlers, rotations of discs whose
  * contacts all slide), set to zero. Same layout as the others. */
 sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanisms, sbc_error *err);

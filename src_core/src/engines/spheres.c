@@ -554,12 +554,12 @@ sbc_spheres_view sbc_spheres_get_view(const sbc_spheres *e)
     return w;
 }
 
-void sbc_spheres_pair(const sbc_spheres *e, int k, int ij[2], double *fs)
+void sbc_spheres_pair(const sbc_spheres *e, int k, int ij[2], double fs[3])
 {
     const pair *p = &e->pairs[k];
     ij[0] = p->i;
     ij[1] = p->j;
-    *fs = sqrt(p->c.fs[0] * p->c.fs[0] + p->c.fs[1] * p->c.fs[1] + p->c.fs[2] * p->c.fs[2]);
+    memcpy(fs, p->c.fs, sizeof p->c.fs);
 }
 
 /* ---- the state (sbc_spheres_save, sbc_spheres_load) ---- */

@@ -1,7 +1,8 @@
-/* The condensed tangent of a 2D disc aggregate (docs/fe2.md, "The condensed
+/* The condensed tangent of an aggregate (docs/fe2.md, "The condensed
  * tangent"): the contact network's stiffness, linearized about the current
  * equilibrium, with everything but the frame's prescribed kinematics solved
- * for. Degrees of freedom: u_x, u_y and theta per disc (3p, 3p + 1, 3p + 2). */
+ * for. Degrees of freedom per particle: the translation and the rotation
+ * (u_x, u_y, theta in 2D; u, theta as 3-vectors in 3D). */
 #include "condensed.h"
 
 #include <math.h>
@@ -10,19 +11,22 @@
 
 #include "../base/dense.h"
 #include "sbc/homogenize.h"
+#include "sbc/tensor.h"
 
-#define DOF 3 /* per disc in 2D */
 
-/* d(loads)/d(dofs) of one contact, loads (f_i, tau_i, f_j, tau_j) over dofs
- * (u_i, theta_i, u_j, theta_j). With l = x_j - x_i, d = |l|, n = l/d,
- * t = (-n_y, n_x), overlap dn = R_i + R_j - d, fn = kn dn, and the force on
- * j f_j = fn n - fs t (eq. 6; the engine's moments tau = R fs on both):
+#define MAXB 12 /* the largest contact block: 2 spheres x 6 dofs */
+
+/* 2D: d(loads)/d(dofs) of one contact, loads (f_i, tau_i, f_j, tau_j) over
+ * dofs (u_i, theta_i, u_j, theta_j). With l = x_j - x_i, d = |l|, n = l/d,
+ * t = (-n_y, n_x), overlap dn = R_i + R_j - d, fn = kn dn, the engine's
+ * tangential force fs = (the spring's force on i) . t, and the force on j
+ * f_j = fn n - fs t (eq. 6; the engine's moments tau = R fs on both):
  *   d f_j = -kn n (n.dl) + (fn/d) t (t.dl) + (fs/d) n (t.dl) - dfs t,  f_i = -f_j
  *   dfs = ks (t.dl - R_i dtheta_i - R_j dtheta_j)        sticking
  *   dfs = -sgn(fs) mu kn (n.dl)                           sliding (|fs| at mu fn)
  * with dl = du_j - du_i; the first two terms turn the normal force with the
  * branch, the third the tangential one. */
-static int contact_block(const sbc_network *net, int k, double B[6][6])
+static int block_2d(const sbc_network *net, int k, double B[MAXB][MAXB])
 {
     const int a = net->i[k], b = net->j[k];
     const double *xa = &net->x[2 * a], *xb = &net->x[2 * b];
@@ -38,7 +42,7 @@ static int contact_block(const sbc_network *net, int k, double B[6][6])
     t[0] = -n[1];
     t[1] = n[0];
     fn = law->kn * dn;
-    fs = net->fs ? net->fs[k] : 0.0;
+    fs = net->fs ? net->fs[3 * k] * t[0] + net->fs[3 * k + 1] * t[1] : 0.0;
     slide = law->ks > 0.0 && fabs(fs) >= law->mu * fn * (1.0 - 1e-12);
     stick = law->ks > 0.0 && !slide;
     for (p = 0; p < 2; ++p)
@@ -62,7 +66,6 @@ static int contact_block(const sbc_network *net, int k, double B[6][6])
                 M[p][q] += s * law->mu * law->kn * t[p] * n[q];
         }
     }
-    memset(B, 0, sizeof(double) * 36);
     for (p = 0; p < 2; ++p) {
         for (q = 0; q < 2; ++q) {
             B[3 + p][3 + q] = M[p][q];  /* f_j over u_j */
@@ -87,8 +90,149 @@ static int contact_block(const sbc_network *net, int k, double B[6][6])
     return 1;
 }
 
-/* the global dof of slot s (0..5) of contact k */
-static int slot_dof(const sbc_network *net, int k, int s) { return DOF * (s < 3 ? net->i[k] : net->j[k]) + s % 3; }
+/* [v]x w = v x w */
+static void cross_matrix(const double v[3], double X[3][3])
+{
+    X[0][0] = X[1][1] = X[2][2] = 0.0;
+    X[0][1] = -v[2];
+    X[0][2] = v[1];
+    X[1][0] = v[2];
+    X[1][2] = -v[0];
+    X[2][0] = -v[1];
+    X[2][1] = v[0];
+}
+
+/* 3D: the same over (u_i, theta_i, u_j, theta_j), each 3 (spheres.c and
+ * bpm_bond.c's sbc_broken_bond_increment). With l, L, n, overlap dn as in
+ * 2D, P = I - n n, the contact point halfway across the overlap
+ * (r_i = s n, r_j = (s - L) n, s = R_i - dn/2) and the force on i
+ * f = -kn dn n + fs (fs the spring, in the contact plane):
+ *   d f = [kn n n - (kn dn / L) P] dl + dfs
+ *   dfs = ks P dl + ks s [n]x dtheta_i - ks (s - L) [n]x dtheta_j - n (fs . dl) / L   sticking
+ * (the spring loads with the contact point's tangential slip and is kept in
+ * the turning plane), and sliding (|fs| at mu fn, direction e):
+ *   dfs = -mu kn (n . dl) e + (I - e e) (the sticking dfs);
+ * the loads are f on i, -f on j, the moments r_i x f and f x r_j, whose
+ * arms change with dl too. */
+static int block_3d(const sbc_network *net, int k, double B[MAXB][MAXB])
+{
+    const int a = net->i[k], b = net->j[k];
+    const double *xa = &net->x[3 * a], *xb = &net->x[3 * b];
+    const sbc_frictional *law = &net->law;
+    double l[3], n[3], L = 0.0, dn, s, fn, fs[3] = {0, 0, 0}, f[3], e[3] = {0, 0, 0}, mag;
+    double P[3][3], N[3][3], Fx[3][3], M[3][3], Wa[3][3], Wb[3][3], Ra[3][3], Rb[3][3], Ga[3][3], Gb[3][3];
+    double D[3][3]; /* rows of df over (u_i, theta_i, u_j, theta_j) as 3 x 12 */
+    double row[3][MAXB];
+    int p, q, m, stick, slide;
+    for (p = 0; p < 3; ++p) {
+        l[p] = xb[p] - xa[p];
+        L += l[p] * l[p];
+    }
+    L = sqrt(L);
+    dn = net->r[a] + net->r[b] - L;
+    if (!(dn > 0.0) || !(L > 0.0))
+        return 0; /* open */
+    for (p = 0; p < 3; ++p)
+        n[p] = l[p] / L;
+    s = net->r[a] - 0.5 * dn;
+    fn = law->kn * dn;
+    if (net->fs)
+        for (p = 0; p < 3; ++p)
+            fs[p] = net->fs[3 * k + p];
+    mag = sqrt(sbc_dot3(fs, fs));
+    slide = law->ks > 0.0 && mag >= law->mu * fn * (1.0 - 1e-12);
+    stick = law->ks > 0.0 && !slide;
+    for (p = 0; p < 3; ++p) {
+        f[p] = -fn * n[p] + fs[p];
+        if (slide && mag > 0.0)
+            e[p] = fs[p] / mag;
+    }
+    cross_matrix(n, N);
+    cross_matrix(f, Fx);
+    for (p = 0; p < 3; ++p)
+        for (q = 0; q < 3; ++q) {
+            const double I = p == q ? 1.0 : 0.0;
+            double tan_dl, tan_a, tan_b; /* the sticking dfs */
+            P[p][q] = I - n[p] * n[q];
+            tan_dl = (law->ks > 0.0 ? law->ks * P[p][q] : 0.0) - n[p] * fs[q] / L;
+            tan_a = law->ks * s * N[p][q];
+            tan_b = -law->ks * (s - L) * N[p][q];
+            M[p][q] = law->kn * n[p] * n[q] - law->kn * dn / L * P[p][q] + (stick ? tan_dl : 0.0);
+            Wa[p][q] = stick ? tan_a : 0.0;
+            Wb[p][q] = stick ? tan_b : 0.0;
+            D[p][q] = tan_dl; /* kept for the sliding projection */
+            Ra[p][q] = tan_a;
+            Rb[p][q] = tan_b;
+        }
+    if (slide) /* (I - e e) (sticking dfs) - mu kn e n^T */
+        for (p = 0; p < 3; ++p)
+            for (q = 0; q < 3; ++q) {
+                double pd = 0.0, pa = 0.0, pb = 0.0;
+                for (m = 0; m < 3; ++m) {
+                    const double Pe = (p == m ? 1.0 : 0.0) - e[p] * e[m];
+                    pd += Pe * D[m][q];
+                    pa += Pe * Ra[m][q];
+                    pb += Pe * Rb[m][q];
+                }
+                M[p][q] += pd - law->mu * law->kn * e[p] * n[q];
+                Wa[p][q] = pa;
+                Wb[p][q] = pb;
+            }
+    /* the moments' arms: d r_i = (n n^T / 2 + (s / L) P) dl, d r_j = (-n n^T / 2 + ((s - L) / L) P) dl */
+    for (p = 0; p < 3; ++p)
+        for (q = 0; q < 3; ++q) {
+            double ga = 0.0, gb = 0.0;
+            for (m = 0; m < 3; ++m) {
+                ga += -Fx[p][m] * (0.5 * n[m] * n[q] + s / L * P[m][q]); /* d r_i x f = -[f]x d r_i */
+                gb += Fx[p][m] * (-0.5 * n[m] * n[q] + (s - L) / L * P[m][q]); /* f x d r_j */
+            }
+            Ga[p][q] = ga;
+            Gb[p][q] = gb;
+        }
+    for (p = 0; p < 3; ++p) /* df over (u_i, theta_i, u_j, theta_j) */
+        for (q = 0; q < 3; ++q) {
+            row[p][q] = -M[p][q];
+            row[p][3 + q] = Wa[p][q];
+            row[p][6 + q] = M[p][q];
+            row[p][9 + q] = Wb[p][q];
+        }
+    for (p = 0; p < 3; ++p)
+        for (q = 0; q < MAXB; ++q) {
+            double ta = 0.0, tb = 0.0;
+            for (m = 0; m < 3; ++m) {
+                ta += s * N[p][m] * row[m][q];          /* r_i x df */
+                tb += -(s - L) * N[p][m] * row[m][q];   /* df x r_j = -r_j x df */
+            }
+            if (q < 3) {
+                ta -= Ga[p][q];
+                tb -= Gb[p][q];
+            } else if (q >= 6 && q < 9) {
+                ta += Ga[p][q - 6];
+                tb += Gb[p][q - 6];
+            }
+            B[p][q] = row[p][q];       /* f on i */
+            B[3 + p][q] = ta;          /* moment on i */
+            B[6 + p][q] = -row[p][q];  /* -f on j */
+            B[9 + p][q] = tb;          /* moment on j */
+        }
+    return 1;
+}
+
+static int contact_block(const sbc_network *net, int k, double B[MAXB][MAXB])
+{
+    memset(B, 0, sizeof(double) * MAXB * MAXB);
+    return net->dim == 3 ? block_3d(net, k, B) : block_2d(net, k, B);
+}
+
+/* degrees of freedom per particle: translations and rotations */
+static int dofs_of(int dim) { return dim == 3 ? 6 : 3; }
+
+/* the global dof of slot s (0 .. 2 DOF - 1) of contact k */
+static int slot_dof(const sbc_network *net, int k, int s)
+{
+    const int nd = dofs_of(net->dim);
+    return nd * (s < nd ? net->i[k] : net->j[k]) + s % nd;
+}
 
 /* Which dofs are the system's unknowns. unk[dof]: its unknown (shared by a
  * (P) family), -1 where the frame prescribes it; z0 [dim^2][ndof]: the
@@ -97,37 +241,36 @@ static int slot_dof(const sbc_network *net, int k, int s) { return DOF * (s < 3 
 static int number_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const int *frame_of, int *unk,
                            double *z0)
 {
-    const int ndof = DOF * net->n;
+    const int dim = net->dim, nd = dofs_of(dim), ndof = nd * net->n;
     int p, c, q, m, members[8], count = 0, kl;
     for (p = 0; p < net->n; ++p)
         if (frame_of[p] < 0 || bc == SBC_BC_T)
-            for (c = 0; c < DOF; ++c)
-                unk[DOF * p + c] = count++;
+            for (c = 0; c < nd; ++c)
+                unk[nd * p + c] = count++;
     for (q = 0; q < f->n && bc != SBC_BC_T; ++q) {
         const int p0 = f->particle[q];
         const int size = bc == SBC_BC_P ? sbc_frame_family(f, q, members) : -1;
-        for (kl = 0; kl < 4; ++kl) /* F X_q on the translations */
-            for (c = 0; c < 2; ++c)
-                z0[(long)kl * ndof + DOF * p0 + c] = c == kl / 2 ? f->X[3 * q + kl % 2] : 0.0;
-        if (size == 0 || size == 4)
-            continue; /* a later member, or the corners (which follow F, eq. 17) */
+        for (kl = 0; kl < dim * dim; ++kl) /* F X_q on the translations */
+            for (c = 0; c < dim; ++c)
+                z0[(long)kl * ndof + nd * p0 + c] = c == kl / dim ? f->X[3 * q + kl % dim] : 0.0;
+        if (size == 0)
+            continue; /* a later member of a family */
         if (size < 0) {
-            for (c = 0; c < DOF; ++c)
-                unk[DOF * p0 + c] = -1;
+            for (c = 0; c < nd; ++c)
+                unk[nd * p0 + c] = -1;
             continue;
         }
-        for (m = 0; m < size; ++m) /* a (P) pair: one fluctuation and one rotation (eqs. 19, 32-34) */
-            for (c = 0; c < DOF; ++c)
-                unk[DOF * f->particle[members[m]] + c] = count + c;
-        count += DOF;
-    }
-    if (bc == SBC_BC_P) { /* the corners follow F and share one rotation, their moments balancing */
-        for (c = 0; c < 4; ++c) {
-            const int p0 = f->particle[f->corner[c]];
-            unk[DOF * p0] = unk[DOF * p0 + 1] = -1;
-            unk[DOF * p0 + 2] = count;
+        for (m = 0; m < size; ++m) {
+            const int pm = f->particle[members[m]];
+            if (q == f->corner[0]) { /* the corners follow F (eq. 17) and share one rotation, their moments balancing */
+                for (c = 0; c < nd; ++c)
+                    unk[nd * pm + c] = c < dim ? -1 : count + c - dim;
+            } else { /* a family of periodic images: one fluctuation and one rotation (eqs. 19, 32-34) */
+                for (c = 0; c < nd; ++c)
+                    unk[nd * pm + c] = count + c;
+            }
         }
-        ++count;
+        count += q == f->corner[0] ? nd - dim : nd;
     }
     return count;
 }
@@ -135,28 +278,30 @@ static int number_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc
 sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc_bc bc, double C[81],
                                  int *mechanisms, sbc_error *err)
 {
-    const int ndof = DOF * net->n, extra = bc == SBC_BC_T ? 4 + 2 : 0;
-    double (*blocks)[6][6] = NULL, *z0 = NULL, *K = NULL, *rhs = NULL, *dz = NULL, *load = NULL, *a = NULL;
+    const int dim = net->dim, nd = dofs_of(dim), nb = 2 * nd, ndof = nd * net->n, nc = dim * dim;
+    const int extra = bc == SBC_BC_T ? nc + dim : 0;
+    double (*blocks)[MAXB][MAXB] = NULL, *z0 = NULL, *K = NULL, *rhs = NULL, *dz = NULL, *load = NULL, *a = NULL;
     int *unk = NULL, *frame_of = NULL, *keep = NULL, *open = NULL;
     int nu, nk, k, s, u, v, kl, q, p;
     double scale = 0.0, G[9];
     sbc_status st = SBC_OK;
     memset(C, 0, sizeof(double) * 81);
     *mechanisms = 0;
-    if (f->dim != 2)
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: the condensed tangent is built for 2D aggregates only");
+    if (dim != f->dim || (dim != 2 && dim != 3))
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: the condensed tangent of a %dD network on a %dD frame",
+                        dim, f->dim);
     if (bc != SBC_BC_D && bc != SBC_BC_P && bc != SBC_BC_T)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: the condensed tangent takes (D), (P) or (T)");
     blocks = malloc(sizeof *blocks * (size_t)(net->npair > 0 ? net->npair : 1));
     open = calloc((size_t)(net->npair > 0 ? net->npair : 1), sizeof *open);
-    z0 = calloc((size_t)ndof * 4, sizeof *z0);
+    z0 = calloc((size_t)ndof * (size_t)nc, sizeof *z0);
     unk = malloc(sizeof *unk * (size_t)ndof);
     frame_of = malloc(sizeof *frame_of * (size_t)net->n);
     dz = malloc(sizeof *dz * (size_t)ndof);
     load = malloc(sizeof *load * (size_t)ndof);
     a = calloc(3 * (size_t)f->n, sizeof *a);
     if (!blocks || !open || !z0 || !unk || !frame_of || !dz || !load || !a) {
-        st = sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory (condensed tangent of %d discs)", net->n);
+        st = sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory (condensed tangent of %d particles)", net->n);
         goto done;
     }
     for (p = 0; p < net->n; ++p)
@@ -168,7 +313,7 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
     nu = number_unknowns(net, f, bc, frame_of, unk, z0) + extra;
     /* the unknowns' matrix, before the dead ones are dropped */
     K = calloc((size_t)nu * (size_t)nu, sizeof *K);
-    rhs = calloc((size_t)nu * 4, sizeof *rhs);
+    rhs = calloc((size_t)nu * (size_t)nc, sizeof *rhs);
     keep = malloc(sizeof *keep * (size_t)nu);
     if (!K || !rhs || !keep) {
         st = sbc_fail(err, SBC_ERR_NOMEM, "material point: the condensed tangent's %d unknowns need %.3g GB (a "
@@ -179,11 +324,11 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
     for (k = 0; k < net->npair; ++k) {
         if (open[k])
             continue;
-        for (s = 0; s < 6; ++s) {
+        for (s = 0; s < nb; ++s) {
             const int ra = slot_dof(net, k, s);
             if ((u = unk[ra]) < 0)
                 continue;
-            for (v = 0; v < 6; ++v) {
+            for (v = 0; v < nb; ++v) {
                 const int cb = slot_dof(net, k, v);
                 const double kab = blocks[k][s][v];
                 if (kab == 0.0)
@@ -191,8 +336,8 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
                 scale = fmax(scale, fabs(kab));
                 if (unk[cb] >= 0)
                     K[(long)u * nu + unk[cb]] += kab;
-                for (kl = 0; kl < 4; ++kl)
-                    rhs[(long)u * 4 + kl] -= kab * z0[(long)kl * ndof + cb];
+                for (kl = 0; kl < nc; ++kl)
+                    rhs[(long)u * nc + kl] -= kab * z0[(long)kl * ndof + cb];
             }
         }
     }
@@ -200,27 +345,27 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
         const int L = nu - extra;
         memset(G, 0, sizeof G);
         for (q = 0; q < f->n; ++q)
-            for (k = 0; k < 2; ++k)
-                for (s = 0; s < 2; ++s)
+            for (k = 0; k < dim; ++k)
+                for (s = 0; s < dim; ++s)
                     G[SBC_IJ(k, s)] += f->X[3 * q + k] * f->A[3 * q + s];
         for (q = 0; q < f->n; ++q) {
             const int p0 = f->particle[q];
-            for (k = 0; k < 2; ++k) {
-                const int row = unk[DOF * p0 + k];
-                for (s = 0; s < 2; ++s) {
-                    K[(long)row * nu + L + 2 * k + s] += f->A[3 * q + s] * scale; /* scaled multipliers */
-                    K[(long)(L + 2 * k + s) * nu + row] += f->A[3 * q + s] * scale / f->V;
+            for (k = 0; k < dim; ++k) {
+                const int row = unk[nd * p0 + k];
+                for (s = 0; s < dim; ++s) { /* multipliers scaled to the stiffness */
+                    K[(long)row * nu + L + dim * k + s] += f->A[3 * q + s] * scale;
+                    K[(long)(L + dim * k + s) * nu + row] += f->A[3 * q + s] * scale / f->V;
                 }
-                K[(long)row * nu + L + 4 + k] += scale;
-                K[(long)(L + 4 + k) * nu + row] += scale;
+                K[(long)row * nu + L + nc + k] += scale;
+                K[(long)(L + nc + k) * nu + row] += scale;
             }
         }
-        for (kl = 0; kl < 4; ++kl) /* dF = e_k (x) e_l: (dF G)_cj = delta_ck G_lj */
-            for (s = 0; s < 2; ++s)
-                rhs[(long)(L + 2 * (kl / 2) + s) * 4 + kl] = G[SBC_IJ(kl % 2, s)] * scale / f->V;
+        for (kl = 0; kl < nc; ++kl) /* dF = e_k (x) e_l: (dF G)_cj = delta_ck G_lj */
+            for (s = 0; s < dim; ++s)
+                rhs[(long)(L + dim * (kl / dim) + s) * nc + kl] = G[SBC_IJ(kl % dim, s)] * scale / f->V;
     }
-    /* unknowns that nothing depends on (a rattler, the rotation of a disc whose contacts all slide or have no
-       tangential spring) are dropped with their own equation */
+    /* unknowns that nothing depends on (a rattler, the rotation of a particle whose contacts all slide or have
+       no tangential spring) are dropped with their own equation */
     for (u = nk = 0; u < nu; ++u) {
         int used = 0;
         for (v = 0; v < nu && !used; ++v)
@@ -230,8 +375,8 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
             ++*mechanisms;
     }
     {
-        double *Kk = malloc(sizeof *Kk * (size_t)nk * (size_t)(nk > 0 ? nk : 1));
-        double *Rk = malloc(sizeof *Rk * (size_t)(nk > 0 ? nk : 1) * 4);
+        double *Kk = malloc(sizeof *Kk * (size_t)(nk > 0 ? nk : 1) * (size_t)(nk > 0 ? nk : 1));
+        double *Rk = malloc(sizeof *Rk * (size_t)(nk > 0 ? nk : 1) * (size_t)nc);
         if (!Kk || !Rk) {
             free(Kk);
             free(Rk);
@@ -244,32 +389,35 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
             for (v = 0; v < nu; ++v)
                 if (keep[v] >= 0)
                     Kk[(long)keep[u] * nk + keep[v]] = K[(long)u * nu + v];
-            memcpy(&Rk[(long)keep[u] * 4], &rhs[(long)u * 4], sizeof(double) * 4);
+            memcpy(&Rk[(long)keep[u] * nc], &rhs[(long)u * nc], sizeof(double) * (size_t)nc);
         }
-        *mechanisms += sbc_dense_solve(nk, Kk, 4, Rk, 1e-12 * scale);
-        for (u = 0; u < nu; ++u)
-            memcpy(&rhs[(long)u * 4], keep[u] >= 0 ? &Rk[(long)keep[u] * 4] : (const double[4]){0, 0, 0, 0},
-                   sizeof(double) * 4);
+        *mechanisms += sbc_dense_solve(nk, Kk, nc, Rk, 1e-12 * scale);
+        for (u = 0; u < nu; ++u) {
+            if (keep[u] >= 0)
+                memcpy(&rhs[(long)u * nc], &Rk[(long)keep[u] * nc], sizeof(double) * (size_t)nc);
+            else
+                memset(&rhs[(long)u * nc], 0, sizeof(double) * (size_t)nc);
+        }
         free(Kk);
         free(Rk);
     }
     /* dP of each dF = e_k (x) e_l: the frame's forces a_q = -(loads on q), eq. 23 */
-    for (kl = 0; kl < 4; ++kl) {
+    for (kl = 0; kl < nc; ++kl) {
         double dP[9];
         for (s = 0; s < ndof; ++s)
-            dz[s] = z0[(long)kl * ndof + s] + (unk[s] >= 0 ? rhs[(long)unk[s] * 4 + kl] : 0.0);
+            dz[s] = z0[(long)kl * ndof + s] + (unk[s] >= 0 ? rhs[(long)unk[s] * nc + kl] : 0.0);
         memset(load, 0, sizeof(double) * (size_t)ndof);
         for (k = 0; k < net->npair; ++k)
             if (!open[k])
-                for (s = 0; s < 6; ++s)
-                    for (v = 0; v < 6; ++v)
+                for (s = 0; s < nb; ++s)
+                    for (v = 0; v < nb; ++v)
                         load[slot_dof(net, k, s)] += blocks[k][s][v] * dz[slot_dof(net, k, v)];
         for (q = 0; q < f->n; ++q)
-            for (s = 0; s < 2; ++s)
-                a[3 * q + s] = -load[DOF * f->particle[q] + s];
+            for (s = 0; s < dim; ++s)
+                a[3 * q + s] = -load[nd * f->particle[q] + s];
         sbc_homogenize_P(f, a, dP);
-        for (s = 0; s < 4; ++s)
-            C[9 * SBC_IJ(s / 2, s % 2) + SBC_IJ(kl / 2, kl % 2)] = dP[SBC_IJ(s / 2, s % 2)];
+        for (s = 0; s < nc; ++s)
+            C[9 * SBC_IJ(s / dim, s % dim) + SBC_IJ(kl / dim, kl % dim)] = dP[SBC_IJ(s / dim, s % dim)];
     }
 done:
     free(blocks);

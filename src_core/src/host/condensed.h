@@ -7,15 +7,17 @@
 #include "sbc/settings.h"
 #include "sbc/status.h"
 
-/* The contact network of a 2D disc aggregate in its current state. */
+/* The contact network of an aggregate in its current state, in the
+ * conventions of the embedded engines (engine.c in 2D, spheres.c in 3D). */
 typedef struct sbc_network {
-    int n;              /* discs */
-    const double *x;    /* [2n] centres, m */
+    int dim;            /* 2 (discs) or 3 (spheres) */
+    int n;              /* particles */
+    const double *x;    /* [dim n] centres, m */
     const double *r;    /* [n] radii, m */
     int npair;          /* pairs of the engine's list (open ones are skipped) */
     const int *i, *j;   /* [npair] */
-    const double *fs;   /* [npair] tangential spring force, N, in the engine's convention: the force on i
-                           is -fn n + fs t with n from i to j and t = (-n_y, n_x); NULL without friction */
+    const double *fs;   /* [3 npair] the tangential spring's force on i, N, in the contact plane (the force on
+                           i is -fn n + fs, n from i to j); NULL without friction */
     sbc_frictional law; /* eq. 6 */
 } sbc_network;
 

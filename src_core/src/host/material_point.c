@@ -38,7 +38,7 @@ typedef struct point_engine {
     /* the pairs for the affine tangent: their count, pair k's particles and |tangential spring| (N),
        the centres [dim n] and radii */
     int (*pair_count)(const void *e);
-    void (*pair)(const void *e, int k, int ij[2], double *fs);
+    void (*pair)(const void *e, int k, int ij[2], double fs[3]); /* fs: the tangential spring's force on ij[0], N */
     const double *(*centres)(const void *e);
     const double *(*radii)(const void *e);
 } point_engine;
@@ -68,12 +68,17 @@ static size_t discs_size(const void *e) { return sbc_engine_state_size(e); }
 static void discs_save(const void *e, double *out) { sbc_engine_save(e, out); }
 static sbc_status discs_load(void *e, const double *in, size_t n, sbc_error *err) { return sbc_engine_load(e, in, n, err); }
 static int discs_pairs(const void *e) { return sbc_engine_get_view(e).pair_count; }
-static void discs_pair(const void *e, int k, int ij[2], double *fs)
+static void discs_pair(const void *e, int k, int ij[2], double fs[3])
 {
     const sbc_engine_view w = sbc_engine_get_view(e);
+    const double *a = &w.x[2 * w.pair_i[k]], *b = &w.x[2 * w.pair_j[k]];
+    const double lx = b[0] - a[0], ly = b[1] - a[1], d = sqrt(lx * lx + ly * ly);
+    const double s = w.pair_fs && d > 0.0 ? w.pair_fs[k] / d : 0.0;
     ij[0] = w.pair_i[k];
     ij[1] = w.pair_j[k];
-    *fs = w.pair_fs ? fabs(w.pair_fs[k]) : 0.0;
+    fs[0] = -s * ly; /* the engine's force on i is -fn n + fs t, t = (-n_y, n_x) */
+    fs[1] = s * lx;
+    fs[2] = 0.0;
 }
 static const double *discs_centres(const void *e) { return sbc_engine_get_view(e).x; }
 static const double *discs_radii(const void *e) { return sbc_engine_get_view(e).r; }
@@ -110,7 +115,7 @@ static sbc_status spheres_load(void *e, const double *in, size_t n, sbc_error *e
     return sbc_spheres_load(e, in, n, err);
 }
 static int spheres_pairs(const void *e) { return sbc_spheres_get_view(e).pair_count; }
-static void spheres_pair(const void *e, int k, int ij[2], double *fs) { sbc_spheres_pair(e, k, ij, fs); }
+static void spheres_pair(const void *e, int k, int ij[2], double fs[3]) { sbc_spheres_pair(e, k, ij, fs); }
 static const double *spheres_centres(const void *e) { return sbc_spheres_get_view(e).x; }
 static const double *spheres_radii(const void *e) { return sbc_spheres_get_view(e).r; }
 
@@ -133,6 +138,7 @@ struct sbc_point {
     double F[9], P[9];     /* committed */
     double Fc[9], Pc[9];   /* current: of the last converged integrate since commit or revert, else F, P */
     sbc_frictional law; /* the contact law (eq. 6), for the affine tangent */
+    int n;                 /* particles */
 };
 
 sbc_point_def sbc_point_def_default(void)
@@ -311,6 +317,7 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
     }
     p->type = d->dim == 3 ? &spheres : &discs;
     p->law = d->law;
+    p->n = d->n;
     if (d->dim == 3) {
         st = sbc_frame_detect_3d(&p->frame, d->n, d->x, d->r, 0.0, err);
     } else {
@@ -431,9 +438,10 @@ sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
     if (!sbc_tensor_inverse(dim, p->Fc, Finv))
         return sbc_fail(err, SBC_ERR_GEOMETRY, "material point: the current F cannot be inverted");
     for (c = 0; c < npair; ++c) {
-        double lv[3] = {0, 0, 0}, L[3], n[3] = {0, 0, 0}, K[9], len = 0.0, dn, fs;
+        double lv[3] = {0, 0, 0}, L[3], n[3] = {0, 0, 0}, K[9], len = 0.0, dn, fv[3], fs;
         int ij[2], stick;
-        p->type->pair(p->engine, c, ij, &fs);
+        p->type->pair(p->engine, c, ij, fv);
+        fs = sqrt(fv[0] * fv[0] + fv[1] * fv[1] + fv[2] * fv[2]);
         for (k = 0; k < dim; ++k) {
             lv[k] = x[dim * ij[1] + k] - x[dim * ij[0] + k];
             len += lv[k] * lv[k];
@@ -462,24 +470,37 @@ sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
 
 sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanisms, sbc_error *err)
 {
+    const int npair = p->type->pair_count(p->engine);
+    int *ij = malloc(sizeof *ij * 2 * (size_t)(npair > 0 ? npair : 1)), ignored, k;
+    double *fs = malloc(sizeof *fs * 3 * (size_t)(npair > 0 ? npair : 1));
     sbc_network net;
-    sbc_engine_view w;
-    int ignored;
-    memset(C, 0, sizeof(double) * 81);
+    sbc_status st;
     if (!mechanisms)
         mechanisms = &ignored;
-    *mechanisms = 0;
-    if (p->frame.dim != 2)
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: the condensed tangent is built for 2D points only "
-                        "(this one is 3D: use the affine or the perturbation tangent)");
-    w = sbc_engine_get_view(p->engine);
-    net.n = w.n;
-    net.x = w.x;
-    net.r = w.r;
-    net.npair = w.pair_count;
-    net.i = w.pair_i;
-    net.j = w.pair_j;
-    net.fs = w.pair_fs;
+    if (!ij || !fs) {
+        free(ij);
+        free(fs);
+        memset(C, 0, sizeof(double) * 81);
+        *mechanisms = 0;
+        return sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory (condensed tangent)");
+    }
+    for (k = 0; k < npair; ++k) {
+        int pair[2];
+        p->type->pair(p->engine, k, pair, &fs[3 * k]);
+        ij[k] = pair[0];
+        ij[npair + k] = pair[1];
+    }
+    net.dim = p->frame.dim;
+    net.n = p->n;
+    net.x = p->type->centres(p->engine);
+    net.r = p->type->radii(p->engine);
+    net.npair = npair;
+    net.i = ij;
+    net.j = ij + npair;
+    net.fs = fs;
     net.law = p->law;
-    return sbc_condensed_tangent(&net, &p->frame, p->settings.bc, C, mechanisms, err);
+    st = sbc_condensed_tangent(&net, &p->frame, p->settings.bc, C, mechanisms, err);
+    free(ij);
+    free(fs);
+    return st;
 }

@@ -89,9 +89,10 @@ typedef struct sbc_spheres_view {
 
 sbc_spheres_view sbc_spheres_get_view(const sbc_spheres *e);
 
-/* Pair k of the list (0 .. pair_count - 1): its spheres ij [2] and the
- * magnitude of its tangential spring force (N), 0 for an open pair. */
-void sbc_spheres_pair(const sbc_spheres *e, int k, int ij[2], double *fs);
+/* Pair k of the list (0 .. pair_count - 1): its spheres ij [2] and its
+ * tangential spring force on ij[0], fs [3] (N, in the contact plane), 0 for
+ * an open pair. */
+void sbc_spheres_pair(const sbc_spheres *e, int k, int ij[2], double fs[3]);
 
 /* The engine's state as doubles, as sbc_engine_save's (positions,
  * velocities, rotations, the last loads, the pair list with each contact's
