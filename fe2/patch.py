@@ -6,6 +6,9 @@ aggregate (a prestressed 5 x 5 frictional lattice) under (D), (P) and (T).
 2. The boundary nodes at (F - I) X, the four inside nodes free and started at u = 0: the macro Newton with the
    condensed tangent finds the uniform state again; its residual ratios and those of the perturbation and the
    affine tangents are printed, and the nodal forces at convergence against the same closed form.
+3. (D) along the load path u = t (F - I) X on the boundary in one step with a Newton of at most 2 iterations, too few
+   for the whole step: the step is reverted and cut in half, and the cut path ends bit for bit where two half steps
+   from the start end, at the closed form's nodal forces.
 
 Prints one line per condition and tangent, then `patch max relative difference VALUE` (the largest over
 everything above with the condensed tangent, relative to the largest closed-form nodal force); exits 1 when it
@@ -70,5 +73,30 @@ for bc in ('D', 'P', 'T'):
         if not converged and tangent != 'affine':
             print('FAIL patch %s: %s' % (bc, model.last_message))
             failures += 1
+
+def cut_path(steps):
+    model = macro.Macro(W, H, NX, NY, lambda k, X: macro.lattice_point('D accuracy tight'), tangent='condensed')
+    boundary = model.dofs_where(lambda x, y, c: np.isclose(x, 0.0) or np.isclose(y, 0.0) or np.isclose(x, W) or
+                                np.isclose(y, H))
+    target = uniform(model)
+    seen = []
+    cuts = model.load(boundary, lambda t: t * target[boundary], steps, tol=1e-8, max_iterations=2,
+                      on_step=lambda t, m, history: seen.append((t, len(history) - 1)))
+    return model, cuts, seen
+
+
+ok, P, _ = macro.lattice_point('D accuracy tight').integrate(F)
+cut, cuts, seen = cut_path(1)
+halves, cuts2, seen2 = cut_path(2)
+want = macro.boundary_forces(P, W, H, NX, NY, cut.X, cut.comp)
+path_diff = relative(cut.trial_r, want)
+same = np.array_equal(cut.trial_r, halves.trial_r) and np.array_equal(cut.U, halves.U)
+print('patch D load path: one step with at most 2 Newton iterations: %d cut(s), steps at t = %s; two half steps: '
+      '%d cuts; the same nodal forces and displacements bit for bit: %s; nodal forces %.3e'
+      % (cuts, ' '.join('%g (%d iterations)' % v for v in seen), cuts2, same, path_diff))
+if not (cuts >= 1 and cuts2 == 0 and same):
+    print('FAIL patch D load path: expected a cut step ending where two half steps end')
+    failures += 1
+worst = max(worst, path_diff)
 print('patch max relative difference %.3e' % worst)
 sys.exit(1 if failures or not worst <= LIMIT else 0)
