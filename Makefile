@@ -248,7 +248,10 @@ $(B)/bench_spheres: bench/spheres_throughput.c $(B)/libservo_bc.a
 $(B)/bench_points: bench/point_batch.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
 
-bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points
+$(B)/bench_tangents: bench/tangent_cost.c $(B)/libservo_bc.a
+	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
+
+bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangents
 	@bash scripts/install-deps.sh lammps || echo "bench: LAMMPS not available; measuring the embedded engine only"
 	bash bench/engine_vs_lammps.sh $(B)/bench_engine
 	bash bench/engine_vs_lammps.sh $(B)/bench_spheres 500 3
@@ -256,6 +259,7 @@ bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points
 	bash bench/bpm_hosts.sh
 	bash bench/cohesive_hosts.sh
 	$(B)/bench_points 16 10 2
+	$(B)/bench_tangents 5 10 20
 
 clean:
 	rm -rf $(B) out
