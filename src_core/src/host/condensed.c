@@ -374,32 +374,22 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
         if (!used)
             ++*mechanisms;
     }
-    {
-        double *Kk = malloc(sizeof *Kk * (size_t)(nk > 0 ? nk : 1) * (size_t)(nk > 0 ? nk : 1));
-        double *Rk = malloc(sizeof *Rk * (size_t)(nk > 0 ? nk : 1) * (size_t)nc);
-        if (!Kk || !Rk) {
-            free(Kk);
-            free(Rk);
-            st = sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory (condensed tangent)");
-            goto done;
-        }
-        for (u = 0; u < nu; ++u) {
-            if (keep[u] < 0)
-                continue;
-            for (v = 0; v < nu; ++v)
-                if (keep[v] >= 0)
-                    Kk[(long)keep[u] * nk + keep[v]] = K[(long)u * nu + v];
-            memcpy(&Rk[(long)keep[u] * nc], &rhs[(long)u * nc], sizeof(double) * (size_t)nc);
-        }
-        *mechanisms += sbc_dense_solve(nk, Kk, nc, Rk, 1e-12 * scale);
-        for (u = 0; u < nu; ++u) {
-            if (keep[u] >= 0)
-                memcpy(&rhs[(long)u * nc], &Rk[(long)keep[u] * nc], sizeof(double) * (size_t)nc);
-            else
-                memset(&rhs[(long)u * nc], 0, sizeof(double) * (size_t)nc);
-        }
-        free(Kk);
-        free(Rk);
+    /* the kept unknowns compacted in place (keep[u] <= u, ascending: nothing unread is overwritten), solved, and
+       spread back from the last (descending: the same) */
+    for (u = 0; u < nu; ++u) {
+        if (keep[u] < 0)
+            continue;
+        for (v = 0; v < nu; ++v)
+            if (keep[v] >= 0)
+                K[(long)keep[u] * nk + keep[v]] = K[(long)u * nu + v];
+        memmove(&rhs[(long)keep[u] * nc], &rhs[(long)u * nc], sizeof(double) * (size_t)nc);
+    }
+    *mechanisms += sbc_dense_solve(nk, K, nc, rhs, 1e-12 * scale);
+    for (u = nu - 1; u >= 0; --u) {
+        if (keep[u] >= 0)
+            memmove(&rhs[(long)u * nc], &rhs[(long)keep[u] * nc], sizeof(double) * (size_t)nc);
+        else
+            memset(&rhs[(long)u * nc], 0, sizeof(double) * (size_t)nc);
     }
     /* dP of each dF = e_k (x) e_l: the frame's forces a_q = -(loads on q), eq. 23 */
     for (kl = 0; kl < nc; ++kl) {
