@@ -44,7 +44,7 @@ const double RESTART_MAGIC = 8.020001e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ctl(nullptr), driver(nullptr), per_atom(nullptr), contacts(nullptr), finished(0), restored(0), last_step(-1), run_start(0), clock_start(-1.0), clock_reported(-1.0), frame_still(0), any_free(1), seal_on(0), seal_energy(0.0)
+    Fix(lmp, narg, arg), ctl(nullptr), driver(nullptr), per_atom(nullptr), stream(nullptr), stream_rows(0), streaming(0), contacts(nullptr), finished(0), restored(0), last_step(-1), run_start(0), clock_start(-1.0), clock_reported(-1.0), frame_still(0), any_free(1), seal_on(0), seal_energy(0.0)
 {
   sbc_error err;
   std::memset(&frame, 0, sizeof frame);
@@ -110,6 +110,7 @@ FixServoBC::~FixServoBC()
   atom->delete_callback(id, CALLBACK_GROW);
   atom->delete_callback(id, CALLBACK_RESTART);
   memory->destroy(per_atom);
+  memory->destroy(stream);
   sbc_driver_free(driver);
   sbc_controller_free(ctl);
   sbc_seal_free(&seal);
@@ -435,9 +436,35 @@ void FixServoBC::make_driver()
     static_cast<FixServoBC *>(self)->write_row(line);
     return 0;
   };
+  cb.remap = [](void *self, const double *M, const double *origin, int sign) {
+    static_cast<FixServoBC *>(self)->remap_pass(M, origin, sign);
+  };
   sbc_error err;
   if (!(driver = sbc_driver_create(ctl, &settings, &cb, &err))) fail(err.message);
   *sbc_driver_fire(driver) = fire;
+}
+
+/* keyword remap x (driver.h): the interior's velocity gains the frame's
+   affine move over one step, which the integrator's next x += dt v carries
+   out and the pair style's relative velocities see (sign +1); the next step
+   takes back what was added (sign -1), kept per atom in `stream`, which
+   migrates with its atom and is written to restart files */
+void FixServoBC::remap_pass(const double *M, const double *origin, int sign)
+{
+  const int nlocal = atom->nlocal, *mask = atom->mask;
+  const double dt = update->dt;
+  if (sign < 0 && !streaming) return;
+  for (int i = 0; i < nlocal; i++) {
+    if (sign < 0) {
+      for (int c = 0; c < dim; c++) atom->v[i][c] -= stream[i][c], stream[i][c] = 0.0;
+      continue;
+    }
+    if (!(mask[i] & interior_bit)) continue;
+    double u[3];
+    sbc_remap_displacement(dim, M, origin, atom->x[i], u);
+    for (int c = 0; c < dim; c++) stream[i][c] = u[c] / dt, atom->v[i][c] += stream[i][c];
+  }
+  streaming = sign > 0;
 }
 
 /* damping fire: the interior's sums of fire_damping.h on this rank */
@@ -721,12 +748,15 @@ void FixServoBC::restart(char *raw)
   make_buffers();
 }
 
-/* per-atom restart data: the accumulated rotation (nrot components) */
+/* per-atom restart data: the accumulated rotation (nrot components), then
+   the velocity of keyword remap x to be taken back (3 components; files
+   written before remap existed end after the rotation) */
 int FixServoBC::pack_restart(int i, double *out)
 {
-  out[0] = 1 + nrot;
+  out[0] = 1 + nrot + 3;
   for (int c = 0; c < nrot; c++) out[1 + c] = per_atom[i][1 + c];
-  return 1 + nrot;
+  for (int c = 0; c < 3; c++) out[1 + nrot + c] = stream[i][c];
+  return 1 + nrot + 3;
 }
 
 void FixServoBC::unpack_restart(int nlocal, int nth)
@@ -734,42 +764,52 @@ void FixServoBC::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
+  const int size = static_cast<int>(extra[nlocal][m++]);
   for (int c = 0; c < nrot; c++) per_atom[nlocal][1 + c] = extra[nlocal][m + c];
+  for (int c = 0; c < 3; c++) stream[nlocal][c] = size == 1 + nrot + 3 ? extra[nlocal][m + nrot + c] : 0.0;
+  if (size == 1 + nrot + 3)
+    for (int c = 0; c < 3; c++) streaming |= stream[nlocal][c] != 0.0;
 }
 
 int FixServoBC::size_restart(int)
 {
-  return 1 + nrot;
+  return 1 + nrot + 3;
 }
 
 int FixServoBC::maxsize_restart()
 {
-  return 1 + nrot;
+  return 1 + nrot + 3;
 }
 
-/* per_atom: the frame flag and the accumulated rotation (nrot components) */
+/* per_atom: the frame flag and the accumulated rotation (nrot components);
+   stream: the velocity of keyword remap x to be taken back (remap_pass) */
 void FixServoBC::grow_arrays(int nmax)
 {
   memory->grow(per_atom, nmax, 1 + nrot, "servo_bc:per_atom");
+  memory->grow(stream, nmax, 3, "servo_bc:stream");
+  for (; stream_rows < nmax; stream_rows++)    // an atom's slots are zero until a remap fills them
+    for (int c = 0; c < 3; c++) stream[stream_rows][c] = 0.0;
   array_atom = per_atom;
 }
 
 void FixServoBC::copy_arrays(int i, int j, int)
 {
   for (int c = 0; c <= nrot; c++) per_atom[j][c] = per_atom[i][c];
+  for (int c = 0; c < 3; c++) stream[j][c] = stream[i][c];
 }
 
 int FixServoBC::pack_exchange(int i, double *out)
 {
   for (int c = 0; c <= nrot; c++) out[c] = per_atom[i][c];
-  return 1 + nrot;
+  for (int c = 0; c < 3; c++) out[1 + nrot + c] = stream[i][c];
+  return 1 + nrot + 3;
 }
 
 int FixServoBC::unpack_exchange(int nlocal, double *in)
 {
   for (int c = 0; c <= nrot; c++) per_atom[nlocal][c] = in[c];
-  return 1 + nrot;
+  for (int c = 0; c < 3; c++) stream[nlocal][c] = in[1 + nrot + c];
+  return 1 + nrot + 3;
 }
 
 /* every error of this fix: "Fix servo_bc: " and the message, on all ranks

@@ -77,6 +77,9 @@ class FixServoBC : public Fix {
   std::vector<double> frame_mass;  // [Q] kg
   std::unordered_map<tagint, int> slot;  // atom ID -> frame position, built with the frame
   double **per_atom;               // per atom: frame flag (1 frame, 0 other), accumulated rotation (rad)
+  double **stream;                 // per atom: the velocity of keyword remap x to be taken back (m/s)
+  int stream_rows;                 // rows of stream zeroed so far
+  int streaming;                   // some atom of this rank carries a remap velocity
   int interior_bit, frame_bit;     // groups ID_interior, ID_frame created by the fix
   int dim = 2;                       // the box's dimension (domain->dimension)
   int nrot = 1;                      // SBC_ROTATIONS(dim): rotation components (z alone in 2d)
@@ -106,6 +109,7 @@ class FixServoBC : public Fix {
   static int seal_slot(const void *self, int i);
   // this rank's share of each measure the driver asks for (driver.h)
   void fire_pass(double *sums);
+  void remap_pass(const double *M, const double *origin, int sign);
   void interior_pass(bool again, const sbc_fire_mix *mix, double out[2]);
   void contact_pass(double out[4]);
   void frame_pass(double *buf);

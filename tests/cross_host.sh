@@ -122,6 +122,22 @@ compare_3d() {
     fi
   done
 }
+# keyword remap x (inputs/compare/lattice7_P_remap.sbc): the interior follows the frame's
+# affine move, so on every engine and rank count each increment is one servo iteration of
+# two relaxation windows (40 DEM steps) and P11 is -N kn (2R - d F11) / ((N - 1) d) to 1e-9
+dir=$tmp/lattice7_P_remap
+(cd "$top" && RANKS="1 2" bash scripts/compare.sh inputs/compare/lattice7_P_remap.sbc "$dir" | grep -v "^compare: report")
+for e in embedded lammps liggghts yade lammps_np2 liggghts_np2; do
+  got=$(awk -F, "$COLUMNS_AWK"'NR > 2 { n++; if ($col("iterations") != 1 || $col("relax_steps") != 40) bad++
+      want = -7 * 1e4 * (2.04e-3 - 2e-3 * $col("F11")) / (6 * 2e-3); d = ($col("P11") - want) / want; if (d < 0) d = -d; if (d > m) m = d }
+    END { printf "%d %d %.3g", n, bad, m }' "$dir/$e.csv" 2>/dev/null)
+  set -- $got
+  if [ "${1:-0}" = 4 ] && [ "${2:-1}" = 0 ] && awk -v m="${3:-1}" 'BEGIN { exit !(m <= 1e-9) }'; then
+    pass=$((pass + 1)); echo "remap x, 7 x 7 lattice (P), $e: 4 increments of one servo iteration and 40 DEM steps, P11 against the closed form $3"
+  else
+    fail=$((fail + 1)); echo "FAIL remap x, 7 x 7 lattice (P), $e: ${1:-0} increments, ${2:-?} not of one iteration and 40 steps, P11 off by ${3:-?}"
+  fi
+done
 # the prestressed frictional 4^3 lattice: P11 at the last increment against the closed form
 # -N^2 kn (2R - d F11) / ((N - 1)^2 d^2) within 1e-6
 compare_3d inputs/compare/cubic_P_3d.sbc "4^3 lattice" \

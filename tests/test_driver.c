@@ -138,7 +138,7 @@ void test_driver(void)
     sbc_settings s;
     sbc_controller *c, *h;
     sbc_driver *d;
-    sbc_driver_callbacks cb = {NULL, fire_sums, interior, contacts, frame, reduce, confined, row, net_force, NULL};
+    sbc_driver_callbacks cb = {NULL, fire_sums, interior, contacts, frame, reduce, confined, row, net_force, NULL, NULL};
     sbc_error err;
     rig g, by_hand;
     long steps = 0, hand_steps = 0;
@@ -148,6 +148,10 @@ void test_driver(void)
     /* the driver */
     setup(&g, &p, &f, &s, &c);
     cb.user_data = &g;
+    s.remap = 1; /* a host without the remap callback refuses remap x by name */
+    CHECK(sbc_driver_create(c, &s, &cb, &err) == NULL &&
+          strstr(err.message, "keyword 'remap': x needs a host that moves its interior particles") != NULL);
+    s.remap = 0;
     d = sbc_driver_create(c, &s, &cb, &err);
     CHECK(d != NULL);
     while (d && ev != SBC_EVENT_FINISHED && ev != SBC_EVENT_FAILED && steps < 2000000) {

@@ -29,6 +29,7 @@ void test_point(void);
 void test_bpm_host(void);
 void test_cohesive_host(void);
 void test_driver(void);
+void test_remap(void);
 
 struct sbc_frame;
 /* the largest |sum_q X_q (x) A_q - V I| of a 3D frame over V (test_frame3d.c) */

@@ -26,7 +26,7 @@ from servo_bc_core import (ServoBCError, DAMPING_NONE, DAMPING_LOCAL, DAMPING_FI
                            RELAXING, CORRECTED, INCREMENT, FINISHED, FAILED, HostCallbacks, frame_offsets as _frame_offsets,
                            library as _core, columns as _columns, doubles as _doubles, version as _version,
                            free as _free)
-from yade import O, utils
+from yade import O, utils, Vector3
 from yade.wrapper import (ForceResetter, InsertionSortCollider, Bo1_Sphere_Aabb, InteractionLoop,
                           Ig2_Sphere_Sphere_ScGeom, Ip2_FrictMat_FrictMat_FrictPhys,
                           Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator, PyRunner, FrictMat,
@@ -342,6 +342,7 @@ class ServoBC(object):
             return call
         T = HostCallbacks
         self._callback_error = None
+        self._stream = {}                 # keyword remap x: body id -> the velocity to take back
         cb = HostCallbacks()
         if self._fire:
             cb.fire_sums = T.fire_sums_type(guarded(self._fire_sums_callback))
@@ -351,6 +352,7 @@ class ServoBC(object):
         cb.frame = T.frame_type(guarded(self._frame_callback))
         cb.interior_state = T.interior_state_type(guarded(self._interior_state_callback))
         cb.row = T.row_type(guarded(self._row_callback))
+        cb.remap = T.remap_type(guarded(self._remap_callback))
         self._callbacks = cb              # ctypes keeps no reference of its own
         if _core().sbc_host_drive(self._h, ctypes.byref(cb)):
             raise ServoBCError(_core().sbc_host_message(self._h).decode())
@@ -581,6 +583,27 @@ class ServoBC(object):
             ids[k] = i
             x[3 * k], x[3 * k + 1], x[3 * k + 2] = st.pos[0], st.pos[1], st.pos[2]
             v[3 * k], v[3 * k + 1], v[3 * k + 2] = st.vel[0], st.vel[1], st.vel[2]
+
+    def _remap_callback(self, user_data, M, origin, sign):
+        """keyword remap x (driver.h): the interior's velocity gains the frame's affine move over one step,
+        which NewtonIntegrator's x += dt v carries out and the next InteractionLoop's relative velocities
+        see (sign +1); the next step takes back exactly what was added (sign -1)."""
+        if sign < 0:
+            for i, added in self._stream.items():
+                st = O.bodies[i].state
+                st.vel = st.vel - added
+            self._stream = {}
+            return
+        d, dt, displacement = self.dim, self.dt, _core().sbc_remap_displacement
+        x, u = (ctypes.c_double * 3)(), (ctypes.c_double * 3)()
+        for i in self.interior:
+            st = O.bodies[i].state
+            p = st.pos
+            x[0], x[1], x[2] = p[0], p[1], p[2]
+            displacement(d, M, origin, x, u)
+            added = Vector3(*[u[a] / dt if a < d else 0.0 for a in range(3)])
+            st.vel = st.vel + added
+            self._stream[i] = added
 
     def _row_callback(self, user_data, row, line):
         self.rows.append(dict(zip(self._columns, row[:len(self._columns)])))

@@ -35,9 +35,10 @@ class HostCallbacks(ctypes.Structure):
     frame_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _pd)
     interior_state_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.POINTER(ctypes.c_long), _pd, _pd)
     row_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _pd, ctypes.c_char_p)
+    remap_type = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _pd, _pd, ctypes.c_int)
     _fields_ = [('user_data', ctypes.c_void_p), ('fire_sums', fire_sums_type), ('interior', interior_type),
                 ('contacts', contacts_type), ('net_force', net_force_type), ('frame', frame_type),
-                ('interior_state', interior_state_type), ('row', row_type)]
+                ('interior_state', interior_state_type), ('row', row_type), ('remap', remap_type)]
 
 
 def frame_offsets(q, dim=2):
@@ -124,6 +125,7 @@ def _load():
         'sbc_points_integrate': (I, [ctypes.POINTER(P), I, pd, pd, pi, pd, I, P]),
         'sbc_host_sealed': (I, [P]),
         'sbc_host_seal': (I, [P, pd, pd, pd]),
+        'sbc_remap_displacement': (None, [I, pd, pd, pd, pd]),
     }
     for name, (res, args) in sig.items():
         fn = getattr(lib, name)

@@ -15,6 +15,10 @@
  *   confined   (on a converged increment, on failure, every SBC_CONFINE_EVERY
  *                              steps) confine.h against the frame's centres
  *   row        (converged)     the increment's row and its log line
+ *   remap      (keyword remap x, while the frame travels to an increment's
+ *                              first commands) the interior follows the
+ *                              affine part of the frame's move; the next
+ *                              step begins by taking back its velocity
  *
  * then steps the controller and returns its event; the host applies
  * sbc_controller_commands before its next step. Every rank of a parallel host
@@ -74,6 +78,18 @@ typedef struct sbc_driver_callbacks {
        from an engine (sbc_engine_callbacks, sbc_spheres_callbacks) while its
        rows are its own; NULL: user_data */
     void *row_data;
+    /* keyword remap x (required with it), on this rank's interior
+       particles, with u_i = (M - I)(x_i - origin) (sbc_remap_displacement;
+       M [9] in 3 x 3 slots, origin [3] m) from the present centres:
+       sign +1: each particle moves by u_i before the host's next contact
+       forces and its velocity gains u_i / dt, so that the contact law's
+       relative velocities see the move, as they see the frame's (a host
+       whose step integrates after the driver, such as the embedded engines,
+       moves x by u_i now; one that integrates x += dt v before its forces,
+       such as LAMMPS, lets the velocity carry it); the host keeps what it
+       added per particle. sign -1, at the start of every step (M = I): the
+       velocity added, if any, is taken back exactly and forgotten */
+    void (*remap)(void *user_data, const double *M, const double *origin, int sign);
 } sbc_driver_callbacks;
 
 typedef struct sbc_driver sbc_driver;
@@ -88,6 +104,12 @@ void sbc_driver_free(sbc_driver *d);
  * already taken (the setup of a later run): damping only, returns
  * SBC_EVENT_RELAXING without stepping the controller. */
 sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err);
+
+/* The interior's share of the frame's move (sbc_controller_remap) through
+ * the remap callback, when one is due. sbc_driver_step calls it after the
+ * controller's step; a host that aims the controller itself
+ * (sbc_controller_aim) calls it before its next step. */
+void sbc_driver_remap(sbc_driver *d);
 
 /* The frame buffer (SBC_DRIVER_FRAME_SIZE(dim, Q)) from a snapshot's frame
  * arrays and sums, for a host that measures into an sbc_snapshot. */

@@ -91,6 +91,11 @@ typedef struct sbc_host_callbacks {
     /* optional: a converged increment, once the CSV of `file` has it: its row
        [SBC_HOST_ROW] and its log line (sbc_result_line) */
     void (*row)(void *user_data, const double *row, const char *line);
+    /* keyword remap x (required with it): the interior follows the frame's
+       affine move, sign +1, and gives back the velocity, sign -1, as
+       driver.h's remap says; M [9] (3 x 3, row-major; the packing's
+       dimension's block), origin [3] (m) */
+    void (*remap)(void *user_data, const double *M, const double *origin, int sign);
 } sbc_host_callbacks;
 
 /* The callbacks of the host's steps (copied). 0, or 1 with the message in

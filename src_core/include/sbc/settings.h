@@ -77,6 +77,9 @@ typedef struct sbc_settings {
     double predict;          /* inheritance factor n_f in [0, 1]; 0 = no prediction */
     int max_iterations;      /* servo iterations per increment; 100000 */
     int seal;                /* 1: the edges of the frame's polygon are walls for the interior (seal.h); 0 */
+    int remap;               /* 1 (remap x): while the frame travels to an increment's first commands, the
+                                interior follows the affine part of the change of F (controller.h,
+                                sbc_controller_remap); 0 (remap none) */
     sbc_update update;       /* fixed (the paper's) or secant; fixed */
     char accuracy[16];       /* preset in force (keyword accuracy; balanced by default) */
     /* mixed only: face_mode[face][component] (faces as above, components 0 = x,

@@ -34,6 +34,8 @@ struct sbc_engine {
     sbc_fire_state fire_state;
     sbc_pairs pairs;
     int stale; /* the pair list must be rebuilt before the next force evaluation */
+    double *stream;          /* keyword remap x: the velocity added to each particle, taken back next step (driver.h) */
+    int streaming;           /* ... some of it is in v now */
     const sbc_frame *frame;
     int sealed;              /* seal.h walls on the frame's polygon */
     sbc_seal seal;
@@ -67,6 +69,7 @@ void sbc_engine_free(sbc_engine *e)
     free(e->theta); free(e->omega); free(e->tq);
     free(e->r); free(e->mass); free(e->inv_m); free(e->inv_I);
     free(e->kinematic);
+    free(e->stream);
     free(e->snap_x); free(e->snap_theta); free(e->snap_f); free(e->snap_tq);
     sbc_seal_free(&e->seal);
     free(e->seal_reaction);
@@ -720,6 +723,42 @@ static int cb_confined(void *user_data, const double *fx, int increment, char *m
     return st;
 }
 
+/* keyword remap x (driver.h): the interior moves with the frame's affine
+   move now and carries its velocity, kept in e->stream, into the next
+   contact forces; a disc carried beyond half the skin since the last build
+   stales the list */
+static void cb_remap(void *user_data, const double *M, const double *origin, int sign)
+{
+    sbc_engine *e = user_data;
+    const double lim = 0.25 * e->pairs.skin * e->pairs.skin;
+    int k, c;
+    if (sign < 0) {
+        if (e->streaming)
+            for (k = 0; k < 2 * e->n; ++k) {
+                e->v[k] -= e->stream[k];
+                e->stream[k] = 0.0;
+            }
+        e->streaming = 0;
+        return;
+    }
+    if (!e->stream && !(e->stream = calloc(2 * (size_t)e->n, sizeof(double))))
+        return; /* out of memory: the interior waits for the frame, as without remap */
+    for (k = 0; k < e->n; ++k)
+        if (!e->kinematic[k]) {
+            const double *xb = &e->pairs.x_build[2 * k];
+            double *x = &e->x[2 * k], u[2];
+            sbc_remap_displacement(2, M, origin, x, u);
+            for (c = 0; c < 2; ++c) {
+                e->stream[2 * k + c] = u[c] / e->dt;
+                e->v[2 * k + c] += e->stream[2 * k + c];
+                x[c] += u[c];
+            }
+            if ((x[0] - xb[0]) * (x[0] - xb[0]) + (x[1] - xb[1]) * (x[1] - xb[1]) > lim)
+                e->stale = 1;
+        }
+    e->streaming = 1;
+}
+
 sbc_driver_callbacks sbc_engine_callbacks(sbc_engine *e)
 {
     sbc_driver_callbacks cb;
@@ -730,6 +769,7 @@ sbc_driver_callbacks sbc_engine_callbacks(sbc_engine *e)
     cb.contacts = cb_contacts;
     cb.frame = cb_frame;
     cb.confined = cb_confined;
+    cb.remap = cb_remap;
     return cb;
 }
 

@@ -36,6 +36,8 @@ struct sbc_spheres {
     int npair, cap;
     double *x_build;          /* [3n] centres at the last build */
     int stale;
+    double *stream;          /* keyword remap x: the velocity added to each particle, taken back next step (driver.h) */
+    int streaming;           /* ... some of it is in v now */
     long builds;
     const sbc_frame *frame;
     int sealed;               /* seal.h walls on the frame's triangles */
@@ -67,6 +69,7 @@ void sbc_spheres_free(sbc_spheres *e)
     free(e->theta); free(e->w); free(e->tq);
     free(e->r); free(e->mass); free(e->inv_m); free(e->inv_I);
     free(e->kinematic);
+    free(e->stream);
     free(e->pairs);
     free(e->x_build);
     sbc_seal_free(&e->seal);
@@ -481,6 +484,38 @@ static int confined(void *user_data, const double *fx, int increment, char *mess
     return SBC_OK;
 }
 
+/* keyword remap x (driver.h): the interior moves with the frame's affine
+   move now and carries its velocity, kept in e->stream, into the next
+   contact forces */
+static void remap(void *user_data, const double *M, const double *origin, int sign)
+{
+    sbc_spheres *e = user_data;
+    int i, c;
+    if (sign < 0) {
+        if (e->streaming)
+            for (i = 0; i < 3 * e->n; ++i) {
+                e->v[i] -= e->stream[i];
+                e->stream[i] = 0.0;
+            }
+        e->streaming = 0;
+        return;
+    }
+    if (!e->stream && !(e->stream = calloc(3 * (size_t)e->n, sizeof(double))))
+        return; /* out of memory: the interior waits for the frame, as without remap */
+    for (i = 0; i < e->n; ++i)
+        if (!e->kinematic[i]) {
+            double u[3];
+            sbc_remap_displacement(3, M, origin, &e->x[3 * i], u);
+            for (c = 0; c < 3; ++c) {
+                e->stream[3 * i + c] = u[c] / e->dt;
+                e->v[3 * i + c] += e->stream[3 * i + c];
+                e->x[3 * i + c] += u[c];
+            }
+            check_moved(e, i);
+        }
+    e->streaming = 1;
+}
+
 sbc_driver_callbacks sbc_spheres_callbacks(sbc_spheres *e)
 {
     sbc_driver_callbacks cb;
@@ -491,6 +526,7 @@ sbc_driver_callbacks sbc_spheres_callbacks(sbc_spheres *e)
     cb.contacts = contacts;
     cb.frame = frame;
     cb.confined = confined;
+    cb.remap = remap;
     return cb;
 }
 

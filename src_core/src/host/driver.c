@@ -30,6 +30,12 @@ sbc_driver *sbc_driver_create(sbc_controller *c, const sbc_settings *s, const sb
                  "interior, contacts, frame (and fire_sums for damping fire)");
         return NULL;
     }
+    if (s->remap && !cb->remap) {
+        sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: keyword 'remap': x needs a host that moves its interior "
+                 "particles (the driver's remap callback); this one does not (expected remap none)",
+                 sbc_bc_name(s->bc));
+        return NULL;
+    }
     if (!(d = calloc(1, sizeof *d))) {
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
         return NULL;
@@ -61,6 +67,21 @@ void sbc_driver_free(sbc_driver *d)
 }
 
 sbc_fire_state *sbc_driver_fire(sbc_driver *d) { return &d->fire; }
+
+void sbc_driver_remap(sbc_driver *d)
+{
+    double M[9], origin[3];
+    if (d->cb.remap && sbc_controller_remap(d->ctl, M, origin))
+        d->cb.remap(d->cb.user_data, M, origin, 1);
+}
+
+/* the velocity of the last remap, if any, taken back (driver.h, remap) */
+static void stop_streaming(sbc_driver *d)
+{
+    static const double I[9] = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0}, origin[3] = {0.0, 0.0, 0.0};
+    if (d->s.remap)
+        d->cb.remap(d->cb.user_data, I, origin, -1);
+}
 
 static void reduce(const sbc_driver *d, const double *in, double *out, int n, sbc_reduce_op op)
 {
@@ -109,6 +130,7 @@ sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err)
     sbc_snapshot snap;
     unsigned need;
     sbc_event ev;
+    stop_streaming(d);
     if (fire) {
         double sums[SBC_FIRE_SUMS] = {0.0, 0.0, 0.0, 0.0, 0.0};
         d->cb.fire_sums(d->cb.user_data, local);
@@ -161,5 +183,7 @@ sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err)
             return SBC_EVENT_FAILED;
         }
     }
+    if (ev != SBC_EVENT_FAILED && ev != SBC_EVENT_FINISHED)
+        sbc_driver_remap(d);
     return ev;
 }

@@ -269,6 +269,12 @@ static int drive_confined(void *u, const double *fx, int increment, char *messag
     return SBC_OK;
 }
 
+static void drive_remap(void *u, const double *M, const double *origin, int sign)
+{
+    const sbc_host *h = u;
+    h->cb.remap(h->cb.user_data, M, origin, sign);
+}
+
 static int drive_row(void *u, const sbc_result *row, const char *line, char *message, size_t cap)
 {
     sbc_host *h = u;
@@ -304,6 +310,7 @@ int sbc_host_drive(sbc_host *h, const sbc_host_callbacks *cb)
     d.net_force = cb->net_force ? drive_net_force : NULL;
     d.frame = drive_frame;
     d.row = drive_row;
+    d.remap = cb->remap ? drive_remap : NULL;
     if (cb->interior_state) {
         free(h->ids);
         free(h->ix);

@@ -373,6 +373,7 @@ sbc_point_status sbc_point_integrate(sbc_point *p, const double F[9], double P[9
     memset(P, 0, sizeof(double) * 9);
     if (sbc_controller_aim(p->ctl, F, err) != SBC_OK)
         return SBC_POINT_FAILED;
+    sbc_driver_remap(p->driver);
     p->at_committed = 0;
     if (run_increment(p, 0, err) != SBC_EVENT_FINISHED) {
         sbc_point_revert(p);

@@ -51,9 +51,9 @@ static void start_classic(sbc_controller *c)
 /* The frame travels from the commands saved in c->motion to those in
  * x_cmd, theta_cmd (motion.h); the relaxation starts once it is there, and
  * ends at the tolerance tol. */
-static void begin_move(sbc_controller *c, int at_rest, double tol)
+static void begin_move(sbc_controller *c, int at_rest, double tol, const double *carry, const double *origin)
 {
-    sbc_motion_begin(&c->motion, c->frame, c->mass, c->kn, c->dt, c->s.speed, c->x_cmd, c->theta_cmd);
+    sbc_motion_begin(&c->motion, c->frame, c->mass, c->kn, c->dt, c->s.speed, carry, origin, c->x_cmd, c->theta_cmd);
     sbc_relax_start(&c->relax, c->s.criterion, tol, c->s.window, at_rest);
     /* energy criterion: a frame that travelled has set the interior moving,
        so its kinetic energy has risen already (relax.h); the maximum is the
@@ -85,6 +85,25 @@ static void save_commands(sbc_controller *c)
     memcpy(c->motion.th_from, c->theta_cmd, sizeof(double) * (size_t)(c->rot * c->frame->n));
 }
 
+/* the interior's map over an increment's whole opening move (keyword remap
+ * x): F_now F_prev^-1 about the origin of x_q = F X_q (mixed: the support's
+ * centre); 0 when it is the identity */
+static int opening_map(const sbc_controller *c, double M[9], double origin[3])
+{
+    const int dim = c->frame->dim;
+    double I[9];
+    int k;
+    if (!sbc_tensor_right_divide(dim, c->F_now, c->F_prev, M))
+        return 0;
+    sbc_tensor_identity(dim, I);
+    for (k = 0; k < 9 && M[k] == I[k]; ++k)
+        ;
+    origin[0] = origin[1] = origin[2] = 0.0;
+    if (c->s.bc == SBC_BC_MIXED) /* x_q = c + F (X_q - c) about the support's centre (Sect. 5.1) */
+        sbc_ctl_mixed_centre(c, origin);
+    return k < 9;
+}
+
 static void start_increment(sbc_controller *c)
 {
     save_commands(c);
@@ -102,7 +121,13 @@ static void start_increment(sbc_controller *c)
     c->win_min = c->prev_min = DBL_MAX;
     c->steps = 0;
     memset(&c->norms, 0, sizeof c->norms);
-    begin_move(c, c->increment == 0, c->s.bc == SBC_BC_D ? relax_tol(&c->s) : first_tol(c));
+    {
+        double M[9], origin[3];
+        const int carried = c->s.remap && opening_map(c, M, origin);
+        begin_move(c, c->increment == 0, c->s.bc == SBC_BC_D ? relax_tol(&c->s) : first_tol(c), carried ? M : NULL,
+                   origin);
+    }
+    c->remap_due = 1;
 }
 
 /* The absolute floors of the force criterion (relax.h): the force of an
@@ -285,6 +310,37 @@ sbc_status sbc_controller_aim(sbc_controller *c, const double F[9], sbc_error *e
     memcpy(c->F_now, G, sizeof c->F_now);
     start_increment(c);
     return SBC_OK;
+}
+
+/* F along the increment's opening move at t = done / steps of the motion:
+ * F_prev + t (F_now - F_prev), the affine part of the frame's commands */
+static void F_along_move(const sbc_controller *c, long done, double F[9])
+{
+    const double t = (double)done / (double)c->motion.steps;
+    int k;
+    for (k = 0; k < 9; ++k)
+        F[k] = done >= c->motion.steps ? c->F_now[k] : c->F_prev[k] + t * (c->F_now[k] - c->F_prev[k]);
+}
+
+int sbc_controller_remap(const sbc_controller *c, double M[9], double origin[3])
+{
+    const int dim = c->frame->dim;
+    double from[9], to[9], whole[9];
+    if (!c->s.remap || !c->remap_due || c->increment > c->total || !opening_map(c, whole, origin))
+        return 0;
+    F_along_move(c, c->motion.done - 1, from);
+    F_along_move(c, c->motion.done, to);
+    return sbc_tensor_right_divide(dim, to, from, M);
+}
+
+void sbc_remap_displacement(int dim, const double M[9], const double origin[3], const double *x, double *u)
+{
+    int i, j;
+    for (i = 0; i < dim; ++i) {
+        u[i] = 0.0;
+        for (j = 0; j < dim; ++j)
+            u[i] += (M[SBC_IJ(i, j)] - (i == j ? 1.0 : 0.0)) * (x[j] - origin[j]);
+    }
 }
 
 void sbc_controller_progress_line(const sbc_controller *c, long step, double elapsed, char *out, size_t cap)
@@ -645,7 +701,7 @@ static sbc_event stage_correct(sbc_controller *c, const double F_measured[9], co
                 c->P_shift[SBC_IJ(k, k)] += c->P_star[SBC_IJ(k, k)] - P_hat[SBC_IJ(k, k)];
         sbc_ctl_mixed_follow_F(c);
     }
-    begin_move(c, !moved, inexact_tol(c, nrm.relative_force));
+    begin_move(c, !moved, inexact_tol(c, nrm.relative_force), NULL, NULL);
     return SBC_EVENT_CORRECTED;
 }
 
@@ -653,9 +709,11 @@ sbc_event sbc_controller_step(sbc_controller *c, const sbc_snapshot *snap, sbc_e
 {
     double F_measured[9], P_hat[9];
     sbc_event ev;
+    c->remap_due = 0;
     if ((ev = stage_open(c, snap, err)) != STAGE_ON)
         return ev;
     if (sbc_motion_advance(&c->motion, c->frame->n, c->x_cmd, c->theta_cmd)) {
+        c->remap_due = !c->servo;
         c->steps++;
         return SBC_EVENT_CORRECTED; /* the frame travels on (motion.h) */
     }

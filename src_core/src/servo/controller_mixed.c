@@ -27,7 +27,7 @@ int sbc_ctl_row_measured(const sbc_controller *c, int i)
  * axis, its edges and corners included: the bottom edge in 2D, zlo in 3D),
  * so that the support keeps its place on average while it follows F, and a
  * translated packing gives the same results. */
-static void support_centre(const sbc_controller *c, double centre[3])
+void sbc_ctl_mixed_centre(const sbc_controller *c, double centre[3])
 {
     const sbc_frame *f = c->frame;
     const int support = 2 * (f->dim - 1);
@@ -93,7 +93,7 @@ void sbc_ctl_mixed_follow_F(sbc_controller *c)
     const int dim = f->dim;
     double centre[3];
     int q, k, j;
-    support_centre(c, centre);
+    sbc_ctl_mixed_centre(c, centre);
     for (q = 0; q < f->n; ++q) {
         double d[3] = {0.0, 0.0, 0.0};
         for (k = 0; k < dim; ++k)
@@ -132,7 +132,7 @@ void sbc_ctl_start_mixed(sbc_controller *c)
                 F[SBC_IJ(k, j)] = G[SBC_IJ(k, j)];
     for (k = 0; k < 9; ++k)
         dF[k] = F[k] - G[k];
-    support_centre(c, centre);
+    sbc_ctl_mixed_centre(c, centre);
     for (q = 0; q < f->n; ++q) {
         double d[3] = {0.0, 0.0, 0.0};
         int any_t = 0, all_d = 1;
@@ -226,7 +226,7 @@ double sbc_ctl_mixed_lag(const sbc_controller *c, const double *x, double Fm[9])
     double centre[3], lag = 0.0;
     int q, k;
     sbc_homogenize_F(f, x, Fm);
-    support_centre(c, centre);
+    sbc_ctl_mixed_centre(c, centre);
     for (q = 0; q < f->n; ++q)
         for (k = 0; k < f->dim; ++k)
             if (sbc_ctl_row_measured(c, k) && c->mode[3 * q + k] != SBC_MODE_T) {
@@ -247,7 +247,7 @@ double sbc_ctl_mixed_stress_miss(sbc_controller *c, double P[9], double P_hat[9]
     const sbc_frame *f = c->frame;
     double miss = 0.0, scale = 0.0, Pt[9], centre[3];
     int q, k;
-    support_centre(c, centre);
+    sbc_ctl_mixed_centre(c, centre);
     sbc_homogenize_P_about(f, c->a, centre, P);
     for (k = 0; k < 9; ++k)
         Pt[k] = c->P_fixed[k] ? c->P_star[k] + c->P_shift[k] : P[k];

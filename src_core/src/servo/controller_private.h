@@ -56,6 +56,8 @@ struct sbc_controller {
     double win_min;      /* smallest residual/tolerance ratio in this window of iterations */
     double prev_min;     /* ... in the window before (stagnation check) */
     long steps;          /* host steps spent on this increment */
+    int remap_due;       /* the commands of this step move the frame towards an increment's first
+                            commands (sbc_controller_remap) */
     sbc_servo_norms norms; /* last residual norms of this increment (zero for D) */
     sbc_result result;
     double work_path;    /* the largest work scale |P||F| of the path's converged increments, N/m */
@@ -72,6 +74,7 @@ double sbc_ctl_mixed_lag_tol(const sbc_controller *c);
 double sbc_ctl_mixed_lag(const sbc_controller *c, const double *x, double Fm[9]);
 double sbc_ctl_mixed_stress_miss(sbc_controller *c, double P[9], double P_hat[9]);
 void sbc_ctl_new_reference(sbc_controller *c, const double *x);
+void sbc_ctl_mixed_centre(const sbc_controller *c, double centre[3]);
 
 /* controller_checks.c: refusals, failure messages and the certification of a row */
 double sbc_ctl_tol_force(const sbc_controller *c);

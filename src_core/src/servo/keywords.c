@@ -100,6 +100,12 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
          "\"Seal\"; in 3D the triangles of the surface through them, [frame3d.md](frame3d.md) \"Seal\"); for "
          "irregular packings sheared far enough that a disc would slip out between frame discs",
      "no"},
+    {"remap",
+     "`x` or `none`",
+     "`x`: while the frame travels to an increment's first positions, every interior particle follows the "
+         "affine part of the change of F̄ (as `fix deform … remap x` in LAMMPS), so that the relaxation starts "
+         "near its answer instead of from a wave at the frame (see \"Remap\")",
+     "none"},
     {"frame",
      "group-ID",
      "boundary particles given by a host group; the embedded runner detects the frame itself and refuses "

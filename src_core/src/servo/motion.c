@@ -1,5 +1,6 @@
 /* The frame's travel to new commands at a bounded speed (motion.h). */
 #include "motion.h"
+#include "sbc/controller.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -36,7 +37,7 @@ static void place(const sbc_motion *m, int q, double t, double *x, double *th)
 }
 
 void sbc_motion_begin(sbc_motion *m, const sbc_frame *f, const double *mass, double kn, double dt, double speed,
-                      double *x, double *th)
+                      const double *carry, const double *origin, double *x, double *th)
 {
     double longest = 0.0; /* the most time steps one frame particle needs */
     int q;
@@ -47,10 +48,17 @@ void sbc_motion_begin(sbc_motion *m, const sbc_frame *f, const double *mass, dou
             const double R = f->R[q];
             const double *a = &m->x_from[3 * q], *b = &m->x_goal[3 * q];
             const double *ta = &m->th_from[m->rot * q], *tb = &m->th_goal[m->rot * q];
+            double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, u[3] = {0.0, 0.0, 0.0};
+            int k;
             /* hypot(h, 0) = |h| exactly (C11 F.10.4.3): a 2D frame's length is hypot(d0, d1) */
             const double turn = m->rot == 1 ? fabs(tb[0] - ta[0])
                                             : hypot(hypot(tb[0] - ta[0], tb[1] - ta[1]), tb[2] - ta[2]);
-            const double path = hypot(hypot(b[0] - a[0], b[1] - a[1]), b[2] - a[2]) + R * turn;
+            double path;
+            if (carry)
+                sbc_remap_displacement(f->dim, carry, origin, a, u);
+            for (k = 0; k < 3; ++k)
+                d[k] -= u[k];
+            path = hypot(hypot(d[0], d[1]), d[2]) + R * turn;
             const double per_step = speed * R * dt / sqrt(2.0 * mass[q] / kn); /* m per time step */
             if (path / per_step > longest)
                 longest = path / per_step;

@@ -26,9 +26,13 @@ void sbc_motion_free(sbc_motion *m);
 
 /* Starts a move from the commands in force (x_from, th_from, copied by the
  * caller beforehand) to the commands in x, th, and writes into x, th the
- * commands of the move's first step. mass [Q] kg, kn N/m, dt s. */
+ * commands of the move's first step. mass [Q] kg, kn N/m, dt s. carry: NULL,
+ * or the map M [9] about origin [3] that the interior follows during the move
+ * (keyword remap x, controller.h): the speed then bounds each frame
+ * particle's move relative to the interior around it, x_goal - x_from -
+ * (M - I)(x_from - origin), for that part alone strikes its neighbours. */
 void sbc_motion_begin(sbc_motion *m, const sbc_frame *f, const double *mass, double kn, double dt, double speed,
-                      double *x, double *th);
+                      const double *carry, const double *origin, double *x, double *th);
 
 /* The next step of a move under way: writes its commands into x, th and
  * returns 1; returns 0 when the move is over (the goal is in force). */

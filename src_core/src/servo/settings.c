@@ -347,6 +347,12 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
                 s->seal = strcmp(w, "yes") == 0;
             else if (w)
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'seal': value '%s' is not valid (expected yes or no)", w);
+        } else if (strcmp(key, "remap") == 0) {
+            const char *w = next_word(&c, "x|none", &st);
+            if (w && (strcmp(w, "x") == 0 || strcmp(w, "none") == 0))
+                s->remap = strcmp(w, "x") == 0;
+            else if (w)
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'remap': value '%s' is not valid (expected x or none)", w);
         } else if (strcmp(key, "max_iterations") == 0) {
             st = read_int(&c, "K", 1, 1000000000L, &iv);
             s->max_iterations = (int)iv;

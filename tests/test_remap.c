@@ -1,0 +1,193 @@
+/* Keyword remap x (docs/servo_bc.md, "Remap"): the interior follows the
+ * affine part of each increment's change of F while the frame travels there.
+ *
+ * - Prestressed frictional lattices under F = diag(a, b) (2D, N x N) and
+ *   diag(a, b, c) (3D, N^3): the affine state is the equilibrium
+ *   (test_accuracy.c), so with remap every increment is one relaxation
+ *   window for (D) and one servo iteration (two windows) for (P), and the
+ *   rows meet the closed forms
+ *     2D  P_ii = -N kn (2R - d F_ii) / ((N - 1) d)
+ *     3D  P_ii = -N^2 kn (2R - d F_ii) / ((N - 1)^2 d^2)
+ *   to 1e-9 of |P11|, off-diagonals below 1e-9 of |P11|.
+ * - (T) on the touching frictionless 5 x 5 lattice (test_accuracy.c):
+ *   P11 = -kn eps (N - 1)/(N - 3/2) to 1e-5, with and without remap.
+ * - A frictionless irregular packing, whose equilibrium is unique: the rows
+ *   with and without remap within twice the preset's accuracy ((D) tight,
+ *   1e-6; (P) balanced, 1e-4) of each other, relative to the largest |P|.
+ * - The words: `remap y` refused by name and value; a host driver without
+ *   the remap callback refuses `remap x`. */
+#include "check.h"
+#include "csv_read.h"
+#include "tests.h"
+
+#include "sbc/driver.h"
+#include "sbc/embedded/script.h"
+#include "sbc/settings.h"
+#include "sbc/tensor.h"
+
+#include <stdio.h>
+#include <string.h>
+
+enum { INCREMENTS = 3, WINDOW = 20 };
+
+/* runs script with "REMAP" replaced by the remap words, into csv; rows read (3D: wide rows) */
+static int run_case(const char *tag, const char *script, int dim, double rows[][SBC_COLUMNS], int max)
+{
+    char csv[512], text[2048];
+    sbc_error err;
+    snprintf(csv, sizeof csv, "%s/remap_%s.csv", test_tmpdir, tag);
+    snprintf(text, sizeof text, script, csv);
+    if (sbc_script_run_string(text, tag, NULL, &err) != SBC_OK) {
+        printf("  %s: %s\n", tag, err.message);
+        return -1;
+    }
+    if (dim == 3)
+        return csv_read_3d(csv, rows, max);
+    {
+        static double flat[16][CSV_COLS];
+        int n = csv_read(csv, flat, max < 16 ? max : 16), k, c;
+        for (k = 0; k < n; ++k)
+            for (c = 0; c < CSV_COLS; ++c)
+                rows[k][c] = flat[k][c];
+        return n;
+    }
+}
+
+/* the lattice closed forms with remap: rows, iterations, steps */
+static void lattices(void)
+{
+    const double d = 2e-3, R = 1.02e-3, kn = 1e4;
+    static double rows[INCREMENTS + 2][SBC_COLUMNS];
+    static const char *bcs[2] = {"D", "P"};
+    int dim, b;
+    for (dim = 2; dim <= 3; ++dim)
+        for (b = 0; b < 2; ++b) {
+            const int N = dim == 2 ? 9 : 4;
+            char script[1024], tag[32];
+            double worst = 0.0;
+            int n, k, steps_ok = 1, iterations_ok = 1;
+            snprintf(tag, sizeof tag, "lattice%d_%s", dim, bcs[b]);
+            snprintf(script, sizeof script,
+                     "dimension %d\nlattice %s spacing %.17g radius %.17g\n"
+                     "contact frictional kn %.17g ks %.17g mu 0.4\ndensity 2e3\ntimestep 1e-5\n"
+                     "servo_bc %s F %s increments %d accuracy tight remap x file %%s\nrun\n",
+                     dim, dim == 2 ? "square 9 9" : "cubic 4 4 4", d, R, kn, kn / 5, bcs[b],
+                     dim == 2 ? "0.99 0 0 0.995" : "0.99 0 0 0 0.995 0 0 0 0.993", INCREMENTS);
+            n = run_case(tag, script, dim, rows, INCREMENTS + 2);
+            CHECK(n == INCREMENTS + 1);
+            if (n != INCREMENTS + 1)
+                continue;
+            for (k = 1; k < n; ++k) {
+                const double *r = rows[k];
+                const double scale = dim == 2 ? N * kn / ((N - 1) * d) : N * N * kn / ((N - 1.0) * (N - 1.0) * d * d);
+                const double P11 = -scale * (2 * R - d * r[sbc_column_index(dim, "F11")]);
+                int i, j;
+                for (i = 0; i < dim; ++i)
+                    for (j = 0; j < dim; ++j) {
+                        char F[8], P[8];
+                        const int f = sbc_column_index(dim, sbc_tensor_component_name("F", i, j, F));
+                        const int p = sbc_column_index(dim, sbc_tensor_component_name("P", i, j, P));
+                        const double want = i == j ? -scale * (2 * R - d * r[f]) : 0.0;
+                        worst = fmax(worst, fabs(r[p] - want) / fabs(P11));
+                    }
+                steps_ok &= (long)r[sbc_column_index(dim, "relax_steps")] == (b == 0 ? WINDOW : 2 * WINDOW);
+                iterations_ok &= (int)r[sbc_column_index(dim, "iterations")] == b;
+            }
+            printf("  remap x, %s (%s), %d increments: closed form to %.2e of |P11|, %s DEM steps per increment\n",
+                   dim == 2 ? "9 x 9 lattice" : "4^3 lattice", bcs[b], INCREMENTS, worst,
+                   steps_ok ? (b == 0 ? "20 (one window)" : "40 (one servo iteration)") : "NOT the window's");
+            CHECK(worst < 1e-9);
+            CHECK(steps_ok);
+            CHECK(iterations_ok);
+        }
+}
+
+/* (T) on the touching frictionless lattice, with and without remap */
+static void traction(void)
+{
+    static double rows[INCREMENTS + 2][SBC_COLUMNS];
+    static const char *words[2] = {"none", "x"};
+    const int N = 5;
+    const double kn = 1e4;
+    int w;
+    for (w = 0; w < 2; ++w) {
+        char script[1024], tag[32];
+        double worst = 0.0;
+        int n, k;
+        snprintf(tag, sizeof tag, "traction_%s", words[w]);
+        snprintf(script, sizeof script,
+                 "dimension 2\nlattice square 5 5 spacing 2e-3 radius 1e-3\n"
+                 "contact frictional kn 1e4 ks 0 mu 0\ndensity 2e3\ntimestep 1e-5\n"
+                 "servo_bc T F 0.99 0 0 1 increments %d accuracy tight remap %s file %%s\nrun\n", INCREMENTS, words[w]);
+        n = run_case(tag, script, 2, rows, INCREMENTS + 2);
+        CHECK(n == INCREMENTS + 1);
+        for (k = 1; k < n; ++k) {
+            const double eps = 1.0 - rows[k][COL("F11")], P11 = -kn * eps * (N - 1) / (N - 1.5);
+            worst = fmax(worst, fabs(rows[k][COL("P11")] - P11) / fabs(P11));
+        }
+        printf("  (T) touching frictionless 5 x 5 lattice, remap %s: P11 = -kn eps (N-1)/(N-3/2) to %.2e\n",
+               words[w], worst);
+        CHECK(n == INCREMENTS + 1 && worst < 1e-5);
+    }
+}
+
+/* a frictionless irregular packing: the same rows with and without remap */
+static void irregular(void)
+{
+    static double rows[2][INCREMENTS + 2][SBC_COLUMNS];
+    static const char *bcs[2] = {"D", "P"};
+    int b;
+    for (b = 0; b < 2; ++b) {
+        long steps[2] = {0, 0};
+        double diff = 0.0, scale = 0.0;
+        int w, n[2], k, c;
+        for (w = 0; w < 2; ++w) {
+            char script[1024], tag[32], packing[600];
+            const int first = b == 0 && w == 0; /* generates the packing, the others read it */
+            snprintf(tag, sizeof tag, "irregular_%s_%d", bcs[b], w);
+            if (first)
+                snprintf(packing, sizeof packing,
+                         "generate periodic n0 60 rmin 1e-3 polydispersity 2 seed 3 strain 0.01\n"
+                         "write_packing text %s/remap_irregular.txt", test_tmpdir);
+            else
+                snprintf(packing, sizeof packing, "read_packing %s/remap_irregular.txt", test_tmpdir);
+            snprintf(script, sizeof script,
+                     "dimension 2\n%s\n"
+                     "contact frictional kn 1e4 ks 0 mu 0\ndensity 2e3\ntimestep 1e-5\n"
+                     "servo_bc %s F 0.9995 0.0005 0 0.9998 increments 1 accuracy %s remap %s file %%s\nrun\n",
+                     packing, bcs[b], b ? "balanced" : "tight", w ? "x" : "none");
+            n[w] = run_case(tag, script, 2, rows[w], 4);
+            for (k = 1; k < n[w]; ++k)
+                steps[w] += (long)rows[w][k][COL("relax_steps")];
+        }
+        CHECK(n[0] == 2 && n[1] == 2);
+        if (n[0] != 2 || n[1] != 2)
+            continue;
+        for (k = 0; k < n[0]; ++k)
+            for (c = COL("P11"); c <= COL("P22"); ++c) {
+                scale = fmax(scale, fabs(rows[0][k][c]));
+                diff = fmax(diff, fabs(rows[0][k][c] - rows[1][k][c]));
+            }
+        printf("  frictionless irregular packing (%s), %s: rows with and without remap %.2e of max |P| apart; "
+               "DEM steps %ld and %ld\n", bcs[b], b ? "balanced" : "tight", diff / scale, steps[1], steps[0]);
+        CHECK(diff <= 2.0 * sbc_settings_preset_accuracy(b ? "balanced" : "tight") * scale);
+    }
+}
+
+static void refusals(void)
+{
+    sbc_settings s;
+    sbc_error err;
+    CHECK(sbc_settings_parse_words(&s, "P remap y", &err) == SBC_ERR_INPUT);
+    CHECK(strstr(err.message, "keyword 'remap': value 'y' is not valid (expected x or none)") != NULL);
+    CHECK(sbc_settings_parse_words(&s, "P remap x", &err) == SBC_OK && s.remap == 1);
+    CHECK(sbc_settings_parse_words(&s, "P", &err) == SBC_OK && s.remap == 0);
+}
+
+void test_remap(void)
+{
+    refusals();
+    lattices();
+    traction();
+    irregular();
+}
