@@ -138,6 +138,20 @@ for e in embedded lammps liggghts yade lammps_np2 liggghts_np2; do
     fail=$((fail + 1)); echo "FAIL remap x, 7 x 7 lattice (P), $e: ${1:-0} increments, ${2:-?} not of one iteration and 40 steps, P11 off by ${3:-?}"
   fi
 done
+# the million-disc decks (inputs/lammps/million.in, inputs/liggghts/million.in) through
+# bench/million.sh at 12 x 12 discs: each host on 1 and 2 ranks meets the closed form to
+# 1e-9, and 2 ranks give 1 rank's rows to 1e-9 of max |P| (the figures of time are not tested)
+out=$(bash "$top/bench/million.sh" "$B/lmp_servo" "$B/liggghts_servo" "$B/servo-bc" 12 2>&1) || true
+for hr in "lammps 1" "lammps 2" "liggghts 1" "liggghts 2"; do
+  set -- $hr
+  got=$(echo "$out" | awk -v h="$1" -v r="$2" '$1 == h && $2 == r { print $3, $(NF - 1), $NF }')
+  set -- $got
+  if [ "${1:-0}" -ge 160 ] && awk -v c="${2:-1}" -v d="${3:--}" 'BEGIN { exit !(c <= 1e-9 && (d == "-" || d <= 1e-9)) }'; then
+    pass=$((pass + 1)); echo "million deck at 12 x 12, $hr rank(s): $1 steps, P against the closed form $2, against 1 rank ${3}"
+  else
+    fail=$((fail + 1)); echo "FAIL million deck at 12 x 12, $hr rank(s): ${got:-no row}"; echo "$out" | tail -6
+  fi
+done
 # the prestressed frictional 4^3 lattice: P11 at the last increment against the closed form
 # -N^2 kn (2R - d F11) / ((N - 1)^2 d^2) within 1e-6
 compare_3d inputs/compare/cubic_P_3d.sbc "4^3 lattice" \

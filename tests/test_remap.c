@@ -14,6 +14,9 @@
  * - A frictionless irregular packing, whose equilibrium is unique: the rows
  *   with and without remap within twice the preset's accuracy ((D) tight,
  *   1e-6; (P) balanced, 1e-4) of each other, relative to the largest |P|.
+ * - A material point (material_point.h) of the frictional 5 x 5 lattice
+ *   under (P) with remap x: two integrates (the second after a commit) meet
+ *   the closed form to 1e-9, as the runner's rows do.
  * - The words: `remap y` refused by name and value; a host driver without
  *   the remap callback refuses `remap x`. */
 #include "check.h"
@@ -22,6 +25,7 @@
 
 #include "sbc/driver.h"
 #include "sbc/embedded/script.h"
+#include "sbc/material_point.h"
 #include "sbc/settings.h"
 #include "sbc/tensor.h"
 
@@ -184,9 +188,58 @@ static void refusals(void)
     CHECK(sbc_settings_parse_words(&s, "P", &err) == SBC_OK && s.remap == 0);
 }
 
+/* the material point aims its controller itself (sbc_driver_remap after sbc_controller_aim) */
+static void material_point(void)
+{
+    enum { N = 5 };
+    const double d = 2e-3, R = 1.02e-3, kn = 1e4;
+    static double xy[2 * N * N], rad[N * N];
+    sbc_point_def def = sbc_point_def_default();
+    sbc_point *p;
+    sbc_error err;
+    double worst = 0.0;
+    int i, j, k, ok = 1;
+    for (j = 0; j < N; ++j)
+        for (i = 0; i < N; ++i) {
+            xy[2 * (N * j + i)] = d * i;
+            xy[2 * (N * j + i) + 1] = d * j;
+            rad[N * j + i] = R;
+        }
+    def.n = N * N;
+    def.x = xy;
+    def.r = rad;
+    def.words = "P accuracy tight remap x";
+    def.law.kn = kn;
+    def.law.ks = kn / 5;
+    def.law.mu = 0.4;
+    def.density = 2e3;
+    def.dt = 1e-5;
+    p = sbc_point_create(&def, &err);
+    CHECK(p != NULL);
+    if (!p) {
+        printf("  %s\n", err.message);
+        return;
+    }
+    for (k = 1; k <= 2; ++k) {
+        const double a = 1.0 - 0.001 * k, b = 1.0 - 0.0005 * k;
+        double F[9] = {0}, P[9], ratio;
+        F[0] = a;
+        F[4] = b;
+        ok &= sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED;
+        sbc_point_commit(p);
+        worst = fmax(worst, fabs(P[0] + N * kn * (2 * R - d * a) / ((N - 1) * d)) / fabs(P[0]));
+        worst = fmax(worst, fabs(P[4] + N * kn * (2 * R - d * b) / ((N - 1) * d)) / fabs(P[0]));
+        worst = fmax(worst, fmax(fabs(P[1]), fabs(P[3])) / fabs(P[0]));
+    }
+    printf("  material point, frictional 5 x 5 lattice, (P) remap x: two integrates on the closed form to %.2e\n", worst);
+    CHECK(ok && worst < 1e-9);
+    sbc_point_free(p);
+}
+
 void test_remap(void)
 {
     refusals();
+    material_point();
     lattices();
     traction();
     irregular();
