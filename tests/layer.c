@@ -35,3 +35,14 @@ sbc_engine *test_layer(sbc_packing *p, sbc_frame *f, int fire)
     sbc_engine_set_frame(e, f);
     return e;
 }
+
+void test_square_lattice(int N, double d, double R, double *xy, double *r)
+{
+    int i, j;
+    for (j = 0; j < N; ++j)
+        for (i = 0; i < N; ++i) {
+            xy[2 * (N * j + i)] = d * i;
+            xy[2 * (N * j + i) + 1] = d * j;
+            r[N * j + i] = R;
+        }
+}

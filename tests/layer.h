@@ -1,4 +1,4 @@
-/* Test helper: the 37-disc mixed layer of Sect. 5.3 used by several tests
+/* Test helpers: a square lattice's centres, and the 37-disc mixed layer of Sect. 5.3 used by several tests
  * (generated periodic packing n0 = 25, R_min = 0.8 mm, polydispersity 1.5,
  * seed 1; Table 6 frictional physics, dt = 5e-6 s). */
 #ifndef SBC_TEST_LAYER_H
@@ -15,5 +15,9 @@
  * set), damped by FIRE (fire = 1) or eq. 10 with 0.7 (fire = 0); NULL on
  * failure. The caller frees all three. */
 sbc_engine *test_layer(sbc_packing *p, sbc_frame *f, int fire);
+
+/* An N x N square lattice of discs of radius R, d apart, from the origin:
+ * centres xy [2 N^2] (row by row), radii r [N^2]. */
+void test_square_lattice(int N, double d, double R, double *xy, double *r);
 
 #endif

@@ -17,6 +17,7 @@
  *   to 1e-4 of C1111; a (P) state into a new point bit for bit;
  * - a batch on 1 and 3 threads gives the same bits. */
 #include "check.h"
+#include "layer.h"
 #include "tests.h"
 
 #include "sbc/material_point.h"
@@ -36,13 +37,7 @@ static double xy[2 * N * N], rad[N * N];
 static sbc_point_def lattice(const char *words)
 {
     sbc_point_def d = sbc_point_def_default();
-    int i, j;
-    for (j = 0; j < N; ++j)
-        for (i = 0; i < N; ++i) {
-            xy[2 * (N * j + i)] = D_SPACING * i;
-            xy[2 * (N * j + i) + 1] = D_SPACING * j;
-            rad[N * j + i] = RADIUS;
-        }
+    test_square_lattice(N, D_SPACING, RADIUS, xy, rad);
     d.n = N * N;
     d.x = xy;
     d.r = rad;

@@ -21,6 +21,7 @@
  *   the remap callback refuses `remap x`. */
 #include "check.h"
 #include "csv_read.h"
+#include "layer.h"
 #include "tests.h"
 
 #include "sbc/driver.h"
@@ -198,13 +199,8 @@ static void material_point(void)
     sbc_point *p;
     sbc_error err;
     double worst = 0.0;
-    int i, j, k, ok = 1;
-    for (j = 0; j < N; ++j)
-        for (i = 0; i < N; ++i) {
-            xy[2 * (N * j + i)] = d * i;
-            xy[2 * (N * j + i) + 1] = d * j;
-            rad[N * j + i] = R;
-        }
+    int k, ok = 1;
+    test_square_lattice(N, d, R, xy, rad);
     def.n = N * N;
     def.x = xy;
     def.r = rad;
