@@ -44,6 +44,8 @@ restart_decks "$TMP/restart_head.in"
 restart_check
 restart_friction_check 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 2e3 0 0 0.4 0/' \
   "$TMP/restart_head.in"
+restart_remap_check 's/^pair_style      gran\/hooke\/history 1e4 0 0 0 0.4 0/pair_style      gran\/hooke\/history 1e4 2e3 0 0 0.4 0/' \
+  "$TMP/restart_head.in"
 # per-atom outputs for dumps: f_ID[1] frame flag, f_ID[2] accumulated rotation (rad)
 printf 'write_dump all custom %s id f_servo[1] f_servo[2] modify sort id\n' "$TMP/atoms.txt" > "$TMP/dump_tail.in"
 cat "$DECK" "$TMP/dump_tail.in" > "$TMP/dump.in"

@@ -67,6 +67,7 @@ sed -n '/^fix  *kn /,/^timestep/p' "$DECK" >> "$TMP/restart_head.in"
 restart_decks "$TMP/restart_head.in"
 restart_check
 restart_friction_check 's/kt peratomtypepair 2 0 0 0 0/kt peratomtypepair 2 2e3 2e3 2e3 2e3/' "$TMP/restart_head.in"
+restart_remap_check 's/kt peratomtypepair 2 0 0 0 0/kt peratomtypepair 2 2e3 2e3 2e3 2e3/' "$TMP/restart_head.in"
 # LIGGGHTS 3.8 does not keep the time step in its restart files: without it the
 # fix would servo with other gains (eq. 37); the core refuses
 sed '/^timestep/d' "$TMP/part2.in" > "$TMP/part2_nodt.in"

@@ -87,8 +87,9 @@ typedef struct sbc_driver_callbacks {
        whose step integrates after the driver, such as the embedded engines,
        moves x by u_i now; one that integrates x += dt v before its forces,
        such as LAMMPS, lets the velocity carry it); the host keeps what it
-       added per particle. sign -1, at the start of every step (M = I): the
-       velocity added, if any, is taken back exactly and forgotten */
+       added per particle. sign -1, at the start of every step but a
+       revisit (M = I): the velocity added, if any, is taken back exactly and
+       forgotten */
     void (*remap)(void *user_data, const double *M, const double *origin, int sign);
 } sbc_driver_callbacks;
 

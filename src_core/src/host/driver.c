@@ -130,7 +130,8 @@ sbc_event sbc_driver_step(sbc_driver *d, int again, sbc_error *err)
     sbc_snapshot snap;
     unsigned need;
     sbc_event ev;
-    stop_streaming(d);
+    if (!again) /* a revisit (the setup of a later run) precedes the step that carries the move */
+        stop_streaming(d);
     if (fire) {
         double sums[SBC_FIRE_SUMS] = {0.0, 0.0, 0.0, 0.0, 0.0};
         d->cb.fire_sums(d->cb.user_data, local);
