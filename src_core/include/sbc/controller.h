@@ -152,7 +152,7 @@ sbc_status sbc_controller_aim(sbc_controller *c, const double F[9], sbc_error *e
 /* Keyword remap x: 1 when the interior is to follow the frame's move on
  * the coming step, with M (3 x 3 slots, the dim x dim block set) and origin
  * [3] (m): every interior particle moves by u = (M - I)(x - origin)
- * (sbc_remap_displacement). While the frame travels to an increment's first
+ * (sbc_remap_displacement, tensor.h). While the frame travels to an increment's first
  * commands (motion.h) in s steps, the step from t = (j - 1)/s to j/s carries
  * M = F(j/s) F((j - 1)/s)^-1 with F(t) = F_prev + t (F_now - F_prev), the
  * affine part of the frame's move (Table 1, 1.1: x_q = F X_q about the
@@ -160,10 +160,6 @@ sbc_status sbc_controller_aim(sbc_controller *c, const double F[9], sbc_error *e
  * carry none. 0 otherwise (M, origin untouched). Valid until the next step
  * call, or after sbc_controller_aim before the first step. */
 int sbc_controller_remap(const sbc_controller *c, double M[9], double origin[3]);
-
-/* u [dim] = (M - I)(x - origin) over the first dim components (the
- * displacement of sbc_controller_remap's map), m. */
-void sbc_remap_displacement(int dim, const double M[9], const double origin[3], const double *x, double *u);
 
 /* Increment now being relaxed, 0 .. i_tot. */
 int sbc_controller_increment(const sbc_controller *c);

@@ -47,6 +47,11 @@ int sbc_tensor_inverse(int dim, const double T[9], double out[9]);
 /* out_i = sum_j T_ij v_j over i, j < dim (out's other slots 0) */
 void sbc_tensor_apply(int dim, const double T[9], const double v[3], double out[3]);
 
+/* u [dim] = (M - I)(x - origin) over the first dim components: the
+ * displacement of x under the map x -> origin + M (x - origin) (keyword remap
+ * x, sbc_controller_remap), m */
+void sbc_remap_displacement(int dim, const double M[9], const double origin[3], const double *x, double *u);
+
 /* Frobenius norm of the dim x dim block, and of T - I */
 double sbc_tensor_norm(int dim, const double T[9]);
 double sbc_tensor_norm_from_identity(int dim, const double T[9]);

@@ -113,3 +113,13 @@ const char *sbc_tensor_component_name(const char *symbol, int i, int j, char out
     out[n] = '\0';
     return out;
 }
+
+void sbc_remap_displacement(int dim, const double M[9], const double origin[3], const double *x, double *u)
+{
+    int i, j;
+    for (i = 0; i < dim; ++i) {
+        u[i] = 0.0;
+        for (j = 0; j < dim; ++j)
+            u[i] += (M[SBC_IJ(i, j)] - (i == j ? 1.0 : 0.0)) * (x[j] - origin[j]);
+    }
+}

@@ -333,16 +333,6 @@ int sbc_controller_remap(const sbc_controller *c, double M[9], double origin[3])
     return sbc_tensor_right_divide(dim, to, from, M);
 }
 
-void sbc_remap_displacement(int dim, const double M[9], const double origin[3], const double *x, double *u)
-{
-    int i, j;
-    for (i = 0; i < dim; ++i) {
-        u[i] = 0.0;
-        for (j = 0; j < dim; ++j)
-            u[i] += (M[SBC_IJ(i, j)] - (i == j ? 1.0 : 0.0)) * (x[j] - origin[j]);
-    }
-}
-
 void sbc_controller_progress_line(const sbc_controller *c, long step, double elapsed, char *out, size_t cap)
 {
     snprintf(out, cap, "increment %d: servo iteration %d, residuals force %.3e moment %.3e deformation %.3e, step %ld, "

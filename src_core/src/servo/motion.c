@@ -1,6 +1,6 @@
 /* The frame's travel to new commands at a bounded speed (motion.h). */
 #include "motion.h"
-#include "sbc/controller.h"
+#include "sbc/tensor.h"
 
 #include <math.h>
 #include <stdlib.h>
