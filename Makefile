@@ -260,6 +260,12 @@ bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangent
 	bash bench/cohesive_hosts.sh
 	$(B)/bench_points 16 10 2
 	$(B)/bench_tangents 5 10 20
+	bash bench/remap_scaling.sh $(B)/servo-bc
+	@$(MAKE) --no-print-directory lammps liggghts > $(B)/bench-hosts.log 2>&1 || \
+	  { echo "bench: LAMMPS or LIGGGHTS could not be built (see $(B)/bench-hosts.log)"; exit 0; }; \
+	  bash bench/lammps_overhead.sh $(B)/lmp_servo && \
+	  bash bench/liggghts_overhead.sh $(B)/liggghts_servo $(B)/servo-bc $(B)/lmp_servo $(B)/bench_engine && \
+	  bash bench/million.sh $(B)/lmp_servo $(B)/liggghts_servo $(B)/servo-bc
 
 clean:
 	rm -rf $(B) out

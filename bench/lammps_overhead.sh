@@ -2,7 +2,8 @@
 # Overhead of fix servo_bc per step against the same run with the frame atoms
 # merely held, 1e4 and 1e5 particles, 1 and 2 ranks (goal: <= 3 % at 1e5); 2d
 # square lattices, then 3d simple cubic ones (22^3 and 46^3 spheres).
-# Usage: bench/lammps_overhead.sh LMP_SERVO [STEPS]
+# Usage: bench/lammps_overhead.sh LMP_SERVO [STEPS]; SIDES (default "100 316") and SIDES3
+# (default "22 46") set the lattices, e.g. SIDES=1000 for 10^6 discs
 set -euo pipefail
 lmp=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 steps=${2:-2000}
@@ -14,7 +15,7 @@ loop() {  # np side servo [deck]
   awk '/^Loop time of/ {print $4}' "$tmp/out.txt"
 }
 printf '%-10s %5s %12s %12s %9s\n' particles ranks "held (s)" "servo_bc (s)" overhead
-for side in 100 316; do
+for side in ${SIDES:-100 316}; do
   for np in 1 2; do
     held=$(loop $np $side 0)
     servo=$(loop $np $side 1)
@@ -22,7 +23,7 @@ for side in 100 316; do
       "$(awk -v a="$held" -v b="$servo" 'BEGIN {printf "%.1f", 100 * (b - a) / a}')"
   done
 done
-for side in 22 46; do
+for side in ${SIDES3:-22 46}; do
   for np in 1 2; do
     held=$(loop $np $side 0 lammps_overhead_3d.in)
     servo=$(loop $np $side 1 lammps_overhead_3d.in)
@@ -31,4 +32,4 @@ for side in 22 46; do
   done
 done
 rm -rf "$tmp"
-echo "$steps steps; overhead = (servo_bc - held) / held; goal <= 3 % at 1e5 particles"
+echo "$steps steps; overhead = (servo_bc - held) / held; goal <= 3 % at 1e5 and 1e6 particles"

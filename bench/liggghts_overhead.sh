@@ -4,7 +4,8 @@
 # per particle-step of the held scene in LIGGGHTS beside LAMMPS (bench/
 # lammps_overhead.in, held) and the embedded engine (build/bench_engine), one
 # rank, measured in this run.
-# Usage: bench/liggghts_overhead.sh LIGGGHTS_SERVO SERVO_BC [LMP_SERVO BENCH_ENGINE] [STEPS]
+# Usage: bench/liggghts_overhead.sh LIGGGHTS_SERVO SERVO_BC [LMP_SERVO BENCH_ENGINE] [STEPS]; SIDES (default
+# "100 316") sets the lattices, e.g. SIDES=1000 for 10^6 discs
 set -euo pipefail
 abs() { echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; }
 lig=$(abs "${1:?usage: liggghts_overhead.sh LIGGGHTS_SERVO SERVO_BC [LMP_SERVO BENCH_ENGINE] [STEPS]}")
@@ -21,7 +22,7 @@ loop() {  # np servo -> loop time (s)
 ns() { awk -v t="$1" -v n="$2" -v s="$steps" 'BEGIN {printf "%.1f", t / s / n * 1e9}'; }
 declare -A held1
 printf '%-10s %5s %12s %12s %9s\n' particles ranks "held (s)" "servo_bc (s)" overhead
-for side in 100 316; do
+for side in ${SIDES:-100 316}; do
   printf 'dimension 2\nlattice square %d %d spacing 2e-3 radius 1.02e-3\ndensity 2e3\nwrite_packing liggghts %s\n' \
     $side $side "$tmp/lattice.data" > "$tmp/w.sbc"
   "$emb" "$tmp/w.sbc" > /dev/null
@@ -36,7 +37,7 @@ done
 echo "$steps steps; overhead = (servo_bc - held) / held"
 echo
 printf '%-10s %14s %14s %14s\n' particles "LIGGGHTS (ns)" "LAMMPS (ns)" "embedded (ns)"
-for side in 100 316; do
+for side in ${SIDES:-100 316}; do
   n=$((side * side)) l="-" e="-"
   if [ -n "$lmp" ]; then
     (cd "$tmp" && "$lmp" -in "$here/lammps_overhead.in" -var side $side -var steps "$steps" -var servo 0 -log none \
