@@ -99,6 +99,7 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B
 	bash tests/tables.sh $(B)
 	python3 tests/python_core.py $(B)/libservo_bc.so $(B)/servo-bc
 	python3 tests/tangent_irregular.py $(B)/libservo_bc.so $(B)/servo-bc
+	python3 tests/tangent_runner.py $(B)/servo-bc
 	bash tests/layers.sh $(B)
 	bash tests/restart_layout.sh $(B)
 	bash tests/path_error.sh

@@ -20,6 +20,7 @@
 #include "layer.h"
 #include "tests.h"
 
+#include "sbc/embedded/script.h"
 #include "sbc/material_point.h"
 
 #include <math.h>
@@ -253,8 +254,9 @@ static void refusals(void)
     static const struct {
         const char *words, *expect;
     } bad[] = {{"D F 0.99 0 0 1", "keyword 'F' is the FE code's"},
-               {"P increments 3", "mixed, stress, increments and file are the path's"},
+               {"P increments 3", "mixed, stress, increments, file and tangent are the path's"},
                {"mixed stress P22 -1 1", "the path's"},
+               {"D tangent condensed C.csv", "file and tangent are the path's"},
                {"Q", "Q"}};
     sbc_point_def d = lattice("D");
     sbc_error err;
@@ -405,8 +407,46 @@ static void batch(void)
             sbc_point_free(pts[t][k]);
 }
 
+/* The runner's keyword tangent perturbation (tests/tangent_runner.py has the
+ * rest; here for the sanitizers and valgrind): the 5 x 5 lattice under (D) at
+ * diag(0.999, 0.998) and the 4^3 sphere lattice, C1111 of the last row
+ * against the closed form to 1e-4. */
+static void runner_tangent(void)
+{
+    static const struct {
+        const char *packing, *F;
+        double c1111;
+    } cases[] = {{"dimension 2\nlattice square 5 5", "0.999 0 0 0.998", N * KN / (N - 1)},
+                 {"dimension 3\nlattice cubic 4 4 4", "0.999 0 0 0 0.998 0 0 0 0.997",
+                  16.0 * KN / (9.0 * D_SPACING)}};
+    size_t k;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        char script[1024], path[512], line[4096] = "";
+        sbc_error err;
+        double c1111 = 0.0;
+        int increment = -1;
+        FILE *fp;
+        snprintf(path, sizeof path, "%s/tangent_%d.csv", test_tmpdir, (int)k);
+        snprintf(script, sizeof script,
+                 "%s spacing %g radius %g\ncontact frictional kn %g ks 0 mu 0\ndensity 2e3\ntimestep 2e-6\n"
+                 "servo_bc D F %s accuracy tight tangent perturbation %s\nrun\n",
+                 cases[k].packing, D_SPACING, RADIUS, KN, cases[k].F, path);
+        CHECK(sbc_script_run_string(script, "tangent", NULL, &err) == SBC_OK);
+        if ((fp = fopen(path, "r"))) {
+            while (fgets(line, sizeof line, fp))
+                if (sscanf(line, "%d,%lf", &increment, &c1111) != 2)
+                    increment = -1;
+            fclose(fp);
+        }
+        CHECK(increment == 1 && fabs(c1111 - cases[k].c1111) <= 1e-4 * cases[k].c1111);
+        printf("  point: the runner's perturbation tangent, %dD lattice: C1111 %.8g (closed form %.8g)\n",
+               k ? 3 : 2, c1111, cases[k].c1111);
+    }
+}
+
 void test_point(void)
 {
+    runner_tangent();
     batch();
     spheres_3d();
     condensed_3d();

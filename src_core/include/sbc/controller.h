@@ -149,6 +149,14 @@ const sbc_frame *sbc_controller_frame(const sbc_controller *c);
  * <= 0. */
 sbc_status sbc_controller_aim(sbc_controller *c, const double F[9], sbc_error *err);
 
+/* A branch from an accepted increment (the event SBC_EVENT_INCREMENT or
+ * SBC_EVENT_FINISHED, before the host's next step): the increment that
+ * starts there aims at F instead of the path's next F, as sbc_controller_aim
+ * does after the path's end; for a perturbation tangent on a copy of the
+ * controller (sbc_controller_save, sbc_controller_load). Fails, changing
+ * nothing, for mixed, when det F <= 0 or once the increment has taken a step. */
+sbc_status sbc_controller_branch(sbc_controller *c, const double F[9], sbc_error *err);
+
 /* Keyword remap x: 1 when the interior is to follow the frame's move on
  * the coming step, with M (3 x 3 slots, the dim x dim block set) and origin
  * [3] (m): every interior particle moves by u = (M - I)(x - origin)

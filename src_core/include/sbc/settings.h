@@ -37,6 +37,18 @@ typedef enum sbc_damping { SBC_DAMPING_NONE = 0, SBC_DAMPING_LOCAL, SBC_DAMPING_
 
 typedef enum sbc_mode { SBC_MODE_D = 0, SBC_MODE_P, SBC_MODE_T } sbc_mode;
 
+/* The tangent C = dP/dF the runner writes per converged increment (keyword
+ * tangent; material_point.h gives the three). */
+typedef enum sbc_tangent {
+    SBC_TANGENT_NONE = 0,
+    SBC_TANGENT_AFFINE,
+    SBC_TANGENT_CONDENSED,
+    SBC_TANGENT_PERTURBATION
+} sbc_tangent;
+
+/* "affine", "condensed", "perturbation" ("none" for SBC_TANGENT_NONE) */
+const char *sbc_tangent_name(sbc_tangent t);
+
 /* The faces of the frame's box, indexed 2 axis + (1 on the high side), the
  * bit index of SBC_FACE_* (frame.h): xlo xhi ylo yhi zlo zhi. The 2D
  * edges are faces: left xlo, right xhi, bottom ylo, top yhi. */
@@ -92,6 +104,8 @@ typedef struct sbc_settings {
     int stress_increments;         /* i_vs: increments of the stress stage (all stress keywords alike) */
     char frame_group[SBC_NAME_LEN]; /* host group of frame particles; "" = detect */
     char file[SBC_NAME_LEN];        /* CSV path; "" = none */
+    sbc_tangent tangent;            /* keyword tangent: the runner's; none */
+    char tangent_file[SBC_NAME_LEN]; /* its CSV path */
     char ignored[192];              /* the servo's keywords given to (D), which has no servo (hosts warn);
                                        "" = none */
 } sbc_settings;

@@ -831,6 +831,7 @@ sbc_status sbc_engine_load(sbc_engine *e, const double *in, size_t count, sbc_er
     sbc_saved_int(&s, "particle count", e->n, e->n);
     sbc_saved_int(&s, "history flag", e->pairs.fs != NULL, e->pairs.fs != NULL);
     sbc_saved_int(&s, "bond flag", e->pairs.bond != NULL, e->pairs.bond != NULL);
+    e->streaming = 0; /* the saved velocities are the velocities (remap, driver.h) */
     e->step = sbc_saved_int(&s, "step", 0, 1L << 52);
     e->stale = (int)sbc_saved_int(&s, "stale flag", 0, 1);
     e->bond_count = (int)sbc_saved_int(&s, "intact bonds", 0, e->bonds_initial);

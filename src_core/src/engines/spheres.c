@@ -655,6 +655,7 @@ sbc_status sbc_spheres_load(sbc_spheres *e, const double *in, size_t count, sbc_
     sbc_saved_int(&s, "sphere count", e->n, e->n);
     e->stale = (int)sbc_saved_int(&s, "stale flag", 0, 1);
     e->builds = sbc_saved_int(&s, "pair list builds", 0, 1L << 52);
+    e->streaming = 0; /* the saved velocities are the velocities (remap, driver.h) */
     e->step = sbc_saved_int(&s, "step", 0, 1L << 52);
     e->ep = sbc_saved_real(&s, "potential energy");
     e->overlap_sum = sbc_saved_real(&s, "overlap sum");

@@ -150,6 +150,8 @@ typedef struct run_state {
     struct timespec start, reported; /* the run's start, the last progress line */
     sbc_driver *driver; /* the per-step protocol (driver.h) over the engine */
     const script *s;
+    sbc_aggregate aggregate;    /* the engine as the tangents see it (keyword tangent) */
+    sbc_script_tangent tangent; /* ... and its file */
 } run_state;
 
 static double seconds_between(const struct timespec *a, const struct timespec *b)
@@ -184,6 +186,7 @@ static void run_free(run_state *r)
     free(r->mass);
     free(r->rows);
     sbc_csv_close(&r->csv);
+    sbc_script_tangent_close(&r->tangent);
 }
 
 static sbc_status keep_row(run_state *r, const sbc_result *row, sbc_error *err)
@@ -277,6 +280,11 @@ static int engine_row(void *user_data, const sbc_result *row, const char *line, 
             fprintf(s->log, "  bonds intact %d\n", sbc_engine_get_view(r->engine).bond_count);
         fflush(s->log);
     }
+    if (sbc_script_tangent_row(s, &r->tangent, &r->aggregate, r->ctl, sbc_driver_fire(r->driver), row, &err) !=
+        SBC_OK) {
+        snprintf(message, cap, "%s", err.message);
+        return err.status;
+    }
     timespec_get(&r->reported, TIME_UTC);
     return SBC_OK;
 }
@@ -357,6 +365,19 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         return st;
     }
     sbc_script_files_note(s, s->settings.file, "results file");
+    if ((st = sbc_script_tangent_open(s, 2, &r.tangent, err)) != SBC_OK) {
+        run_free(&r);
+        return st;
+    }
+    sbc_script_files_note(s, s->settings.tangent_file, "tangent file");
+    r.aggregate.ops = &sbc_engine_ops_discs;
+    r.aggregate.engine = r.engine;
+    r.aggregate.n = s->packing.n;
+    r.aggregate.frame = &r.frame;
+    r.aggregate.settings = &s->settings;
+    r.aggregate.mass = r.mass;
+    r.aggregate.dt = s->dt;
+    r.aggregate.law = s->law;
     if (s->check) {
         if (s->log)
             fprintf(s->log, "check: run of line %d: servo_bc %s, %d particles, frame of %d, %d increments, dt = %g s "
@@ -460,6 +481,10 @@ static sbc_status keep_servo_words(script *s, int nw, char **w, sbc_error *err)
     for (k = 1; k < nw; ++k) {
         if (strcmp(w[k], "file") == 0 && k + 1 < nw) {
             ++k;
+            continue;
+        }
+        if (strcmp(w[k], "tangent") == 0 && k + 2 < nw) { /* the runner's (hosts refuse it) */
+            k += 2;
             continue;
         }
         used += (size_t)snprintf(s->servo_words + used, used < sizeof s->servo_words ? sizeof s->servo_words - used : 0,

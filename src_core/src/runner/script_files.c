@@ -122,13 +122,18 @@ static void first_file(const output *o, char *out, size_t size)
 
 sbc_status sbc_script_outputs_check(script *s, sbc_error *err)
 {
-    output out[4];
+    output out[5];
     int n = 0, a, b, k;
     char file[PATH_MAX], other[PATH_MAX];
     sbc_status st;
     memset(out, 0, sizeof out);
     if (s->settings.file[0]) {
         out[n].what = "servo_bc keyword 'file'", out[n].shown = s->settings.file, out[n].kind = SBC_OUTPUT_RESULTS;
+        ++n;
+    }
+    if (s->settings.tangent) {
+        out[n].what = "servo_bc keyword 'tangent'", out[n].shown = s->settings.tangent_file;
+        out[n].kind = SBC_OUTPUT_RESULTS;
         ++n;
     }
     if (s->plot[0]) {

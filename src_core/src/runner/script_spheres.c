@@ -140,6 +140,10 @@ typedef struct sphere_run {
     sbc_csv csv;
     int nrows;
     struct timespec start, reported;
+    const sbc_controller *ctl;  /* for keyword tangent: the controller, */
+    sbc_driver *driver;         /* the driver (its FIRE), */
+    sbc_aggregate aggregate;    /* the engine as the tangents see it */
+    sbc_script_tangent tangent; /* and the file */
 } sphere_run;
 
 /* a converged increment: its row in the results file and the log line */
@@ -163,6 +167,11 @@ static int sphere_row(void *user_data, const sbc_result *row, const char *line, 
     if (r->s->log) {
         fprintf(r->s->log, "%s\n", line);
         fflush(r->s->log);
+    }
+    if (sbc_script_tangent_row(r->s, &r->tangent, &r->aggregate, r->ctl, sbc_driver_fire(r->driver), row, &e) !=
+        SBC_OK) {
+        snprintf(message, cap, "%s", e.message);
+        return e.status;
     }
     timespec_get(&r->reported, TIME_UTC);
     return SBC_OK;
@@ -190,6 +199,7 @@ static void parts_free(sphere_parts *p, sphere_run *r)
     sbc_frame_free(&p->frame);
     free(p->mass);
     sbc_csv_close(&r->csv);
+    sbc_script_tangent_close(&r->tangent);
 }
 
 sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
@@ -264,6 +274,19 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
         return st;
     }
     sbc_script_files_note(s, s->settings.file, "results file");
+    if ((st = sbc_script_tangent_open(s, 3, &r.tangent, err)) != SBC_OK) {
+        parts_free(&p, &r);
+        return st;
+    }
+    sbc_script_files_note(s, s->settings.tangent_file, "tangent file");
+    r.aggregate.ops = &sbc_engine_ops_spheres;
+    r.aggregate.engine = p.engine;
+    r.aggregate.n = s->n3;
+    r.aggregate.frame = &p.frame;
+    r.aggregate.settings = &s->settings;
+    r.aggregate.mass = p.mass;
+    r.aggregate.dt = dt;
+    r.aggregate.law = s->law;
     if (s->check) {
         if (s->log)
             fprintf(s->log, "check: run of line %d: servo_bc %s, %d spheres, frame of %d, %d increments, dt = %g s "
@@ -285,6 +308,8 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
         parts_free(&p, &r);
         return err->status;
     }
+    r.ctl = p.ctl;
+    r.driver = p.driver;
     timespec_get(&r.start, TIME_UTC);
     r.reported = r.start;
     for (;;) {

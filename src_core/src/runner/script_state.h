@@ -10,6 +10,8 @@
 
 #include <stdio.h>
 
+#include "../host/aggregate.h"
+
 #define MAX_WORDS 64
 
 /* a file the script read or wrote (script_files.c) */
@@ -39,7 +41,7 @@ typedef struct sbc_script_case {
     int network_every;
     char network_prefix[SBC_NAME_LEN];
     char plot[SBC_NAME_LEN];
-    char servo_words[2048]; /* the servo_bc words without 'file NAME' */
+    char servo_words[2048]; /* the servo_bc words without 'file NAME', 'tangent KIND NAME' */
     const char *decks_dir;  /* --decks: 'run' writes the hosts' inputs here instead */
     sbc_script_decks_fn write_decks; /* ... with this writer (script.h) */
     int decks_line;         /* the line of the run whose decks were written (one run per --decks) */
@@ -66,6 +68,20 @@ sbc_status sbc_script_files_check(script *s, const char *path, const char *what,
  * snapshots) name neither the script, nor a file read or written before,
  * nor one another; with --check, each is probed (output_file.h). */
 sbc_status sbc_script_outputs_check(script *s, sbc_error *err);
+
+/* Keyword tangent (script_tangent.c): its file, opened by a run of
+ * dimension dim after the refusals (mixed, cohesive contacts); a row per
+ * converged increment from the driver's row callback, where `ctl` has just
+ * accepted `row` and *fire is the driver's FIRE; closed with the run. */
+typedef struct sbc_script_tangent {
+    FILE *fp; /* NULL: no tangent */
+    int dim;
+} sbc_script_tangent;
+sbc_status sbc_script_tangent_open(const script *s, int dim, sbc_script_tangent *t, sbc_error *err);
+sbc_status sbc_script_tangent_row(const script *s, sbc_script_tangent *t, const sbc_aggregate *a,
+                                  const sbc_controller *ctl, const sbc_fire_state *fire, const sbc_result *row,
+                                  sbc_error *err);
+void sbc_script_tangent_close(sbc_script_tangent *t);
 
 /* The checks of a command's words (script_words.c).
  * "cmd: missing values / unexpected extra value" unless nw == want. */

@@ -290,23 +290,50 @@ void sbc_controller_progress(const sbc_controller *c, int *iteration, double *r_
     *r_deformation = c->norms.r_deformation;
 }
 
-sbc_status sbc_controller_aim(sbc_controller *c, const double F[9], sbc_error *err)
+/* F's dim x dim block into G, checked: (D), (P) or (T), det F > 0 */
+static sbc_status aim_check(const sbc_controller *c, const double F[9], double G[9], sbc_error *err)
 {
     const int dim = c->frame->dim;
-    double G[9] = {0};
     int i, j;
+    memset(G, 0, sizeof(double) * 9);
     if (c->s.bc == SBC_BC_MIXED)
         return sbc_fail(err, SBC_ERR_INPUT, "servo_bc mixed: a material point takes (D), (P) or (T) in this version");
-    if (c->increment <= c->total)
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: increment %d of %d is under way; a new F is aimed at between "
-                        "increments", sbc_bc_name(c->s.bc), c->increment, c->total);
     for (i = 0; i < dim; ++i)
         for (j = 0; j < dim; ++j)
             G[SBC_IJ(i, j)] = F[SBC_IJ(i, j)];
     if (!(sbc_tensor_det(dim, G) > 0.0) || !isfinite(sbc_tensor_norm(dim, G)))
         return sbc_fail(err, SBC_ERR_GEOMETRY, "servo_bc %s: det F = %g is not positive and finite",
                         sbc_bc_name(c->s.bc), sbc_tensor_det(dim, G));
+    return SBC_OK;
+}
+
+sbc_status sbc_controller_aim(sbc_controller *c, const double F[9], sbc_error *err)
+{
+    double G[9];
+    if (c->increment <= c->total)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: increment %d of %d is under way; a new F is aimed at between "
+                        "increments", sbc_bc_name(c->s.bc), c->increment, c->total);
+    if (aim_check(c, F, G, err) != SBC_OK)
+        return err->status;
     c->increment = c->total;
+    memcpy(c->F_now, G, sizeof c->F_now);
+    start_increment(c);
+    return SBC_OK;
+}
+
+sbc_status sbc_controller_branch(sbc_controller *c, const double F[9], sbc_error *err)
+{
+    double G[9];
+    if (c->increment > c->total)
+        return sbc_controller_aim(c, F, err);
+    if (c->steps > 0 || c->motion.done > 1 || c->iteration > 0) /* begin_move placed the first step (motion.c) */
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: increment %d has taken %ld steps; a branch starts where an "
+                        "increment was accepted", sbc_bc_name(c->s.bc), c->increment, c->steps);
+    if (aim_check(c, F, G, err) != SBC_OK)
+        return err->status;
+    /* the accepted commands, which start_increment saved, are the commands again */
+    memcpy(c->x_cmd, c->motion.x_from, sizeof(double) * 3 * (size_t)c->frame->n);
+    memcpy(c->theta_cmd, c->motion.th_from, sizeof(double) * (size_t)(c->rot * c->frame->n));
     memcpy(c->F_now, G, sizeof c->F_now);
     start_increment(c);
     return SBC_OK;

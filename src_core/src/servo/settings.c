@@ -211,6 +211,12 @@ static sbc_status read_name(cursor *c, const char *what, char *dst)
     return SBC_OK;
 }
 
+const char *sbc_tangent_name(sbc_tangent t)
+{
+    static const char *const names[] = {"none", "affine", "condensed", "perturbation"};
+    return t >= SBC_TANGENT_NONE && t <= SBC_TANGENT_PERTURBATION ? names[t] : "unknown";
+}
+
 static const char *const gain_keys[] = {"gain_force", "gain_moment", "gain_deformation"};
 static const char *const tol_keys[] = {"tol_force", "tol_moment", "tol_deformation"};
 
@@ -360,6 +366,19 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             st = read_name(&c, "group-ID", s->frame_group);
         } else if (strcmp(key, "file") == 0) {
             st = read_name(&c, "path", s->file);
+        } else if (strcmp(key, "tangent") == 0) {
+            const char *w = next_word(&c, "affine|condensed|perturbation", &st);
+            int t;
+            for (t = SBC_TANGENT_AFFINE; w && t <= SBC_TANGENT_PERTURBATION; ++t)
+                if (strcmp(w, sbc_tangent_name((sbc_tangent)t)) == 0)
+                    break;
+            if (w && t > SBC_TANGENT_PERTURBATION)
+                st = sbc_fail(err, SBC_ERR_INPUT,
+                              "keyword 'tangent': kind '%s' is not valid (expected affine, condensed or perturbation)", w);
+            else if (w) {
+                s->tangent = (sbc_tangent)t;
+                st = read_name(&c, "path", s->tangent_file);
+            }
         } else if (strcmp(key, "stress") == 0 || sbc_mixed_face_index(key) >= 0) {
             k = 0;
             if (s->bc != SBC_BC_MIXED)

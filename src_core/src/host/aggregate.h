@@ -1,0 +1,77 @@
+/* Private: an aggregate on an embedded engine, the 2D disc engine or the 3D
+ * sphere engine through the same operations (as GSL's step types), for the
+ * material point (material_point.c) and the runner's tangents
+ * (runner/script_tangent.c): its increments and its tangents
+ * C_ijkl = dP_ij / dF_kl (C[9 (3i + j) + 3k + l], docs/fe2.md). */
+#ifndef SBC_AGGREGATE_H
+#define SBC_AGGREGATE_H
+
+#include <stddef.h>
+
+#include "sbc/contact.h"
+#include "sbc/controller.h"
+#include "sbc/driver.h"
+#include "sbc/fire_damping.h"
+#include "sbc/frame.h"
+#include "sbc/material_point.h"
+#include "sbc/settings.h"
+#include "sbc/status.h"
+
+typedef struct sbc_engine_ops {
+    int dim;
+    void *(*create)(const sbc_point_def *d, const sbc_settings *s, sbc_error *err);
+    void (*free)(void *e);
+    void (*set_frame)(void *e, const sbc_frame *f);
+    sbc_driver_callbacks (*callbacks)(void *e);
+    sbc_status (*forces)(void *e, sbc_error *err);
+    void (*move_frame)(void *e, const sbc_commands *cmd);
+    void (*frame_masses)(const void *e, double *mass);
+    double (*critical_dt)(const void *e);
+    size_t (*state_size)(const void *e);
+    void (*save)(const void *e, double *out);
+    sbc_status (*load)(void *e, const double *in, size_t n, sbc_error *err);
+    /* the engine's pairs: their count, pair k's particles and the tangential spring's force on ij[0] (N), the
+       centres [dim n] and radii */
+    int (*pair_count)(const void *e);
+    void (*pair)(const void *e, int k, int ij[2], double fs[3]);
+    const double *(*centres)(const void *e);
+    const double *(*radii)(const void *e);
+} sbc_engine_ops;
+
+extern const sbc_engine_ops sbc_engine_ops_discs;   /* sbc_engine (embedded/engine.h) */
+extern const sbc_engine_ops sbc_engine_ops_spheres; /* sbc_spheres (embedded/spheres.h) */
+
+typedef struct sbc_aggregate {
+    const sbc_engine_ops *ops;
+    void *engine;
+    int n;                        /* particles */
+    const sbc_frame *frame;       /* the frame the controller was created with */
+    const sbc_settings *settings; /* D, P or T and their keywords */
+    const double *mass;           /* [frame n] the frame particles' masses, kg */
+    double dt;                    /* s */
+    sbc_frictional law;           /* eq. 6 */
+} sbc_aggregate;
+
+/* Host steps (move the frame, forces, sbc_driver_step) until ctl accepts an
+ * increment (SBC_EVENT_INCREMENT or SBC_EVENT_FINISHED) or fails; first: the
+ * forces of the first step are taken already. */
+sbc_event sbc_aggregate_run_increment(const sbc_aggregate *a, sbc_controller *ctl, sbc_driver *driver, int first,
+                                      sbc_error *err);
+
+/* The affine tangent at F (material_point.h, sbc_point_tangent_affine). */
+sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], double C[81], sbc_error *err);
+
+/* The condensed tangent (material_point.h, sbc_point_tangent_condensed). */
+sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, double C[81], int *mechanisms, sbc_error *err);
+
+/* The perturbation tangent at an increment that `accepted` has just accepted
+ * (before the host's next step: in the driver's row callback), at its F:
+ * from that state, one increment to F + h e_kl and one to F - h e_kl for
+ * each k, l (2 dim^2 increments, each on a copy of the controller and a
+ * driver of its own whose FIRE starts from *fire); central differences of
+ * eq. 23's P. The engine is back in its state afterwards, bit for bit; the
+ * controller and *fire are not touched. */
+sbc_status sbc_aggregate_perturbation(const sbc_aggregate *a, const sbc_controller *accepted,
+                                      const sbc_fire_state *fire, double h, double C[81], sbc_error *err);
+
+#endif

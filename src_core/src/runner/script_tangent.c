@@ -1,0 +1,96 @@
+/* The runner's keyword tangent (docs/fe2.md, "The runner's tangent file"):
+ * the tangent C = dP/dF of the aggregate at every converged increment, as
+ * the material point computes it, into a CSV of dim^4 columns. */
+#include "script_state.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "sbc/embedded/output_file.h"
+#include "sbc/tensor.h"
+
+/* central differences of this step on each F_kl (docs/fe2.md) */
+#define PERTURBATION_STEP 1e-6
+
+sbc_status sbc_script_tangent_open(const script *s, int dim, sbc_script_tangent *t, sbc_error *err)
+{
+    int i, j, k, l;
+    memset(t, 0, sizeof *t);
+    t->dim = dim;
+    if (s->settings.tangent == SBC_TANGENT_NONE)
+        return SBC_OK;
+    if (s->settings.bc == SBC_BC_MIXED || s->cohesive)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'tangent': %s; the tangents are those of "
+                        "(D), (P) and (T) on a frictional packing in this version",
+                        s->servo_line, s->cohesive ? "the contacts are cohesive" : "the condition is mixed");
+    if (s->check) /* probed with the other outputs */
+        return SBC_OK;
+    if (!(t->fp = sbc_output_open(s->settings.tangent_file, SBC_OUTPUT_RESULTS, "servo_bc keyword 'tangent'", err)))
+        return err->status;
+    fputs("increment", t->fp);
+    for (i = 0; i < dim; ++i)
+        for (j = 0; j < dim; ++j)
+            for (k = 0; k < dim; ++k)
+                for (l = 0; l < dim; ++l)
+                    fprintf(t->fp, ",C%d%d%d%d", i + 1, j + 1, k + 1, l + 1);
+    fputc('\n', t->fp);
+    fflush(t->fp);
+    return SBC_OK;
+}
+
+sbc_status sbc_script_tangent_row(const script *s, sbc_script_tangent *t, const sbc_aggregate *a,
+                                  const sbc_controller *ctl, const sbc_fire_state *fire, const sbc_result *row,
+                                  sbc_error *err)
+{
+    const int dim = t->dim;
+    double C[81], norm = 0.0;
+    int mechanisms = 0, i, j, k, l;
+    sbc_status st;
+    if (!t->fp)
+        return SBC_OK;
+    switch (s->settings.tangent) {
+    case SBC_TANGENT_AFFINE:
+        st = sbc_aggregate_affine(a, row->F, C, err);
+        break;
+    case SBC_TANGENT_CONDENSED:
+        st = sbc_aggregate_condensed(a, C, &mechanisms, err);
+        break;
+    default:
+        st = sbc_aggregate_perturbation(a, ctl, fire, PERTURBATION_STEP, C, err);
+        break;
+    }
+    if (st != SBC_OK) {
+        char message[SBC_ERROR_LEN];
+        snprintf(message, sizeof message, "%s", err->message);
+        return sbc_fail(err, st, "servo_bc keyword 'tangent' (%s), increment %d: %s",
+                        sbc_tangent_name(s->settings.tangent), row->increment, message);
+    }
+    fprintf(t->fp, "%d", row->increment);
+    for (i = 0; i < dim; ++i)
+        for (j = 0; j < dim; ++j)
+            for (k = 0; k < dim; ++k)
+                for (l = 0; l < dim; ++l) {
+                    const double c = C[9 * SBC_IJ(i, j) + SBC_IJ(k, l)];
+                    fprintf(t->fp, ",%.17g", c);
+                    norm += c * c;
+                }
+    fputc('\n', t->fp);
+    if (fflush(t->fp) != 0)
+        return sbc_fail(err, SBC_ERR_IO, "servo_bc keyword 'tangent': cannot write '%s'",
+                        s->settings.tangent_file);
+    if (s->log) {
+        fprintf(s->log, "  tangent %s: C1111 %.6g, |C| %.6g", sbc_tangent_name(s->settings.tangent), C[0],
+                sqrt(norm));
+        if (s->settings.tangent == SBC_TANGENT_CONDENSED)
+            fprintf(s->log, ", %d mechanisms", mechanisms);
+        fputc('\n', s->log);
+    }
+    return SBC_OK;
+}
+
+void sbc_script_tangent_close(sbc_script_tangent *t)
+{
+    if (t->fp)
+        fclose(t->fp);
+    t->fp = NULL;
+}
