@@ -18,6 +18,15 @@ OPT     ?= -O2 -g
 CFLAGS  += $(CSTD) $(OPT) -fPIC -Isrc_core/include -Isrc_core/src
 LDLIBS   = -lm
 B        = build
+# the condensed tangent's sparse direct solver, UMFPACK (Debian libsuitesparse-dev), when its header is
+# installed (scripts/install-deps.sh core installs it); without it the core builds and solves densely
+# (docs/fe2.md). SPARSE=no builds without it anyway.
+SPARSE  ?= $(if $(wildcard /usr/include/suitesparse/umfpack.h),yes,no)
+ifeq ($(SPARSE),yes)
+SPARSE_FLAGS = -DSBC_HAVE_UMFPACK -I/usr/include/suitesparse
+LDLIBS      += -lumfpack
+endif
+CFLAGS  += $(SPARSE_FLAGS)
 
 # the core by layer: servo (controller, frame, homogenization, grammar, host
 # handle), engines (the embedded 2D and 3D engines, packings), io (results,
@@ -44,9 +53,13 @@ FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_c
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
-$(B)/core/%.o: src_core/src/%.c $(CORE_HDR)
+$(B)/core/%.o: src_core/src/%.c $(CORE_HDR) $(B)/sparse-$(SPARSE)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -c $< -o $@
+
+# the objects are built again when SPARSE changes (the solver was installed or left out)
+$(B)/sparse-$(SPARSE):
+	@mkdir -p $(B) && rm -f $(B)/sparse-* && touch $@
 
 figures: all
 	bash scripts/figures.sh
@@ -69,7 +82,7 @@ $(B)/run_tests: $(TEST_SRC) $(TEST_HDR) $(RUNNER_SRC) $(B)/libservo_bc.a
 # The same tests, core compiled in, under AddressSanitizer + UBSan.
 $(B)/run_tests_san: $(TEST_SRC) $(TEST_HDR) $(RUNNER_SRC) $(CORE_SRC) $(CORE_HDR)
 	@mkdir -p $(B)
-	$(CC) $(CSTD) -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
+	$(CC) $(CSTD) $(SPARSE_FLAGS) -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer \
 	  -Isrc_core/include -Isrc_core/src -Isrc_core/runner -Itests -o $@ $(TEST_SRC) $(RUNNER_SRC) $(CORE_SRC) $(LDLIBS)
 
 demo: all
@@ -85,7 +98,7 @@ deps:
 
 # every public header in one C++ translation unit, linked without a wrapper
 $(B)/cxx_headers: tests/cxx_headers.cpp $(B)/libservo_bc.a $(wildcard src_core/include/sbc/*.h src_core/include/sbc/embedded/*.h)
-	c++ -std=c++11 -Wall -Wextra -pedantic -Werror -Isrc_core/include -o $@ tests/cxx_headers.cpp $(B)/libservo_bc.a -lm
+	c++ -std=c++11 -Wall -Wextra -pedantic -Werror -Isrc_core/include -o $@ tests/cxx_headers.cpp $(B)/libservo_bc.a $(LDLIBS)
 
 $(B)/fe2_example: inputs/fe2/material_point.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
@@ -100,6 +113,10 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B
 	python3 tests/python_core.py $(B)/libservo_bc.so $(B)/servo-bc
 	python3 tests/tangent_irregular.py $(B)/libservo_bc.so $(B)/servo-bc
 	python3 tests/tangent_runner.py $(B)/servo-bc
+	@echo "the core without the sparse solver (SPARSE=no): built, and the condensed tangent's tests"
+	@$(MAKE) --no-print-directory -s B=$(B)/without-sparse SPARSE=no $(B)/without-sparse/run_tests
+	@mkdir -p $(B)/without-sparse/tmp
+	SBC_TEST_SUITE=condensed,point $(B)/without-sparse/run_tests $(B)/servo-bc $(B)/without-sparse/tmp
 	bash tests/layers.sh $(B)
 	bash tests/restart_layout.sh $(B)
 	bash tests/path_error.sh
@@ -169,13 +186,13 @@ $(LMP_DEV):
 $(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_bonds.cpp \
-	  $(B)/libservo_bc.a -llammps -lm
+	  $(B)/libservo_bc.a -llammps $(LDLIBS)
 
 # the plugin: for `plugin load` in LAMMPS builds with the PLUGIN package
 $(B)/servo_bc_plugin.so: $(LMP_SRC) lammps_fix/plugin.cpp $(B)/libservo_bc.a $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -fPIC -shared -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
 	  -Isrc_core/include -o $@ lammps_fix/plugin.cpp lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_bonds.cpp \
-	  $(B)/libservo_bc.a -lm
+	  $(B)/libservo_bc.a $(LDLIBS)
 
 $(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
@@ -201,7 +218,7 @@ liggghts: $(B)/liggghts_servo
 $(B)/liggghts_servo: $(LIG_SRC) $(B)/libservo_bc.a /usr/include/liggghts/pair_gran.h
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -DSERVO_BC_LIGGGHTS -Wall -Wextra -isystem /usr/include/liggghts \
 	  -Iliggghts_fix -Ilammps_fix -Isrc_core/include -o $@ liggghts_fix/liggghts_servo.cpp lammps_fix/fix_servo_bc.cpp \
-	  lammps_fix/fix_servo_bc_bonds.cpp $(B)/libservo_bc.a -lliggghts -lm
+	  lammps_fix/fix_servo_bc_bonds.cpp $(B)/libservo_bc.a -lliggghts $(LDLIBS)
 
 check-liggghts: $(B)/liggghts_servo $(B)/servo-bc
 	bash tests/liggghts/closed_form.sh $(B)/liggghts_servo $(B)/servo-bc
@@ -250,10 +267,13 @@ $(B)/bench_spheres: bench/spheres_throughput.c $(B)/libservo_bc.a
 $(B)/bench_points: bench/point_batch.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
 
+$(B)/bench_condensed: bench/condensed_solvers.c $(B)/libservo_bc.a
+	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
+
 $(B)/bench_tangents: bench/tangent_cost.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
 
-bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangents
+bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangents $(B)/bench_condensed
 	@bash scripts/install-deps.sh lammps || echo "bench: LAMMPS not available; measuring the embedded engine only"
 	bash bench/engine_vs_lammps.sh $(B)/bench_engine
 	bash bench/engine_vs_lammps.sh $(B)/bench_spheres 500 3
@@ -262,6 +282,7 @@ bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangent
 	bash bench/cohesive_hosts.sh
 	$(B)/bench_points 16 10 2
 	$(B)/bench_tangents 5 10 20
+	$(B)/bench_condensed
 	bash bench/remap_scaling.sh $(B)/servo-bc
 	@$(MAKE) --no-print-directory lammps liggghts > $(B)/bench-hosts.log 2>&1 || \
 	  { echo "bench: LAMMPS or LIGGGHTS could not be built (see $(B)/bench-hosts.log)"; exit 0; }; \

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what the project's targets need on a Debian machine, as root.
-#   scripts/install-deps.sh core     compiler, make, valgrind (make check)
+#   scripts/install-deps.sh core     compiler, make, valgrind, UMFPACK (make check)
 #   scripts/install-deps.sh lammps   the Debian LAMMPS package (bench/, LAMMPS side)
 #   scripts/install-deps.sh lammps-dev   LAMMPS, its headers and an MPI C++ compiler (make lammps)
 #   scripts/install-deps.sh liggghts-dev   LIGGGHTS, its headers and an MPI C++ compiler (make liggghts)
@@ -18,6 +18,7 @@ for what in "$@"; do
       command -v make >/dev/null || need+=(make)
       command -v valgrind >/dev/null || need+=(valgrind)
       command -v python3 >/dev/null || need+=(python3)   # tests/reliability.sh holds a file lock with it
+      [ -f /usr/include/suitesparse/umfpack.h ] || need+=(libsuitesparse-dev)   # the condensed tangent's sparse solver
       ;;
     lammps)
       command -v lmp >/dev/null || need+=(lammps)

@@ -127,11 +127,15 @@ sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err);
  * contacts) with the interior condensed out and the frame's kinematics of
  * the point's condition applied: (D) the frame follows F, (P) its periodic
  * pairs share a fluctuation and a rotation and their forces balance, (T)
- * its forces are P A_q under eq. 15 (docs/fe2.md). 2D and 3D. Solved
- * densely: memory grows as the square of the degrees of freedom (3 per
- * disc, 6 per sphere), a few thousand discs or a thousand spheres at most. *mechanisms (may be NULL): the degrees of
- * freedom that carry no stiffness (rattlers, rotations of discs whose
- * contacts all slide), set to zero. Same layout as the others. */
+ * its forces are P A_q under eq. 15 (docs/fe2.md). 2D and 3D. Solved by
+ * a sparse direct solver (UMFPACK) where the core is built with it (memory
+ * about linear in the particles: 10^5 discs in 6 s and 1.5 GB), densely
+ * otherwise (memory as the square of the degrees of freedom, 3 per disc and
+ * 6 per sphere: a few thousand discs at most). *mechanisms (may be NULL):
+ * the degrees of freedom that carry no stiffness (rattlers, rotations of
+ * discs whose contacts all slide), set to zero; the dense solve also counts
+ * the pivots it cannot take (the gear mode of a square lattice's free
+ * rotations under (T)). Same layout as the others. */
 sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanisms, sbc_error *err);
 
 #ifdef __cplusplus

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "../base/dense.h"
+#include "../base/sparse.h"
 #include "sbc/homogenize.h"
 #include "sbc/tensor.h"
 
@@ -275,14 +276,175 @@ static int number_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc
     return count;
 }
 
+/* Compressed columns of the nt triplets (ti, tj, tv) of an n x n matrix,
+ * duplicates summed in the order given (a stable sort by row within each
+ * column): colptr [n + 1], rows and vals [nt] are filled; their used length
+ * is colptr[n]. */
+static void compress_columns(int n, long nt, const int *ti, const int *tj, const double *tv, int *colptr, int *rows,
+                             double *vals, int *next)
+{
+    long t;
+    int c, at;
+    memset(colptr, 0, sizeof(int) * (size_t)(n + 1));
+    for (t = 0; t < nt; ++t)
+        colptr[tj[t] + 1]++;
+    for (c = 0; c < n; ++c)
+        colptr[c + 1] += colptr[c];
+    memcpy(next, colptr, sizeof(int) * (size_t)n);
+    for (t = 0; t < nt; ++t) {
+        const int to = next[tj[t]]++;
+        rows[to] = ti[t];
+        vals[to] = tv[t];
+    }
+    for (c = at = 0; c < n; ++c) { /* insertion sort of the column by row, then its duplicates summed */
+        const int begin = colptr[c], end = colptr[c + 1];
+        int k, m;
+        for (k = begin + 1; k < end; ++k) {
+            const int r = rows[k];
+            const double v = vals[k];
+            for (m = k; m > begin && rows[m - 1] > r; --m) {
+                rows[m] = rows[m - 1];
+                vals[m] = vals[m - 1];
+            }
+            rows[m] = r;
+            vals[m] = v;
+        }
+        colptr[c] = at;
+        for (k = begin; k < end; ++k) {
+            if (at > colptr[c] && rows[at - 1] == rows[k])
+                vals[at - 1] += vals[k];
+            else {
+                rows[at] = rows[k];
+                vals[at++] = vals[k];
+            }
+        }
+    }
+    colptr[n] = at;
+}
+
+/* The sparse solve of A Y = B (sparse.h), kept when each column of Y
+ * satisfies its equations to 1e-9 of the largest |B| + |A| |Y| (a system with a
+ * mechanism whose load is nil, such as the gear mode of a square lattice's
+ * free rotations under (T), is solved so; the mechanism's share of Y is then
+ * the solver's, and nothing loads it); 0 with B untouched otherwise. */
+static int sparse_solve(int n, const int *colptr, const int *rows, const double *vals, int nrhs, double *B)
+{
+    double *Y = malloc(sizeof(double) * (size_t)(n > 0 ? n : 1) * (size_t)nrhs);
+    double *r = calloc((size_t)(n > 0 ? n : 1) * (size_t)nrhs, sizeof(double));
+    double *size = calloc((size_t)(n > 0 ? n : 1) * (size_t)nrhs, sizeof(double));
+    int ok = 0, c, k, m;
+    if (Y && r && size && sbc_sparse_available()) {
+        memcpy(Y, B, sizeof(double) * (size_t)n * (size_t)nrhs);
+        if (sbc_sparse_solve(n, colptr, rows, vals, nrhs, Y) == 0) {
+            ok = 1;
+            for (c = 0; c < n; ++c) /* r = A Y - B, size = |A| |Y| + |B| */
+                for (k = colptr[c]; k < colptr[c + 1]; ++k)
+                    for (m = 0; m < nrhs; ++m) {
+                        r[(long)rows[k] * nrhs + m] += vals[k] * Y[(long)c * nrhs + m];
+                        size[(long)rows[k] * nrhs + m] += fabs(vals[k] * Y[(long)c * nrhs + m]);
+                    }
+            for (m = 0; m < nrhs && ok; ++m) { /* column by column, in the largest entries' norm */
+                double miss = 0.0, scale = 0.0;
+                for (k = 0; k < n; ++k) {
+                    const long at = (long)k * nrhs + m;
+                    ok = ok && isfinite(Y[at]);
+                    miss = fmax(miss, fabs(r[at] - B[at]));
+                    scale = fmax(scale, size[at] + fabs(B[at]));
+                }
+                ok = ok && miss <= 1e-9 * scale;
+            }
+            if (ok)
+                memcpy(B, Y, sizeof(double) * (size_t)n * (size_t)nrhs);
+        }
+    }
+    free(Y);
+    free(r);
+    free(size);
+    return ok;
+}
+
+/* K Y = rhs over the nu unknowns, K as nt triplets, rhs [nu nc] row-major
+ * overwritten by Y. Unknowns that nothing depends on (a rattler, the
+ * rotation of a particle whose contacts all slide or have no tangential
+ * spring) are dropped with their own equation and counted in *mechanisms;
+ * the rest is solved by the sparse solver (sparse.h) where the core has one
+ * and its solution holds, densely otherwise (dense.h, whose pivots <= tol
+ * are counted as mechanisms too). */
+static sbc_status solve_unknowns(int nu, long nt, const int *ti, const int *tj, const double *tv, int nc, double *rhs,
+                                 double tol, int dense, int *mechanisms, sbc_error *err)
+{
+    int *colptr = malloc(sizeof(int) * (size_t)(nu + 1)), *rows = malloc(sizeof(int) * (size_t)(nt > 0 ? nt : 1));
+    int *keep = malloc(sizeof(int) * (size_t)(nu > 0 ? nu : 1)), *next = malloc(sizeof(int) * (size_t)(nu + 1));
+    double *vals = malloc(sizeof(double) * (size_t)(nt > 0 ? nt : 1)), *K = NULL;
+    int u, v, k, nk, at, solved;
+    sbc_status st = SBC_OK;
+    if (!colptr || !rows || !keep || !next || !vals) {
+        st = sbc_fail(err, SBC_ERR_NOMEM, "condensed tangent: out of memory for %ld stiffness entries", nt);
+        goto done;
+    }
+    compress_columns(nu, nt, ti, tj, tv, colptr, rows, vals, next);
+    for (u = nk = 0; u < nu; ++u) {
+        int used = 0;
+        for (k = colptr[u]; k < colptr[u + 1] && !used; ++k)
+            used = vals[k] != 0.0;
+        keep[u] = used ? nk++ : -1;
+        if (!used)
+            ++*mechanisms;
+    }
+    /* the kept unknowns compacted in place (keep[u] <= u, ascending: nothing unread is overwritten), solved, and
+       spread back from the last (descending: the same) */
+    for (u = at = 0; u < nu; ++u) {
+        const int begin = colptr[u], end = colptr[u + 1];
+        if (keep[u] < 0)
+            continue;
+        next[keep[u]] = at;
+        for (k = begin; k < end; ++k)
+            if (keep[rows[k]] >= 0 && vals[k] != 0.0) {
+                rows[at] = keep[rows[k]];
+                vals[at++] = vals[k];
+            }
+        memmove(&rhs[(long)keep[u] * nc], &rhs[(long)u * nc], sizeof(double) * (size_t)nc);
+    }
+    next[nk] = at;
+    solved = !dense && sparse_solve(nk, next, rows, vals, nc, rhs);
+    if (!solved) {
+        if (!(K = calloc((size_t)nk * (size_t)nk, sizeof *K))) {
+            st = sbc_fail(err, SBC_ERR_NOMEM, "condensed tangent: the dense solve of %d unknowns needs %.3g GB (%s)",
+                          nk, 8e-9 * nk * (double)nk,
+                          sbc_sparse_available() ? "the sparse solver found the system singular"
+                                                 : "the core was built without a sparse solver: docs/fe2.md");
+            goto done;
+        }
+        for (v = 0; v < nk; ++v)
+            for (k = next[v]; k < next[v + 1]; ++k)
+                K[(long)rows[k] * nk + v] = vals[k];
+        *mechanisms += sbc_dense_solve(nk, K, nc, rhs, tol);
+    }
+    for (u = nu - 1; u >= 0; --u) {
+        if (keep[u] >= 0)
+            memmove(&rhs[(long)u * nc], &rhs[(long)keep[u] * nc], sizeof(double) * (size_t)nc);
+        else
+            memset(&rhs[(long)u * nc], 0, sizeof(double) * (size_t)nc);
+    }
+done:
+    free(colptr);
+    free(rows);
+    free(keep);
+    free(next);
+    free(vals);
+    free(K);
+    return st;
+}
+
 sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc_bc bc, double C[81],
                                  int *mechanisms, sbc_error *err)
 {
     const int dim = net->dim, nd = dofs_of(dim), nb = 2 * nd, ndof = nd * net->n, nc = dim * dim;
     const int extra = bc == SBC_BC_T ? nc + dim : 0;
-    double (*blocks)[MAXB][MAXB] = NULL, *z0 = NULL, *K = NULL, *rhs = NULL, *dz = NULL, *load = NULL, *a = NULL;
-    int *unk = NULL, *frame_of = NULL, *keep = NULL, *open = NULL;
-    int nu, nk, k, s, u, v, kl, q, p;
+    double (*blocks)[MAXB][MAXB] = NULL, *z0 = NULL, *tv = NULL, *rhs = NULL, *dz = NULL, *load = NULL, *a = NULL;
+    int *unk = NULL, *frame_of = NULL, *open = NULL, *ti = NULL, *tj = NULL;
+    int nu, k, s, u, v, kl, q, p;
+    long nt = 0, cap;
     double scale = 0.0, G[9];
     sbc_status st = SBC_OK;
     memset(C, 0, sizeof(double) * 81);
@@ -311,16 +473,18 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
     for (k = 0; k < net->npair; ++k)
         open[k] = !contact_block(net, k, blocks[k]);
     nu = number_unknowns(net, f, bc, frame_of, unk, z0) + extra;
-    /* the unknowns' matrix, before the dead ones are dropped */
-    K = calloc((size_t)nu * (size_t)nu, sizeof *K);
+    /* the unknowns' matrix as triplets: each contact's block, the multipliers of (T) */
+    cap = (long)net->npair * nb * nb + (bc == SBC_BC_T ? (long)f->n * dim * (2 * dim + 2) : 0);
+    ti = malloc(sizeof *ti * (size_t)(cap > 0 ? cap : 1));
+    tj = malloc(sizeof *tj * (size_t)(cap > 0 ? cap : 1));
+    tv = malloc(sizeof *tv * (size_t)(cap > 0 ? cap : 1));
     rhs = calloc((size_t)nu * (size_t)nc, sizeof *rhs);
-    keep = malloc(sizeof *keep * (size_t)nu);
-    if (!K || !rhs || !keep) {
-        st = sbc_fail(err, SBC_ERR_NOMEM, "material point: the condensed tangent's %d unknowns need %.3g GB (a "
-                      "dense solve)", nu, 8e-9 * nu * (double)nu);
+    if (!ti || !tj || !tv || !rhs) {
+        st = sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory (the condensed tangent's %d unknowns)", nu);
         goto done;
     }
     /* sum over each unknown's dofs of their loads: K y = -K z0 */
+#define PUSH(r, c, value) (ti[nt] = (r), tj[nt] = (c), tv[nt++] = (value))
     for (k = 0; k < net->npair; ++k) {
         if (open[k])
             continue;
@@ -335,7 +499,7 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
                     continue;
                 scale = fmax(scale, fabs(kab));
                 if (unk[cb] >= 0)
-                    K[(long)u * nu + unk[cb]] += kab;
+                    PUSH(u, unk[cb], kab);
                 for (kl = 0; kl < nc; ++kl)
                     rhs[(long)u * nc + kl] -= kab * z0[(long)kl * ndof + cb];
             }
@@ -353,44 +517,20 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
             for (k = 0; k < dim; ++k) {
                 const int row = unk[nd * p0 + k];
                 for (s = 0; s < dim; ++s) { /* multipliers scaled to the stiffness */
-                    K[(long)row * nu + L + dim * k + s] += f->A[3 * q + s] * scale;
-                    K[(long)(L + dim * k + s) * nu + row] += f->A[3 * q + s] * scale / f->V;
+                    PUSH(row, L + dim * k + s, f->A[3 * q + s] * scale);
+                    PUSH(L + dim * k + s, row, f->A[3 * q + s] * scale / f->V);
                 }
-                K[(long)row * nu + L + nc + k] += scale;
-                K[(long)(L + nc + k) * nu + row] += scale;
+                PUSH(row, L + nc + k, scale);
+                PUSH(L + nc + k, row, scale);
             }
         }
         for (kl = 0; kl < nc; ++kl) /* dF = e_k (x) e_l: (dF G)_cj = delta_ck G_lj */
             for (s = 0; s < dim; ++s)
                 rhs[(long)(L + dim * (kl / dim) + s) * nc + kl] = G[SBC_IJ(kl % dim, s)] * scale / f->V;
     }
-    /* unknowns that nothing depends on (a rattler, the rotation of a particle whose contacts all slide or have
-       no tangential spring) are dropped with their own equation */
-    for (u = nk = 0; u < nu; ++u) {
-        int used = 0;
-        for (v = 0; v < nu && !used; ++v)
-            used = K[(long)v * nu + u] != 0.0;
-        keep[u] = used ? nk++ : -1;
-        if (!used)
-            ++*mechanisms;
-    }
-    /* the kept unknowns compacted in place (keep[u] <= u, ascending: nothing unread is overwritten), solved, and
-       spread back from the last (descending: the same) */
-    for (u = 0; u < nu; ++u) {
-        if (keep[u] < 0)
-            continue;
-        for (v = 0; v < nu; ++v)
-            if (keep[v] >= 0)
-                K[(long)keep[u] * nk + keep[v]] = K[(long)u * nu + v];
-        memmove(&rhs[(long)keep[u] * nc], &rhs[(long)u * nc], sizeof(double) * (size_t)nc);
-    }
-    *mechanisms += sbc_dense_solve(nk, K, nc, rhs, 1e-12 * scale);
-    for (u = nu - 1; u >= 0; --u) {
-        if (keep[u] >= 0)
-            memmove(&rhs[(long)u * nc], &rhs[(long)keep[u] * nc], sizeof(double) * (size_t)nc);
-        else
-            memset(&rhs[(long)u * nc], 0, sizeof(double) * (size_t)nc);
-    }
+#undef PUSH
+    if ((st = solve_unknowns(nu, nt, ti, tj, tv, nc, rhs, 1e-12 * scale, net->dense, mechanisms, err)) != SBC_OK)
+        goto done;
     /* dP of each dF = e_k (x) e_l: the frame's forces a_q = -(loads on q), eq. 23 */
     for (kl = 0; kl < nc; ++kl) {
         double dP[9];
@@ -418,8 +558,9 @@ done:
     free(dz);
     free(load);
     free(a);
-    free(K);
+    free(ti);
+    free(tj);
+    free(tv);
     free(rhs);
-    free(keep);
     return st;
 }

@@ -19,6 +19,7 @@ typedef struct sbc_network {
     const double *fs;   /* [3 npair] the tangential spring's force on i, N, in the contact plane (the force on
                            i is -fn n + fs, n from i to j); NULL without friction */
     sbc_frictional law; /* eq. 6 */
+    int dense;          /* 1: solved densely even where the core has a sparse solver (tests compare the two) */
 } sbc_network;
 
 /* C_ijkl = dP_ij / dF_kl (C[9 (3i + j) + 3k + l]) of the aggregate at

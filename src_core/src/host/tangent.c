@@ -81,6 +81,7 @@ sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, double C[81], int *me
     net.j = ij + npair;
     net.fs = fs;
     net.law = a->law;
+    net.dense = 0;
     st = sbc_condensed_tangent(&net, a->frame, a->settings->bc, C, mechanisms, err);
     free(ij);
     free(fs);
