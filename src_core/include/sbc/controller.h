@@ -169,6 +169,20 @@ sbc_status sbc_controller_branch(sbc_controller *c, const double F[9], sbc_error
  * call, or after sbc_controller_aim before the first step. */
 int sbc_controller_remap(const sbc_controller *c, double M[9], double origin[3]);
 
+/* update newton: the host's correction of the frame, du [3Q] (m) and
+ * dtheta [rQ] (rad), that balances the frame's reactions a [3Q] (N, eq. 5)
+ * and moments m [rQ] (N m) on its linearized contact network with the
+ * interior condensed out, as the condition asks ((P): each periodic
+ * family's sums to zero; (T): every particle's force to P A_q with eq. 15
+ * kept, its moment to zero). SBC_OK, or an sbc_status with the message. */
+typedef int (*sbc_newton_fn)(void *user_data, const double *a, const double *m, double *du, double *dtheta,
+                             char *message, size_t cap);
+
+/* Gives the controller the host's Newton correction (update newton; a
+ * controller with update newton and none stops at its first correction,
+ * naming the keyword). */
+void sbc_controller_set_newton(sbc_controller *c, sbc_newton_fn fn, void *user_data);
+
 /* Increment now being relaxed, 0 .. i_tot. */
 int sbc_controller_increment(const sbc_controller *c);
 

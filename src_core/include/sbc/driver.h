@@ -91,6 +91,11 @@ typedef struct sbc_driver_callbacks {
        revisit (M = I): the velocity added, if any, is taken back exactly and
        forgotten */
     void (*remap)(void *user_data, const double *M, const double *origin, int sign);
+    /* keyword update newton (required with it under (P) and (T)): the
+       frame's correction from the host's linearized contact network
+       (controller.h, sbc_newton_fn), with newton_data (NULL: user_data) */
+    sbc_newton_fn newton;
+    void *newton_data;
 } sbc_driver_callbacks;
 
 typedef struct sbc_driver sbc_driver;

@@ -27,9 +27,11 @@ typedef enum sbc_bc { SBC_BC_D = 0, SBC_BC_P, SBC_BC_T, SBC_BC_MIXED } sbc_bc;
  * P: periodic with the opposite edge, both components and the rotation
  * (eq. 19); T: uniform traction a_q,c = P_cj A_q,j under servo control (eq. 48). */
 /* How a servo iteration turns residuals into frame corrections: the paper's
- * fixed gains (eqs. 33, 34, 36, 48), or those corrections scaled by a
- * secant (Barzilai-Borwein) factor learned from the last two iterations. */
-typedef enum sbc_update { SBC_UPDATE_FIXED = 0, SBC_UPDATE_SECANT } sbc_update;
+ * fixed gains (eqs. 33, 34, 36, 48), those corrections scaled by a secant
+ * (Barzilai-Borwein) factor learned from the last two iterations, or the
+ * Newton correction of the host's linearized contact network (the
+ * condensed stiffness; controller.h, sbc_newton_fn). */
+typedef enum sbc_update { SBC_UPDATE_FIXED = 0, SBC_UPDATE_SECANT, SBC_UPDATE_NEWTON } sbc_update;
 
 /* What dissipates the interior's kinetic energy during a relaxation: nothing,
  * the local non-viscous damping of eq. 10, or FIRE (fire_damping.h). */

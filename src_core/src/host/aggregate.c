@@ -88,6 +88,14 @@ const sbc_engine_ops sbc_engine_ops_spheres = {3, spheres_create, spheres_free, 
                                      spheres_save, spheres_load, spheres_pairs, spheres_pair, spheres_centres,
                                      spheres_radii};
 
+sbc_driver_callbacks sbc_aggregate_callbacks(const sbc_aggregate *a)
+{
+    sbc_driver_callbacks cb = a->ops->callbacks(a->engine);
+    cb.newton = sbc_aggregate_newton;
+    cb.newton_data = (void *)a; /* read only: the callback takes a const aggregate */
+    return cb;
+}
+
 sbc_event sbc_aggregate_run_increment(const sbc_aggregate *a, sbc_controller *ctl, sbc_driver *driver, int first,
                                       sbc_error *err)
 {

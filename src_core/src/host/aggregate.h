@@ -58,6 +58,16 @@ typedef struct sbc_aggregate {
 sbc_event sbc_aggregate_run_increment(const sbc_aggregate *a, sbc_controller *ctl, sbc_driver *driver, int first,
                                       sbc_error *err);
 
+/* The engine's driver callbacks (ops->callbacks) with the Newton
+ * correction of keyword update newton (sbc_aggregate_newton on a). */
+sbc_driver_callbacks sbc_aggregate_callbacks(const sbc_aggregate *a);
+
+/* update newton (sbc_newton_fn, controller.h) on an aggregate
+ * (user_data): the frame's correction by the condensed network
+ * (condensed.h, sbc_condensed_correction). */
+int sbc_aggregate_newton(void *aggregate, const double *reaction, const double *moment, double *du, double *dtheta,
+                         char *message, size_t cap);
+
 /* The affine tangent at F (material_point.h, sbc_point_tangent_affine). */
 sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], double C[81], sbc_error *err);
 

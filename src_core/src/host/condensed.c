@@ -322,148 +322,192 @@ static void compress_columns(int n, long nt, const int *ti, const int *tj, const
     colptr[n] = at;
 }
 
-/* The sparse solve of A Y = B (sparse.h), kept when each column of Y
- * satisfies its equations to 1e-9 of the largest |B| + |A| |Y| (a system with a
- * mechanism whose load is nil, such as the gear mode of a square lattice's
- * free rotations under (T), is solved so; the mechanism's share of Y is then
- * the solver's, and nothing loads it); 0 with B untouched otherwise. */
-static int sparse_solve(int n, const int *colptr, const int *rows, const double *vals, int nrhs, double *B)
+/* the rounds of mechanisms found by the sparse solve before the dense LU takes over */
+#define SPARSE_ROUNDS 8
+
+/* The columns keep_col >= 0 and the rows keep_row >= 0 of the compressed
+ * columns (colptr, rows, vals) of an n x n matrix, renumbered, into (cp, ri,
+ * vx) of the nk x nk matrix they leave; returns its entry count (cp[nk]). */
+static int reduced_columns(int n, const int *colptr, const int *rows, const double *vals, const int *keep_col,
+                            const int *keep_row, int *cp, int *ri, double *vx)
 {
-    double *Y = malloc(sizeof(double) * (size_t)(n > 0 ? n : 1) * (size_t)nrhs);
-    double *r = calloc((size_t)(n > 0 ? n : 1) * (size_t)nrhs, sizeof(double));
-    double *size = calloc((size_t)(n > 0 ? n : 1) * (size_t)nrhs, sizeof(double));
-    int ok = 0, c, k, m;
-    if (Y && r && size && sbc_sparse_available()) {
-        memcpy(Y, B, sizeof(double) * (size_t)n * (size_t)nrhs);
-        if (sbc_sparse_solve(n, colptr, rows, vals, nrhs, Y) == 0) {
-            ok = 1;
-            for (c = 0; c < n; ++c) /* r = A Y - B, size = |A| |Y| + |B| */
-                for (k = colptr[c]; k < colptr[c + 1]; ++k)
-                    for (m = 0; m < nrhs; ++m) {
-                        r[(long)rows[k] * nrhs + m] += vals[k] * Y[(long)c * nrhs + m];
-                        size[(long)rows[k] * nrhs + m] += fabs(vals[k] * Y[(long)c * nrhs + m]);
-                    }
-            for (m = 0; m < nrhs && ok; ++m) { /* column by column, in the largest entries' norm */
-                double miss = 0.0, scale = 0.0;
-                for (k = 0; k < n; ++k) {
-                    const long at = (long)k * nrhs + m;
-                    ok = ok && isfinite(Y[at]);
-                    miss = fmax(miss, fabs(r[at] - B[at]));
-                    scale = fmax(scale, size[at] + fabs(B[at]));
-                }
-                ok = ok && miss <= 1e-9 * scale;
+    int u, k, at = 0;
+    for (u = 0; u < n; ++u) {
+        if (keep_col[u] < 0)
+            continue;
+        cp[keep_col[u]] = at;
+        for (k = colptr[u]; k < colptr[u + 1]; ++k)
+            if (keep_row[rows[k]] >= 0 && vals[k] != 0.0) {
+                ri[at] = keep_row[rows[k]];
+                vx[at++] = vals[k];
             }
-            if (ok)
-                memcpy(B, Y, sizeof(double) * (size_t)n * (size_t)nrhs);
-        }
     }
-    free(Y);
-    free(r);
-    free(size);
-    return ok;
+    return at;
+}
+
+/* renumbers the kept entries of keep [n] (>= 0) 0, 1, ...; their count */
+static int renumber(int n, int *keep)
+{
+    int u, count = 0;
+    for (u = 0; u < n; ++u)
+        if (keep[u] >= 0)
+            keep[u] = count++;
+    return count;
 }
 
 /* K Y = rhs over the nu unknowns, K as nt triplets, rhs [nu nc] row-major
  * overwritten by Y. Unknowns that nothing depends on (a rattler, the
  * rotation of a particle whose contacts all slide or have no tangential
- * spring) are dropped with their own equation and counted in *mechanisms;
- * the rest is solved by the sparse solver (sparse.h) where the core has one
- * and its solution holds, densely otherwise (dense.h, whose pivots <= tol
- * are counted as mechanisms too). */
+ * spring) are dropped with their own equation and counted in *mechanisms.
+ * The rest is solved by the sparse solver (sparse.h) where the core has one:
+ * a pivot at or below 1e-12 of the largest (of the rows scaled by their
+ * sums) is a mechanism (the gear mode of a square lattice's free rotations:
+ * neighbours spinning opposite ways), dropped with its pivot's equation, and
+ * the rest factored again, as the dense LU (dense.h) does with a pivot at or
+ * below tol, which solves it without a sparse solver. */
 static sbc_status solve_unknowns(int nu, long nt, const int *ti, const int *tj, const double *tv, int nc, double *rhs,
                                  double tol, int dense, int *mechanisms, sbc_error *err)
 {
-    int *colptr = malloc(sizeof(int) * (size_t)(nu + 1)), *rows = malloc(sizeof(int) * (size_t)(nt > 0 ? nt : 1));
-    int *keep = malloc(sizeof(int) * (size_t)(nu > 0 ? nu : 1)), *next = malloc(sizeof(int) * (size_t)(nu + 1));
-    double *vals = malloc(sizeof(double) * (size_t)(nt > 0 ? nt : 1)), *K = NULL;
-    int u, v, k, nk, at, solved;
+    const size_t n1 = (size_t)(nu > 0 ? nu : 1), e1 = (size_t)(nt > 0 ? nt : 1);
+    int *colptr = malloc(sizeof(int) * (n1 + 1)), *rows = malloc(sizeof(int) * e1), *next = malloc(sizeof(int) * (n1 + 1));
+    int *keep_col = malloc(sizeof(int) * n1), *keep_row = malloc(sizeof(int) * n1), *cp = malloc(sizeof(int) * (n1 + 1));
+    int *ri = malloc(sizeof(int) * e1), *drop_c = malloc(sizeof(int) * n1), *drop_r = malloc(sizeof(int) * n1);
+    double *vals = malloc(sizeof(double) * e1), *vx = malloc(sizeof(double) * e1), *Y = NULL, *K = NULL;
+    int u, v, k, nk = 0, round, ndrop, solved = 0;
     sbc_status st = SBC_OK;
-    if (!colptr || !rows || !keep || !next || !vals) {
+    if (!colptr || !rows || !next || !keep_col || !keep_row || !cp || !ri || !drop_c || !drop_r || !vals || !vx ||
+        !(Y = malloc(sizeof(double) * n1 * (size_t)nc))) {
         st = sbc_fail(err, SBC_ERR_NOMEM, "condensed tangent: out of memory for %ld stiffness entries", nt);
         goto done;
     }
     compress_columns(nu, nt, ti, tj, tv, colptr, rows, vals, next);
-    for (u = nk = 0; u < nu; ++u) {
+    for (u = 0; u < nu; ++u) {
         int used = 0;
         for (k = colptr[u]; k < colptr[u + 1] && !used; ++k)
             used = vals[k] != 0.0;
-        keep[u] = used ? nk++ : -1;
+        keep_col[u] = keep_row[u] = used ? 0 : -1;
         if (!used)
             ++*mechanisms;
     }
-    /* the kept unknowns compacted in place (keep[u] <= u, ascending: nothing unread is overwritten), solved, and
-       spread back from the last (descending: the same) */
-    for (u = at = 0; u < nu; ++u) {
-        const int begin = colptr[u], end = colptr[u + 1];
-        if (keep[u] < 0)
-            continue;
-        next[keep[u]] = at;
-        for (k = begin; k < end; ++k)
-            if (keep[rows[k]] >= 0 && vals[k] != 0.0) {
-                rows[at] = keep[rows[k]];
-                vals[at++] = vals[k];
-            }
-        memmove(&rhs[(long)keep[u] * nc], &rhs[(long)u * nc], sizeof(double) * (size_t)nc);
+    for (round = 0; !solved; ++round) {
+        int *cols_of = next; /* a reduced column's unknown, then a reduced row's equation */
+        nk = renumber(nu, keep_col);
+        renumber(nu, keep_row);
+        cp[nk] = reduced_columns(nu, colptr, rows, vals, keep_col, keep_row, cp, ri, vx);
+        for (u = 0; u < nu; ++u)
+            if (keep_row[u] >= 0)
+                memcpy(&Y[(long)keep_row[u] * nc], &rhs[(long)u * nc], sizeof(double) * (size_t)nc);
+        if (dense || round >= SPARSE_ROUNDS)
+            break;
+        k = sbc_sparse_solve(nk, cp, ri, vx, nc, Y, 1e-12, drop_c, drop_r, &ndrop);
+        if (k < 0)
+            break;
+        if (k == 0) {
+            solved = 1;
+            break;
+        }
+        /* mechanisms: their columns and pivot rows out, and again */
+        for (u = 0; u < nu; ++u)
+            if (keep_col[u] >= 0)
+                cols_of[keep_col[u]] = u;
+        for (v = 0; v < ndrop; ++v)
+            drop_c[v] = cols_of[drop_c[v]];
+        for (u = 0; u < nu; ++u)
+            if (keep_row[u] >= 0)
+                cols_of[keep_row[u]] = u;
+        for (v = 0; v < ndrop; ++v)
+            drop_r[v] = cols_of[drop_r[v]];
+        for (v = 0; v < ndrop; ++v) {
+            keep_col[drop_c[v]] = -1;
+            keep_row[drop_r[v]] = -1;
+        }
+        *mechanisms += ndrop;
     }
-    next[nk] = at;
-    solved = !dense && sparse_solve(nk, next, rows, vals, nc, rhs);
     if (!solved) {
         if (!(K = calloc((size_t)nk * (size_t)nk, sizeof *K))) {
             st = sbc_fail(err, SBC_ERR_NOMEM, "condensed tangent: the dense solve of %d unknowns needs %.3g GB (%s)",
                           nk, 8e-9 * nk * (double)nk,
-                          sbc_sparse_available() ? "the sparse solver found the system singular"
+                          sbc_sparse_available() ? "the sparse solver found too many mechanisms"
                                                  : "the core was built without a sparse solver: docs/fe2.md");
             goto done;
         }
         for (v = 0; v < nk; ++v)
-            for (k = next[v]; k < next[v + 1]; ++k)
-                K[(long)rows[k] * nk + v] = vals[k];
-        *mechanisms += sbc_dense_solve(nk, K, nc, rhs, tol);
+            for (k = cp[v]; k < cp[v + 1]; ++k)
+                K[(long)ri[k] * nk + v] = vx[k];
+        *mechanisms += sbc_dense_solve(nk, K, nc, Y, tol);
     }
-    for (u = nu - 1; u >= 0; --u) {
-        if (keep[u] >= 0)
-            memmove(&rhs[(long)u * nc], &rhs[(long)keep[u] * nc], sizeof(double) * (size_t)nc);
+    for (u = 0; u < nu; ++u) {
+        if (keep_col[u] >= 0)
+            memcpy(&rhs[(long)u * nc], &Y[(long)keep_col[u] * nc], sizeof(double) * (size_t)nc);
         else
             memset(&rhs[(long)u * nc], 0, sizeof(double) * (size_t)nc);
     }
 done:
     free(colptr);
     free(rows);
-    free(keep);
     free(next);
+    free(keep_col);
+    free(keep_row);
+    free(cp);
+    free(ri);
+    free(drop_c);
+    free(drop_r);
     free(vals);
+    free(vx);
+    free(Y);
     free(K);
     return st;
 }
 
-sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc_bc bc, double C[81],
-                                 int *mechanisms, sbc_error *err)
+/* The linearized system of a network under a frame's condition: the
+ * contact blocks, the unknowns (number_unknowns) and the matrix over them as
+ * triplets, bordered under (T) by the multipliers of a_q = P A_q + m and
+ * eq. 15 (rows and columns L .. nu - 1). */
+typedef struct linear_system {
+    int dim, nd, nb, ndof, nc, nu, L;
+    double (*blocks)[MAXB][MAXB];
+    int *open;      /* [npair] 1: the pair does not touch */
+    double *z0;     /* [nc ndof] the prescribed part of each dof for dF = e_k (x) e_l */
+    int *unk;       /* [ndof] the dof's unknown, -1 when prescribed */
+    int *ti, *tj;   /* [nt] */
+    double *tv;     /* [nt] */
+    long nt;
+    double scale;   /* the largest contact stiffness entry */
+} linear_system;
+
+static void system_free(linear_system *y)
+{
+    free(y->blocks);
+    free(y->open);
+    free(y->z0);
+    free(y->unk);
+    free(y->ti);
+    free(y->tj);
+    free(y->tv);
+    memset(y, 0, sizeof *y);
+}
+
+static sbc_status system_build(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const char *what,
+                               linear_system *y, sbc_error *err)
 {
     const int dim = net->dim, nd = dofs_of(dim), nb = 2 * nd, ndof = nd * net->n, nc = dim * dim;
     const int extra = bc == SBC_BC_T ? nc + dim : 0;
-    double (*blocks)[MAXB][MAXB] = NULL, *z0 = NULL, *tv = NULL, *rhs = NULL, *dz = NULL, *load = NULL, *a = NULL;
-    int *unk = NULL, *frame_of = NULL, *open = NULL, *ti = NULL, *tj = NULL;
-    int nu, k, s, u, v, kl, q, p;
-    long nt = 0, cap;
-    double scale = 0.0, G[9];
+    int *frame_of = NULL, k, s, u, v, q, p;
+    long cap;
     sbc_status st = SBC_OK;
-    memset(C, 0, sizeof(double) * 81);
-    *mechanisms = 0;
+    memset(y, 0, sizeof *y);
     if (dim != f->dim || (dim != 2 && dim != 3))
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: the condensed tangent of a %dD network on a %dD frame",
-                        dim, f->dim);
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: a %dD network on a %dD frame", what, dim, f->dim);
     if (bc != SBC_BC_D && bc != SBC_BC_P && bc != SBC_BC_T)
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: the condensed tangent takes (D), (P) or (T)");
-    blocks = malloc(sizeof *blocks * (size_t)(net->npair > 0 ? net->npair : 1));
-    open = calloc((size_t)(net->npair > 0 ? net->npair : 1), sizeof *open);
-    z0 = calloc((size_t)ndof * (size_t)nc, sizeof *z0);
-    unk = malloc(sizeof *unk * (size_t)ndof);
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: (D), (P) or (T) only", what);
+    y->dim = dim, y->nd = nd, y->nb = nb, y->ndof = ndof, y->nc = nc;
+    y->blocks = malloc(sizeof *y->blocks * (size_t)(net->npair > 0 ? net->npair : 1));
+    y->open = calloc((size_t)(net->npair > 0 ? net->npair : 1), sizeof *y->open);
+    y->z0 = calloc((size_t)ndof * (size_t)nc, sizeof *y->z0);
+    y->unk = malloc(sizeof *y->unk * (size_t)ndof);
     frame_of = malloc(sizeof *frame_of * (size_t)net->n);
-    dz = malloc(sizeof *dz * (size_t)ndof);
-    load = malloc(sizeof *load * (size_t)ndof);
-    a = calloc(3 * (size_t)f->n, sizeof *a);
-    if (!blocks || !open || !z0 || !unk || !frame_of || !dz || !load || !a) {
-        st = sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory (condensed tangent of %d particles)", net->n);
+    if (!y->blocks || !y->open || !y->z0 || !y->unk || !frame_of) {
+        st = sbc_fail(err, SBC_ERR_NOMEM, "%s: out of memory (%d particles)", what, net->n);
         goto done;
     }
     for (p = 0; p < net->n; ++p)
@@ -471,96 +515,160 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
     for (q = 0; q < f->n; ++q)
         frame_of[f->particle[q]] = q;
     for (k = 0; k < net->npair; ++k)
-        open[k] = !contact_block(net, k, blocks[k]);
-    nu = number_unknowns(net, f, bc, frame_of, unk, z0) + extra;
-    /* the unknowns' matrix as triplets: each contact's block, the multipliers of (T) */
+        y->open[k] = !contact_block(net, k, y->blocks[k]);
+    y->nu = number_unknowns(net, f, bc, frame_of, y->unk, y->z0) + extra;
+    y->L = y->nu - extra;
     cap = (long)net->npair * nb * nb + (bc == SBC_BC_T ? (long)f->n * dim * (2 * dim + 2) : 0);
-    ti = malloc(sizeof *ti * (size_t)(cap > 0 ? cap : 1));
-    tj = malloc(sizeof *tj * (size_t)(cap > 0 ? cap : 1));
-    tv = malloc(sizeof *tv * (size_t)(cap > 0 ? cap : 1));
-    rhs = calloc((size_t)nu * (size_t)nc, sizeof *rhs);
-    if (!ti || !tj || !tv || !rhs) {
-        st = sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory (the condensed tangent's %d unknowns)", nu);
+    y->ti = malloc(sizeof *y->ti * (size_t)(cap > 0 ? cap : 1));
+    y->tj = malloc(sizeof *y->tj * (size_t)(cap > 0 ? cap : 1));
+    y->tv = malloc(sizeof *y->tv * (size_t)(cap > 0 ? cap : 1));
+    if (!y->ti || !y->tj || !y->tv) {
+        st = sbc_fail(err, SBC_ERR_NOMEM, "%s: out of memory (%d unknowns)", what, y->nu);
         goto done;
     }
-    /* sum over each unknown's dofs of their loads: K y = -K z0 */
-#define PUSH(r, c, value) (ti[nt] = (r), tj[nt] = (c), tv[nt++] = (value))
+    /* sum over each unknown's dofs of their loads */
+#define PUSH(r, c, value) (y->ti[y->nt] = (r), y->tj[y->nt] = (c), y->tv[y->nt++] = (value))
     for (k = 0; k < net->npair; ++k) {
-        if (open[k])
+        if (y->open[k])
             continue;
         for (s = 0; s < nb; ++s) {
-            const int ra = slot_dof(net, k, s);
-            if ((u = unk[ra]) < 0)
+            if ((u = y->unk[slot_dof(net, k, s)]) < 0)
                 continue;
             for (v = 0; v < nb; ++v) {
-                const int cb = slot_dof(net, k, v);
-                const double kab = blocks[k][s][v];
-                if (kab == 0.0)
-                    continue;
-                scale = fmax(scale, fabs(kab));
-                if (unk[cb] >= 0)
-                    PUSH(u, unk[cb], kab);
-                for (kl = 0; kl < nc; ++kl)
-                    rhs[(long)u * nc + kl] -= kab * z0[(long)kl * ndof + cb];
+                const double kab = y->blocks[k][s][v];
+                y->scale = fmax(y->scale, fabs(kab));
+                if (kab != 0.0 && y->unk[slot_dof(net, k, v)] >= 0)
+                    PUSH(u, y->unk[slot_dof(net, k, v)], kab);
             }
         }
     }
-    if (bc == SBC_BC_T) { /* a_q = P A_q + m on the frame; sum_q x_q (x) A_q = F G (eq. 15); sum_q u_q = 0 */
-        const int L = nu - extra;
+    if (bc == SBC_BC_T) /* a_q = P A_q + m on the frame; sum_q x_q (x) A_q = F G (eq. 15); sum_q u_q = 0 */
+        for (q = 0; q < f->n; ++q) {
+            const int p0 = f->particle[q];
+            for (k = 0; k < dim; ++k) {
+                const int row = y->unk[nd * p0 + k];
+                for (s = 0; s < dim; ++s) { /* multipliers scaled to the stiffness */
+                    PUSH(row, y->L + dim * k + s, f->A[3 * q + s] * y->scale);
+                    PUSH(y->L + dim * k + s, row, f->A[3 * q + s] * y->scale / f->V);
+                }
+                PUSH(row, y->L + nc + k, y->scale);
+                PUSH(y->L + nc + k, row, y->scale);
+            }
+        }
+#undef PUSH
+done:
+    free(frame_of);
+    if (st != SBC_OK)
+        system_free(y);
+    return st;
+}
+
+sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc_bc bc, double C[81],
+                                 int *mechanisms, sbc_error *err)
+{
+    linear_system y;
+    double *rhs = NULL, *dz = NULL, *load = NULL, *a = NULL, G[9];
+    int k, s, u, v, kl, q;
+    sbc_status st;
+    memset(C, 0, sizeof(double) * 81);
+    *mechanisms = 0;
+    if ((st = system_build(net, f, bc, "condensed tangent", &y, err)) != SBC_OK)
+        return st;
+    rhs = calloc((size_t)y.nu * (size_t)y.nc, sizeof *rhs);
+    dz = malloc(sizeof *dz * (size_t)y.ndof);
+    load = malloc(sizeof *load * (size_t)y.ndof);
+    a = calloc(3 * (size_t)f->n, sizeof *a);
+    if (!rhs || !dz || !load || !a) {
+        st = sbc_fail(err, SBC_ERR_NOMEM, "condensed tangent: out of memory (%d unknowns)", y.nu);
+        goto done;
+    }
+    for (k = 0; k < net->npair; ++k) /* K y = -K z0 */
+        if (!y.open[k])
+            for (s = 0; s < y.nb; ++s)
+                if ((u = y.unk[slot_dof(net, k, s)]) >= 0)
+                    for (v = 0; v < y.nb; ++v)
+                        for (kl = 0; kl < y.nc; ++kl)
+                            rhs[(long)u * y.nc + kl] -= y.blocks[k][s][v] * y.z0[(long)kl * y.ndof + slot_dof(net, k, v)];
+    if (bc == SBC_BC_T) { /* eq. 15 for dF = e_k (x) e_l: (dF G)_cj = delta_ck G_lj */
+        const int dim = y.dim;
         memset(G, 0, sizeof G);
         for (q = 0; q < f->n; ++q)
             for (k = 0; k < dim; ++k)
                 for (s = 0; s < dim; ++s)
                     G[SBC_IJ(k, s)] += f->X[3 * q + k] * f->A[3 * q + s];
-        for (q = 0; q < f->n; ++q) {
-            const int p0 = f->particle[q];
-            for (k = 0; k < dim; ++k) {
-                const int row = unk[nd * p0 + k];
-                for (s = 0; s < dim; ++s) { /* multipliers scaled to the stiffness */
-                    PUSH(row, L + dim * k + s, f->A[3 * q + s] * scale);
-                    PUSH(L + dim * k + s, row, f->A[3 * q + s] * scale / f->V);
-                }
-                PUSH(row, L + nc + k, scale);
-                PUSH(L + nc + k, row, scale);
-            }
-        }
-        for (kl = 0; kl < nc; ++kl) /* dF = e_k (x) e_l: (dF G)_cj = delta_ck G_lj */
+        for (kl = 0; kl < y.nc; ++kl)
             for (s = 0; s < dim; ++s)
-                rhs[(long)(L + dim * (kl / dim) + s) * nc + kl] = G[SBC_IJ(kl % dim, s)] * scale / f->V;
+                rhs[(long)(y.L + dim * (kl / dim) + s) * y.nc + kl] = G[SBC_IJ(kl % dim, s)] * y.scale / f->V;
     }
-#undef PUSH
-    if ((st = solve_unknowns(nu, nt, ti, tj, tv, nc, rhs, 1e-12 * scale, net->dense, mechanisms, err)) != SBC_OK)
+    if ((st = solve_unknowns(y.nu, y.nt, y.ti, y.tj, y.tv, y.nc, rhs, 1e-12 * y.scale, net->dense, mechanisms,
+                             err)) != SBC_OK)
         goto done;
     /* dP of each dF = e_k (x) e_l: the frame's forces a_q = -(loads on q), eq. 23 */
-    for (kl = 0; kl < nc; ++kl) {
+    for (kl = 0; kl < y.nc; ++kl) {
+        const int dim = y.dim;
         double dP[9];
-        for (s = 0; s < ndof; ++s)
-            dz[s] = z0[(long)kl * ndof + s] + (unk[s] >= 0 ? rhs[(long)unk[s] * nc + kl] : 0.0);
-        memset(load, 0, sizeof(double) * (size_t)ndof);
+        for (s = 0; s < y.ndof; ++s)
+            dz[s] = y.z0[(long)kl * y.ndof + s] + (y.unk[s] >= 0 ? rhs[(long)y.unk[s] * y.nc + kl] : 0.0);
+        memset(load, 0, sizeof(double) * (size_t)y.ndof);
         for (k = 0; k < net->npair; ++k)
-            if (!open[k])
-                for (s = 0; s < nb; ++s)
-                    for (v = 0; v < nb; ++v)
-                        load[slot_dof(net, k, s)] += blocks[k][s][v] * dz[slot_dof(net, k, v)];
+            if (!y.open[k])
+                for (s = 0; s < y.nb; ++s)
+                    for (v = 0; v < y.nb; ++v)
+                        load[slot_dof(net, k, s)] += y.blocks[k][s][v] * dz[slot_dof(net, k, v)];
         for (q = 0; q < f->n; ++q)
             for (s = 0; s < dim; ++s)
-                a[3 * q + s] = -load[nd * f->particle[q] + s];
+                a[3 * q + s] = -load[y.nd * f->particle[q] + s];
         sbc_homogenize_P(f, a, dP);
-        for (s = 0; s < nc; ++s)
+        for (s = 0; s < y.nc; ++s)
             C[9 * SBC_IJ(s / dim, s % dim) + SBC_IJ(kl / dim, kl % dim)] = dP[SBC_IJ(s / dim, s % dim)];
     }
 done:
-    free(blocks);
-    free(open);
-    free(z0);
-    free(unk);
-    free(frame_of);
+    system_free(&y);
+    free(rhs);
     free(dz);
     free(load);
     free(a);
-    free(ti);
-    free(tj);
-    free(tv);
+    return st;
+}
+
+sbc_status sbc_condensed_correction(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const double *reaction,
+                                    const double *moment, double *du, double *dtheta, int *mechanisms, sbc_error *err)
+{
+    linear_system y;
+    double *rhs = NULL;
+    int q, c, rot;
+    sbc_status st;
+    *mechanisms = 0;
+    if ((st = system_build(net, f, bc, "update newton", &y, err)) != SBC_OK)
+        return st;
+    rot = y.nd - y.dim;
+    memset(du, 0, sizeof(double) * 3 * (size_t)f->n);
+    memset(dtheta, 0, sizeof(double) * (size_t)rot * (size_t)f->n);
+    if (!(rhs = calloc((size_t)y.nu, sizeof *rhs))) {
+        system_free(&y);
+        return sbc_fail(err, SBC_ERR_NOMEM, "update newton: out of memory (%d unknowns)", y.nu);
+    }
+    /* the loads' change that balances each frame particle: the contact loads on q are -a_q (eq. 5), so
+       K dz = a on its translations and m on its rotations, summed over a (P) family's shared unknowns */
+    for (q = 0; q < f->n; ++q)
+        for (c = 0; c < y.nd; ++c) {
+            const int u = y.unk[y.nd * f->particle[q] + c];
+            if (u >= 0)
+                rhs[u] += c < y.dim ? reaction[3 * q + c] : moment[rot * q + c - y.dim];
+        }
+    if ((st = solve_unknowns(y.nu, y.nt, y.ti, y.tj, y.tv, 1, rhs, 1e-12 * y.scale, net->dense, mechanisms, err)) ==
+        SBC_OK)
+        for (q = 0; q < f->n; ++q)
+            for (c = 0; c < y.nd; ++c) {
+                const int u = y.unk[y.nd * f->particle[q] + c];
+                if (u < 0)
+                    continue;
+                if (c < y.dim)
+                    du[3 * q + c] = rhs[u];
+                else
+                    dtheta[rot * q + c - y.dim] = rhs[u];
+            }
+    system_free(&y);
     free(rhs);
     return st;
 }

@@ -32,4 +32,16 @@ typedef struct sbc_network {
 sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc_bc bc, double C[81],
                                  int *mechanisms, sbc_error *err);
 
+/* update newton (docs/servo_bc.md, "Newton"): the frame's correction du [3Q]
+ * (m) and dtheta [rQ] (rad, r = 1 in 2D, 3 in 3D) that brings the frame's
+ * reactions reaction [3Q] (N, a_q of eq. 5) and moments moment [rQ] (N m)
+ * to what bc asks of them on the linearized network with the interior
+ * condensed out: (P) each family's sums of forces and moments to zero (its
+ * shared fluctuation and rotation solved for; the corners keep following F),
+ * (T) every frame particle's force to P A_q + m with eq. 15 and the frame's
+ * mean translation kept (the multipliers P, m solved for), and its moment to
+ * zero; (D) nothing (all zero). */
+sbc_status sbc_condensed_correction(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const double *reaction,
+                                    const double *moment, double *du, double *dtheta, int *mechanisms, sbc_error *err);
+
 #endif

@@ -36,6 +36,12 @@ sbc_driver *sbc_driver_create(sbc_controller *c, const sbc_settings *s, const sb
                  sbc_bc_name(s->bc));
         return NULL;
     }
+    if (s->update == SBC_UPDATE_NEWTON && s->bc != SBC_BC_D && !cb->newton) {
+        sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: keyword 'update': newton needs the host's linearized contact "
+                 "network (the driver's newton callback), which the embedded runner and the material point give "
+                 "and this host does not (expected fixed or secant)", sbc_bc_name(s->bc));
+        return NULL;
+    }
     if (!(d = calloc(1, sizeof *d))) {
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
         return NULL;
@@ -54,6 +60,8 @@ sbc_driver *sbc_driver_create(sbc_controller *c, const sbc_settings *s, const sb
         return NULL;
     }
     sbc_fire_start(&d->fire);
+    if (cb->newton)
+        sbc_controller_set_newton(c, cb->newton, cb->newton_data ? cb->newton_data : cb->user_data);
     return d;
 }
 

@@ -233,7 +233,7 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
     }
     p->a.ops->frame_masses(p->a.engine, p->mass);
     p->a.mass = p->mass;
-    cb = p->a.ops->callbacks(p->a.engine);
+    cb = sbc_aggregate_callbacks(&p->a);
     if (!(p->ctl = sbc_controller_create(&p->frame, &p->settings, p->mass, d->dt, d->law.kn, err)) ||
         !(p->driver = sbc_driver_create(p->ctl, &p->settings, &cb, err)) ||
         p->a.ops->forces(p->a.engine, err) != SBC_OK || run_increment(p, 1, err) != SBC_EVENT_FINISHED) {

@@ -311,6 +311,9 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
                         s->servo_line, s->settings.frame_group);
     if ((st = sbc_script_outputs_check(s, err)) != SBC_OK)
         return st;
+    if (s->cohesive && s->settings.update == SBC_UPDATE_NEWTON && s->settings.bc != SBC_BC_D)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'update': newton linearizes the contacts, not "
+                        "the cohesive bonds of 'contact cohesive' (expected fixed or secant)", s->servo_line);
 
     if ((st = sbc_packing_distinct(s->packing.n, s->packing.x, s->packing.r, err)) != SBC_OK ||
         (st = sbc_frame_detect_packing(&r.frame, &s->packing, err)) != SBC_OK)
@@ -400,7 +403,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         fprintf(s->log, "servo_bc: %d cohesive bonds between the pairs touching at the start\n",
                 sbc_engine_get_view(r.engine).bonds_initial);
     {
-        sbc_driver_callbacks cb = sbc_engine_callbacks(r.engine);
+        sbc_driver_callbacks cb = sbc_aggregate_callbacks(&r.aggregate);
         cb.row = engine_row;
         cb.row_data = &r;
         r.s = s;

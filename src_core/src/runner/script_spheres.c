@@ -301,7 +301,7 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
                 sbc_settings_total_increments(&s->settings), dt, dtc);
     r.spheres = p.engine;
     r.frame = &p.frame;
-    cb = sbc_spheres_callbacks(p.engine);
+    cb = sbc_aggregate_callbacks(&r.aggregate);
     cb.row = sphere_row;
     cb.row_data = &r;
     if (!(p.driver = sbc_driver_create(p.ctl, &s->settings, &cb, err))) {

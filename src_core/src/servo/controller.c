@@ -349,6 +349,12 @@ static void F_along_move(const sbc_controller *c, long done, double F[9])
         F[k] = done >= c->motion.steps ? c->F_now[k] : c->F_prev[k] + t * (c->F_now[k] - c->F_prev[k]);
 }
 
+void sbc_controller_set_newton(sbc_controller *c, sbc_newton_fn fn, void *user_data)
+{
+    c->newton = fn;
+    c->newton_data = user_data;
+}
+
 int sbc_controller_remap(const sbc_controller *c, double M[9], double origin[3])
 {
     const int dim = c->frame->dim;
@@ -693,8 +699,8 @@ static sbc_event stage_correct(sbc_controller *c, const double F_measured[9], co
 {
     sbc_servo_norms nrm = c->norms; /* the scaled step is this correction's; c->norms keeps the residuals' */
     int moved, k;
-    if (c->rule->scale)
-        c->rule->scale(c, &nrm);
+    if (c->rule->scale && c->rule->scale(c, &nrm, err) != SBC_OK)
+        return SBC_EVENT_FAILED;
     if (nrm.max_step > 0.5) { /* a rule that does not cap its steps (fixed) */
         sbc_ctl_diverged(c, &nrm, "a correction moved a frame particle by more than half its radius", 0, err);
         return SBC_EVENT_FAILED;

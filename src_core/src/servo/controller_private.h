@@ -32,6 +32,8 @@ struct sbc_controller {
     double *a_hat;       /* [3Q] mixed: the boundary forces with the top's traction components at their targets */
     sbc_settings s;
     const sbc_update_rule *rule; /* the update rule of s.update (update_rules.h) */
+    sbc_newton_fn newton;        /* update newton: the host's correction (sbc_controller_set_newton) */
+    void *newton_data;
     double dt;           /* s */
     double kn;           /* the host's normal contact stiffness, N/m (0: unknown) */
     sbc_motion motion;   /* the frame's travel to the commands (motion.h) */
@@ -87,7 +89,8 @@ int sbc_ctl_certified(const sbc_controller *c, const sbc_snapshot *snap, sbc_err
 
 /* controller_update.c: the update rules (fixed, secant) and eq. 15 under (T) */
 void sbc_ctl_restore_eq15(sbc_controller *c);
-void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n);
+sbc_status sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error *err);
+sbc_status sbc_ctl_newton_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error *err);
 void sbc_ctl_secant_start(sbc_controller *c);
 
 #endif

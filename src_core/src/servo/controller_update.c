@@ -63,7 +63,7 @@ void sbc_ctl_restore_eq15(sbc_controller *c)
  * halves. The first correction of an increment keeps the factor of the last
  * one. No frame particle moves more than SECANT_MAX_STEP of its radius in one
  * correction, which also bounds the first step whatever the gains. */
-void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n)
+sbc_status sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error *err)
 {
     const sbc_frame *f = c->frame;
     double dd = 0.0, dy = 0.0, yy = 0.0, lam = c->secant.lambda, cap = DBL_MAX;
@@ -103,6 +103,50 @@ void sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n)
     for (k = 0; k < c->rot * f->n; ++k)
         c->dtheta[k] *= lam;
     n->max_step *= lam;
+    (void)err;
+    return SBC_OK;
+}
+
+/* update newton: the correction is the host's (sbc_newton_fn): the frame's
+ * move that balances its reactions on the linearized contact network with
+ * the interior condensed out, in place of servo.c's fixed-gain one; no frame
+ * particle moves more than NEWTON_MAX_STEP of its radius (the whole
+ * correction scaled down alike), for a network that changes on the way
+ * (contacts opening, closing or sliding). */
+sbc_status sbc_ctl_newton_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error *err)
+{
+    const sbc_frame *f = c->frame;
+    char message[SBC_ERROR_LEN] = "";
+    double largest = 0.0, factor = 1.0;
+    int q, k, status;
+    if (!c->newton)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: keyword 'update': newton needs the host's contact network, "
+                        "which this host does not give (the embedded runner and the material point do)",
+                        sbc_bc_name(c->s.bc));
+    status = c->newton(c->newton_data, c->a, c->m, c->du, c->dtheta, message, sizeof message);
+    if (status != SBC_OK)
+        return sbc_fail(err, (sbc_status)status, "servo_bc %s: increment %d, iteration %d: update newton: %s",
+                        sbc_bc_name(c->s.bc), c->increment, c->iteration, message);
+    for (q = 0; q < f->n; ++q) {
+        double len = 0.0;
+        for (k = 0; k < f->dim; ++k)
+            len += c->du[3 * q + k] * c->du[3 * q + k];
+        for (k = 0; k < c->rot; ++k)
+            len += f->R[q] * f->R[q] * c->dtheta[c->rot * q + k] * c->dtheta[c->rot * q + k];
+        if (!isfinite(len))
+            return sbc_fail(err, SBC_ERR_NUMERIC, "servo_bc %s: increment %d, iteration %d: update newton: a "
+                            "non-finite correction of frame particle %d", sbc_bc_name(c->s.bc), c->increment,
+                            c->iteration, q);
+        largest = fmax(largest, sqrt(len) / f->R[q]);
+    }
+    if (largest > NEWTON_MAX_STEP)
+        factor = NEWTON_MAX_STEP / largest;
+    for (k = 0; k < 3 * f->n; ++k)
+        c->du[k] *= factor;
+    for (k = 0; k < c->rot * f->n; ++k)
+        c->dtheta[k] *= factor;
+    n->max_step = largest * factor;
+    return SBC_OK;
 }
 
 /* update secant: a new increment keeps the factor and forgets the last

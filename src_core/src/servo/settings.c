@@ -340,7 +340,10 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
         } else if (strcmp(key, "update") == 0) {
             const char *w = next_word(&c, "mode", &st);
             const sbc_update_rule *rule = w ? sbc_update_rule_named(w) : NULL;
-            if (rule) {
+            if (rule && rule->id == SBC_UPDATE_NEWTON && s->bc == SBC_BC_MIXED) {
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'update': newton takes (P) and (T); mixed conditions "
+                              "take fixed or secant");
+            } else if (rule) {
                 s->update = rule->id;
             } else if (w) {
                 char names[64];

@@ -12,6 +12,9 @@
 #define LOOSE_FRAME_TOL 1e-5
 /* update secant: no frame particle moves more than this many radii in one correction */
 #define SECANT_MAX_STEP 0.002
+/* update newton: the largest correction of a frame particle, of its radius
+   (controller_update.c) */
+#define NEWTON_MAX_STEP 0.05
 /* update secant with kn known: the factor on the scale-free corrections stays in [MIN, MAX] */
 #define SECANT_LAMBDA_MIN 1e-2
 #define SECANT_LAMBDA_MAX 1e2

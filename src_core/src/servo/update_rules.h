@@ -30,8 +30,9 @@ typedef struct sbc_update_rule {
     int keeps_eq15;         /* under (T), the frame is put back on the imposed F after each
                                correction (controller_update.c) */
     /* the correction du, dtheta of the controller scaled as the rule takes it,
-       n->max_step with it; NULL: as servo.c computed it */
-    void (*scale)(struct sbc_controller *c, sbc_servo_norms *n);
+       n->max_step with it; NULL: as servo.c computed it. SBC_OK, or a status
+       with the message in err (the run stops) */
+    sbc_status (*scale)(struct sbc_controller *c, sbc_servo_norms *n, sbc_error *err);
     /* a new increment begins (the rule's state); NULL: nothing to do */
     void (*start)(struct sbc_controller *c);
 } sbc_update_rule;
@@ -42,7 +43,7 @@ const sbc_update_rule *sbc_update_rule_of(sbc_update id);
 /* The row named name (keyword `update`); NULL when there is none. */
 const sbc_update_rule *sbc_update_rule_named(const char *name);
 
-/* "fixed or secant": the rules' names, for an error's "expected". */
+/* "fixed, secant or newton": the rules' names, for an error's "expected". */
 void sbc_update_rule_names(char *out, size_t cap);
 
 #endif
