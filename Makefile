@@ -126,6 +126,7 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B
 	bash tests/replicas.sh $(B)
 	bash tests/traction_irregular.sh $(B)
 	bash tests/remap.sh $(B)
+	bash tests/newton.sh $(B)
 
 check-sanitize: $(B)/run_tests_san $(B)/servo-bc $(B)/servo-bc-plot $(FUZZ_REPLAY) $(B)/fuzz/corpus/restart/seed.bin
 	ASAN_OPTIONS=detect_leaks=1 $(B)/run_tests_san $(B)/servo-bc

@@ -280,6 +280,7 @@ static void bad_input(void)
     refused("D frame ring", 3, ring, "frame");
     refused("D file /dev/null/dir/x.csv", 0, NULL, "cannot write '/dev/null/dir/x.csv'");
     refused("P tangent condensed C.csv", 0, NULL, "keyword 'tangent' (condensed C.csv) is the embedded runner's");
+    refused("P update newton", 0, NULL, "keyword 'update': newton needs the host's linearized contact network");
 }
 
 /* sbc_host_warning: the words' note and the time step's, one per line; a

@@ -1,11 +1,15 @@
 /* The embedded engines as an aggregate's operations (aggregate.h), and the
  * host steps of one increment. */
 #include "aggregate.h"
+#include "condensed.h"
 
 #include "sbc/embedded/engine.h"
 #include "sbc/embedded/spheres.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 static void *discs_create(const sbc_point_def *d, const sbc_settings *s, sbc_error *err)
 {
@@ -87,6 +91,53 @@ const sbc_engine_ops sbc_engine_ops_spheres = {3, spheres_create, spheres_free, 
                                      spheres_forces, spheres_move, spheres_masses, spheres_dt, spheres_size,
                                      spheres_save, spheres_load, spheres_pairs, spheres_pair, spheres_centres,
                                      spheres_radii};
+
+sbc_status sbc_aggregate_network(const sbc_aggregate *a, sbc_network *net, int **ij, double **fs, sbc_error *err)
+{
+    const int npair = a->ops->pair_count(a->engine);
+    int k;
+    *ij = malloc(sizeof **ij * 2 * (size_t)(npair > 0 ? npair : 1));
+    *fs = malloc(sizeof **fs * 3 * (size_t)(npair > 0 ? npair : 1));
+    if (!*ij || !*fs)
+        return sbc_fail(err, SBC_ERR_NOMEM, "contact network: out of memory for %d pairs", npair);
+    for (k = 0; k < npair; ++k) {
+        int pair[2];
+        a->ops->pair(a->engine, k, pair, &(*fs)[3 * k]);
+        (*ij)[k] = pair[0];
+        (*ij)[npair + k] = pair[1];
+    }
+    memset(net, 0, sizeof *net);
+    net->dim = a->frame->dim;
+    net->n = a->n;
+    net->x = a->ops->centres(a->engine);
+    net->r = a->ops->radii(a->engine);
+    net->npair = npair;
+    net->i = *ij;
+    net->j = *ij + npair;
+    net->fs = *fs;
+    net->law = a->law;
+    return SBC_OK;
+}
+
+int sbc_aggregate_newton(void *aggregate, const double *reaction, const double *moment, double *du, double *dtheta,
+                         char *message, size_t cap)
+{
+    const sbc_aggregate *a = aggregate;
+    int *ij = NULL, mechanisms;
+    double *fs = NULL;
+    sbc_network net;
+    sbc_error err;
+    sbc_status st;
+    sbc_error_clear(&err);
+    if ((st = sbc_aggregate_network(a, &net, &ij, &fs, &err)) == SBC_OK)
+        st = sbc_condensed_correction(&net, a->frame, a->settings->bc, reaction, moment, du, dtheta, &mechanisms,
+                                      &err);
+    free(ij);
+    free(fs);
+    if (st != SBC_OK)
+        snprintf(message, cap, "%s", err.message);
+    return st;
+}
 
 sbc_driver_callbacks sbc_aggregate_callbacks(const sbc_aggregate *a)
 {

@@ -68,6 +68,12 @@ sbc_driver_callbacks sbc_aggregate_callbacks(const sbc_aggregate *a);
 int sbc_aggregate_newton(void *aggregate, const double *reaction, const double *moment, double *du, double *dtheta,
                          char *message, size_t cap);
 
+/* The engine's contact network (host/condensed.h) into net; its pair
+ * arrays in *ij, *fs, which the caller frees (also on failure). */
+struct sbc_network;
+sbc_status sbc_aggregate_network(const sbc_aggregate *a, struct sbc_network *net, int **ij, double **fs,
+                                 sbc_error *err);
+
 /* The affine tangent at F (material_point.h, sbc_point_tangent_affine). */
 sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], double C[81], sbc_error *err);
 

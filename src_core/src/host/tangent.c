@@ -51,34 +51,6 @@ sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], doubl
     return SBC_OK;
 }
 
-/* the engine's contact network (condensed.h) into net, its pair arrays in *ij, *fs (freed by the caller) */
-static sbc_status network_of(const sbc_aggregate *a, sbc_network *net, int **ij, double **fs, sbc_error *err)
-{
-    const int npair = a->ops->pair_count(a->engine);
-    int k;
-    *ij = malloc(sizeof **ij * 2 * (size_t)(npair > 0 ? npair : 1));
-    *fs = malloc(sizeof **fs * 3 * (size_t)(npair > 0 ? npair : 1));
-    if (!*ij || !*fs)
-        return sbc_fail(err, SBC_ERR_NOMEM, "contact network: out of memory for %d pairs", npair);
-    for (k = 0; k < npair; ++k) {
-        int pair[2];
-        a->ops->pair(a->engine, k, pair, &(*fs)[3 * k]);
-        (*ij)[k] = pair[0];
-        (*ij)[npair + k] = pair[1];
-    }
-    memset(net, 0, sizeof *net);
-    net->dim = a->frame->dim;
-    net->n = a->n;
-    net->x = a->ops->centres(a->engine);
-    net->r = a->ops->radii(a->engine);
-    net->npair = npair;
-    net->i = *ij;
-    net->j = *ij + npair;
-    net->fs = *fs;
-    net->law = a->law;
-    return SBC_OK;
-}
-
 sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, double C[81], int *mechanisms, sbc_error *err)
 {
     int *ij = NULL, ignored;
@@ -89,30 +61,10 @@ sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, double C[81], int *me
         mechanisms = &ignored;
     memset(C, 0, sizeof(double) * 81);
     *mechanisms = 0;
-    if ((st = network_of(a, &net, &ij, &fs, err)) == SBC_OK)
+    if ((st = sbc_aggregate_network(a, &net, &ij, &fs, err)) == SBC_OK)
         st = sbc_condensed_tangent(&net, a->frame, a->settings->bc, C, mechanisms, err);
     free(ij);
     free(fs);
-    return st;
-}
-
-int sbc_aggregate_newton(void *aggregate, const double *reaction, const double *moment, double *du, double *dtheta,
-                         char *message, size_t cap)
-{
-    const sbc_aggregate *a = aggregate;
-    int *ij = NULL, mechanisms;
-    double *fs = NULL;
-    sbc_network net;
-    sbc_error err;
-    sbc_status st;
-    sbc_error_clear(&err);
-    if ((st = network_of(a, &net, &ij, &fs, &err)) == SBC_OK)
-        st = sbc_condensed_correction(&net, a->frame, a->settings->bc, reaction, moment, du, dtheta, &mechanisms,
-                                      &err);
-    free(ij);
-    free(fs);
-    if (st != SBC_OK)
-        snprintf(message, cap, "%s", err.message);
     return st;
 }
 

@@ -49,6 +49,8 @@ struct sbc_controller {
     double *x_prev;      /* [3Q] converged positions of the previous increment (prediction), m */
     double *du, *dtheta; /* [3Q], [rot Q] servo corrections, m, rad */
     sbc_secant secant;   /* the secant update's state (update_rules.h) */
+    double newton_best;  /* update newton: the smallest relative force residual of the increment so far */
+    int newton_stalled;  /* ... the corrections since it fell; NEWTON_PATIENCE of them: secant for the rest */
     double F_prev[9];    /* F imposed at the previous increment */
     double F_now[9];     /* F imposed at this increment */
     int total;           /* increments of the whole path, sbc_settings_total_increments */
@@ -91,6 +93,7 @@ int sbc_ctl_certified(const sbc_controller *c, const sbc_snapshot *snap, sbc_err
 void sbc_ctl_restore_eq15(sbc_controller *c);
 sbc_status sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error *err);
 sbc_status sbc_ctl_newton_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error *err);
+void sbc_ctl_newton_start(sbc_controller *c);
 void sbc_ctl_secant_start(sbc_controller *c);
 
 #endif

@@ -53,17 +53,17 @@ void sbc_ctl_restore_eq15(sbc_controller *c)
     }
 }
 
-/* update secant: scales the fixed-gain correction d_k (du, R dtheta of every
- * frame particle, m) by lambda_k. Within an increment, from the previous
- * correction d_(k-1) and its factor, the Barzilai-Borwein step of the
- * preconditioned iteration x <- x + lambda d(x):
+/* Scales the correction d_k (du, R dtheta of every frame particle, m) by
+ * lambda_k. Within an increment, from the previous correction d_(k-1) and
+ * its factor, the Barzilai-Borwein step of the preconditioned iteration
+ * x <- x + lambda d(x):
  *   s = lambda_(k-1) d_(k-1),  y = d_(k-1) - d_k  (~ P J s),
  *   lambda_k = s.y / y.y = lambda_(k-1) d_(k-1).(d_(k-1) - d_k) / |d_(k-1) - d_k|^2,
  * when s.y > 0; when s.y <= 0 (the residual did not fall along s) lambda
- * halves. The first correction of an increment keeps the factor of the last
- * one. No frame particle moves more than SECANT_MAX_STEP of its radius in one
- * correction, which also bounds the first step whatever the gains. */
-sbc_status sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error *err)
+ * halves. The first correction of an increment keeps the factor the rule's
+ * start left. lambda stays in [lo, hi] when hi > 0, and no frame particle
+ * moves more than max_step of its radius in one correction. */
+static void barzilai_borwein(sbc_controller *c, sbc_servo_norms *n, double lo, double hi, double max_step)
 {
     const sbc_frame *f = c->frame;
     double dd = 0.0, dy = 0.0, yy = 0.0, lam = c->secant.lambda, cap = DBL_MAX;
@@ -85,13 +85,13 @@ sbc_status sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error
             yy += y * y;
             prev[k] = d[k];
         }
-        if (len > 0.0 && SECANT_MAX_STEP * f->R[q] / len < cap)
-            cap = SECANT_MAX_STEP * f->R[q] / len;
+        if (len > 0.0 && max_step * f->R[q] / len < cap)
+            cap = max_step * f->R[q] / len;
     }
     if (c->secant.have_prev)
         lam = dy > 0.0 && yy > 0.0 ? c->secant.lambda * dy / yy : 0.5 * c->secant.lambda;
-    if (c->kn > 0.0) /* scale-free first steps (servo.c): the factor stays within two decades of them */
-        lam = fmin(fmax(lam, SECANT_LAMBDA_MIN), SECANT_LAMBDA_MAX);
+    if (hi > 0.0)
+        lam = fmin(fmax(lam, lo), hi);
     if (dd > 0.0) {
         c->secant.lambda = lam = fmin(lam, cap);
     } else {
@@ -103,30 +103,53 @@ sbc_status sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error
     for (k = 0; k < c->rot * f->n; ++k)
         c->dtheta[k] *= lam;
     n->max_step *= lam;
+}
+
+/* update secant: the fixed-gain correction of servo.c scaled by
+ * barzilai_borwein, whose factor an increment takes over from the last; with
+ * kn known (scale-free first steps, servo.c) it stays within two decades of
+ * them; no frame particle moves more than SECANT_MAX_STEP of its radius,
+ * which also bounds the first step whatever the gains. */
+sbc_status sbc_ctl_secant_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error *err)
+{
     (void)err;
+    barzilai_borwein(c, n, c->kn > 0.0 ? SECANT_LAMBDA_MIN : 0.0, c->kn > 0.0 ? SECANT_LAMBDA_MAX : 0.0,
+                     SECANT_MAX_STEP);
     return SBC_OK;
 }
 
 /* update newton: the correction is the host's (sbc_newton_fn): the frame's
  * move that balances its reactions on the linearized contact network with
- * the interior condensed out, in place of servo.c's fixed-gain one; no frame
- * particle moves more than NEWTON_MAX_STEP of its radius (the whole
- * correction scaled down alike), for a network that changes on the way
- * (contacts opening, closing or sliding). */
+ * the interior condensed out, in place of servo.c's fixed-gain one, scaled
+ * by barzilai_borwein from 1 at each increment's start (1 for a network
+ * that stays linear; less where contacts open, close or slide on the way),
+ * within [NEWTON_LAMBDA_MIN, 1], no frame particle moving more than
+ * NEWTON_MAX_STEP of its radius. Where the linearization leads nowhere
+ * (NEWTON_PATIENCE corrections without a new smallest force residual: contacts
+ * sliding far within the increment), the increment goes on with the secant
+ * update from its first step. */
 sbc_status sbc_ctl_newton_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error *err)
 {
     const sbc_frame *f = c->frame;
     char message[SBC_ERROR_LEN] = "";
-    double largest = 0.0, factor = 1.0;
+    double largest = 0.0;
     int q, k, status;
+    if (c->norms.relative_force < c->newton_best) {
+        c->newton_best = c->norms.relative_force;
+        c->newton_stalled = 0;
+    } else if (++c->newton_stalled == NEWTON_PATIENCE) { /* the secant update from its first step */
+        c->secant.have_prev = 0;
+        c->secant.lambda = 1.0;
+    }
+    if (c->newton_stalled >= NEWTON_PATIENCE)
+        return sbc_ctl_secant_scale(c, n, err);
     if (!c->newton)
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: keyword 'update': newton needs the host's contact network, "
-                        "which this host does not give (the embedded runner and the material point do)",
-                        sbc_bc_name(c->s.bc));
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: keyword 'update': newton needs the host's contact network, "
+                        "which this host does not give (the embedded runner and the material point do)");
     status = c->newton(c->newton_data, c->a, c->m, c->du, c->dtheta, message, sizeof message);
     if (status != SBC_OK)
-        return sbc_fail(err, (sbc_status)status, "servo_bc %s: increment %d, iteration %d: update newton: %s",
-                        sbc_bc_name(c->s.bc), c->increment, c->iteration, message);
+        return sbc_fail(err, (sbc_status)status, "servo_bc: increment %d, iteration %d: update newton: %s",
+                        c->increment, c->iteration, message);
     for (q = 0; q < f->n; ++q) {
         double len = 0.0;
         for (k = 0; k < f->dim; ++k)
@@ -134,19 +157,22 @@ sbc_status sbc_ctl_newton_scale(sbc_controller *c, sbc_servo_norms *n, sbc_error
         for (k = 0; k < c->rot; ++k)
             len += f->R[q] * f->R[q] * c->dtheta[c->rot * q + k] * c->dtheta[c->rot * q + k];
         if (!isfinite(len))
-            return sbc_fail(err, SBC_ERR_NUMERIC, "servo_bc %s: increment %d, iteration %d: update newton: a "
-                            "non-finite correction of frame particle %d", sbc_bc_name(c->s.bc), c->increment,
-                            c->iteration, q);
+            return sbc_fail(err, SBC_ERR_NUMERIC, "servo_bc: increment %d, iteration %d: update newton: a "
+                            "non-finite correction of frame particle %d", c->increment, c->iteration, q);
         largest = fmax(largest, sqrt(len) / f->R[q]);
     }
-    if (largest > NEWTON_MAX_STEP)
-        factor = NEWTON_MAX_STEP / largest;
-    for (k = 0; k < 3 * f->n; ++k)
-        c->du[k] *= factor;
-    for (k = 0; k < c->rot * f->n; ++k)
-        c->dtheta[k] *= factor;
-    n->max_step = largest * factor;
+    n->max_step = largest;
+    barzilai_borwein(c, n, NEWTON_LAMBDA_MIN, 1.0, NEWTON_MAX_STEP);
     return SBC_OK;
+}
+
+/* update newton: each increment starts from the full Newton step */
+void sbc_ctl_newton_start(sbc_controller *c)
+{
+    c->secant.have_prev = 0;
+    c->secant.lambda = 1.0;
+    c->newton_best = HUGE_VAL;
+    c->newton_stalled = 0;
 }
 
 /* update secant: a new increment keeps the factor and forgets the last

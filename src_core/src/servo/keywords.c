@@ -78,10 +78,13 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
      "mixed only, 3D: how the x, y and z displacement of that face's particles are controlled (see \"Mixed\")",
      "P P P on xlo xhi ylo yhi, D D D on zlo, D D T on zhi"},
     {"update",
-     "`fixed` or `secant`",
+     "`fixed`, `secant` or `newton`",
      "`fixed`: the corrections of eqs. 33, 34, 36, 48 with the gains as given; `secant`: corrections with "
          "scale-free first steps (1/(4 kn) per ± pair, 1/(2 kn) per particle, 1/(4 kn R²) per rotation) scaled "
          "by a Barzilai–Borwein factor learned from the last two iterations, at most 0.002 R per correction; "
+         "`newton` ((P), (T); the embedded runner and the material point): the correction that balances the "
+         "frame on the linearized contact network with the interior condensed out, scaled by the same factor "
+         "from 1, at most 0.05 R (see \"Newton\"); "
          "under (T), each correction is followed by restoring eq. 15 exactly (see below)",
      "preset (secant)"},
     {"tol_relative",

@@ -15,6 +15,11 @@
 /* update newton: the largest correction of a frame particle, of its radius
    (controller_update.c) */
 #define NEWTON_MAX_STEP 0.05
+/* update newton: the smallest factor on the Newton step (controller_update.c) */
+#define NEWTON_LAMBDA_MIN 1e-2
+/* update newton: corrections without a new smallest force residual before
+   the increment goes on with the secant update (controller_update.c) */
+#define NEWTON_PATIENCE 8
 /* update secant with kn known: the factor on the scale-free corrections stays in [MIN, MAX] */
 #define SECANT_LAMBDA_MIN 1e-2
 #define SECANT_LAMBDA_MAX 1e2

@@ -13,7 +13,7 @@ static const sbc_update_rule rules[] = {
     /* those corrections scaled by a Barzilai-Borwein factor (controller_update.c) */
     {SBC_UPDATE_SECANT, "secant", 1, 1, 1, sbc_ctl_secant_scale, sbc_ctl_secant_start},
     /* the host's Newton correction from its linearized contact network (controller_update.c) */
-    {SBC_UPDATE_NEWTON, "newton", 1, 1, 1, sbc_ctl_newton_scale, NULL},
+    {SBC_UPDATE_NEWTON, "newton", 1, 1, 1, sbc_ctl_newton_scale, sbc_ctl_newton_start},
 };
 
 enum { RULES = (int)(sizeof rules / sizeof rules[0]) };
