@@ -64,7 +64,7 @@ static const bad_case cases[] = {
     {"servo_bc D stress P22 -1e6 6\n", {"bad:1:", "keyword 'stress'", "mixed"}},
     {"servo_bc D gain_force 0\n", {"bad:1:", "keyword 'gain_force'", "'0'"}},
     {"servo_bc D predict 2\n", {"bad:1:", "keyword 'predict'", "[0, 1]"}},
-    {"servo_bc P update newton\n", {"bad:1:", "keyword 'update': mode 'newton'", "fixed or secant"}},
+    {"servo_bc P update newtonian\n", {"bad:1:", "keyword 'update': mode 'newtonian'", "fixed, secant or newton"}},
     {"servo_bc P update\n", {"bad:1:", "keyword 'update'", "missing mode"}},
     {"servo_bc P tol_relative -1e-3\n", {"bad:1:", "keyword 'tol_relative'", "a real >= 0"}},
     {"servo_bc P accuracy quick\n", {"bad:1:", "preset 'quick'", "fast, balanced, paper or tight"}},

@@ -86,6 +86,12 @@ sbc_host *sbc_host_create(const char *words, int dim, int n, const double *x, co
                  sbc_tangent_name(h->settings.tangent), h->settings.tangent_file);
         return fail_create(h, &err, msg, cap);
     }
+    if (h->settings.update == SBC_UPDATE_NEWTON && h->settings.bc != SBC_BC_D) {
+        sbc_fail(&err, SBC_ERR_INPUT, "servo_bc %s: keyword 'update': newton needs the host's linearized contact "
+                 "network, which the embedded runner and the material point give and this host does not (expected "
+                 "fixed or secant)", sbc_bc_name(h->settings.bc));
+        return fail_create(h, &err, msg, cap);
+    }
     if (n < 4) {
         sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: %d particles given; a frame needs at least 4", n);
         return fail_create(h, &err, msg, cap);
