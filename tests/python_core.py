@@ -9,7 +9,7 @@ import subprocess
 import sys
 import tempfile
 
-lib_path, runner = sys.argv[1], sys.argv[2]
+lib_path, runner = sys.argv[1], os.path.abspath(sys.argv[2])
 os.environ['SERVO_BC_LIB'] = os.path.abspath(lib_path)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'yade_adapter'))
 import servo_bc_core as core  # noqa: E402
@@ -89,5 +89,49 @@ try:
     check(False, 'material point: F in the words refused')
 except core.ServoBCError as e:
     check("keyword 'F'" in str(e), 'material point: F in the words refused: %s' % e)
+
+# converged but not certified: a 60-disc frictionless irregular packing under (T) at `tight` converges at F = I
+# and after a step, but its states miss the stated accuracy (|hill_mandel| 1e-4 > 1e-6): the runner stops, the
+# material point goes on and says so
+with tempfile.TemporaryDirectory() as tmp:
+    packing = os.path.join(tmp, 'irregular.txt')
+    with open(os.path.join(tmp, 'make.sbc'), 'w') as f:
+        f.write('dimension 2\ngenerate periodic n0 60 rmin 1e-3 polydispersity 2 seed 3 strain 0.01\n'
+                'write_packing text %s\n' % packing)
+    subprocess.run([runner, 'make.sbc'], cwd=tmp, check=True, capture_output=True)
+    with open(os.path.join(tmp, 'run.sbc'), 'w') as f:
+        f.write('dimension 2\nread_packing %s\ncontact frictional kn 1e4 ks 0 mu 0\ndensity 2e3\ntimestep 1e-5\n'
+                'servo_bc T F 0.9995 0.0005 0 0.9998 accuracy tight\nrun\n' % packing)
+    stopped = subprocess.run([runner, 'run.sbc'], cwd=tmp, capture_output=True, text=True)
+    x, r, box = [], [], None
+    for line in open(packing):
+        w = line.split()
+        if w and w[0] == 'box':
+            box = [float(v) for v in w[1:5]]
+        elif w and not w[0].startswith('#'):
+            x += [float(v) for v in w[:2]]
+            r.append(float(w[2]))
+check(stopped.returncode != 0 and 'cannot be certified' in stopped.stdout + stopped.stderr,
+      'uncertified: the runner stops on the 60-disc frictionless packing under (T), tight')
+point = core.MaterialPoint(x, r, 'T accuracy tight', kn=1e4, density=2e3, dt=1e-5, box=box)
+created = point.certified()
+ok, P, ratio = point.integrate([0.9995, 0.0005, 0, 0, 0.9998, 0, 0, 0, 1])
+check(not created and not ok and point.status == 'uncertified' and 'cannot be certified' in point.message and
+      ratio == 0.5 and all(v == v and abs(v) < 1e30 for v in P) and P[0] < 0 and not point.certified(),
+      'uncertified: the material point is created and integrates, status %s, P11 %.6g N/m, ratio %g: %s'
+      % (point.status, P[0], ratio, point.message[:90]))
+point.commit()
+saved = point.state()
+twin = core.MaterialPoint(x, r, 'T accuracy tight', kn=1e4, density=2e3, dt=1e-5, box=box)
+created_size = len(twin.state())
+twin.load(saved)
+F2 = [0.9993, 0.0007, 0, 0, 0.9997, 0, 0, 0, 1]
+check(len(saved) != created_size and point.integrate(F2)[1] == twin.integrate(F2)[1],
+      'material point: a committed state of %d values (created with %d: the pair list grew) into a new point, '
+      'which continues bit for bit' % (len(saved) // 8, created_size // 8))
+again = core.MaterialPoint(words='P accuracy balanced', **lattice)
+ok, P, ratio = again.integrate([0.999, 0, 0, 0, 0.999, 0, 0, 0, 1])
+check(ok and again.status == 'converged' and again.certified() and ratio == 1.0,
+      'uncertified: a certified increment says converged (the 5 x 5 lattice under (P))')
 print('%d passed, %d failed' % (passed, failed))
 sys.exit(failed > 0)

@@ -114,7 +114,8 @@ def _load():
         'sbc_point_create': (P, [ctypes.POINTER(PointDef), P]),
         'sbc_point_free': (None, [P]),
         'sbc_point_integrate': (I, [P, pd, pd, pd, P]),
-        'sbc_point_commit': (None, [P]),
+        'sbc_point_certified': (I, [P]),
+        'sbc_point_commit': (I, [P]),
         'sbc_point_revert': (None, [P]),
         'sbc_point_state_size': (ctypes.c_size_t, [P]),
         'sbc_point_save': (None, [P, pd]),
@@ -171,9 +172,15 @@ class _Error(ctypes.Structure):
     _fields_ = [('status', ctypes.c_int), ('message', ctypes.c_char * 512)]   # SBC_ERROR_LEN
 
 
+# sbc_point_status by value (material_point.h)
+POINT_STATUS = ('converged', 'failed', 'uncertified')
+
+
 class MaterialPoint:
     """The aggregate as a material point (material_point.h, docs/fe2.md): a packing (x [dim n], dim 2 or 3)
-    under (D), (P) or (T) on an embedded engine. integrate(F) -> (converged, P, step_ratio) from the committed state; commit(),
+    under (D), (P) or (T) on an embedded engine. integrate(F) -> (converged, P, step_ratio) from the committed state
+    (converged: certified at the words' accuracy; self.status 'converged', 'uncertified' (P stands, the reason in
+    self.message) or 'failed'; certified() of the current state); commit(),
     revert(); state() -> bytes of the committed state, load(bytes) in a point made alike; tangent(h) -> C
     (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation, tangent() the affine one, condensed()
     the condensed one. F and P:
@@ -197,10 +204,15 @@ class MaterialPoint:
         P, ratio, err = (ctypes.c_double * 9)(), ctypes.c_double(), _Error()
         status = library().sbc_point_integrate(self._p, doubles(F), P, ctypes.byref(ratio), ctypes.byref(err))
         self.message = err.message.decode() if status else ''
+        self.status = POINT_STATUS[status]
         return status == 0, list(P), ratio.value
 
+    def certified(self):
+        return bool(library().sbc_point_certified(self._p))
+
     def commit(self):
-        library().sbc_point_commit(self._p)
+        if library().sbc_point_commit(self._p):
+            raise ServoBCError('material point: out of memory for its committed state')
 
     def revert(self):
         library().sbc_point_revert(self._p)

@@ -169,6 +169,15 @@ sbc_status sbc_controller_branch(sbc_controller *c, const double F[9], sbc_error
  * call, or after sbc_controller_aim before the first step. */
 int sbc_controller_remap(const sbc_controller *c, double M[9], double origin[3]);
 
+/* A material point's choice (material_point.h): an increment whose
+ * converged state cannot be certified at the words' accuracy (the checks of
+ * docs/servo_bc.md, "Certified rows") is accepted all the same instead of
+ * SBC_EVENT_FAILED; sbc_controller_uncertified then returns 1 with the
+ * reason (the failure's message) in why [cap], until the next acceptance.
+ * Not part of the saved state. */
+void sbc_controller_accept_uncertified(sbc_controller *c, int yes);
+int sbc_controller_uncertified(const sbc_controller *c, char *why, size_t cap);
+
 /* update newton: the host's correction of the frame, du [3Q] (m) and
  * dtheta [rQ] (rad), that balances the frame's reactions a [3Q] (N, eq. 5)
  * and moments m [rQ] (N m) on its linearized contact network with the

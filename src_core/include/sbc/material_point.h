@@ -53,25 +53,36 @@ sbc_point_def sbc_point_def_default(void);
 typedef struct sbc_point sbc_point;
 
 /* Builds the engine, the frame and the controller, relaxes the packing at
- * F = I and commits that state. NULL with the message in err. */
+ * F = I and commits that state (certified or not: sbc_point_certified).
+ * NULL with the message in err. */
 sbc_point *sbc_point_create(const sbc_point_def *def, sbc_error *err);
 void sbc_point_free(sbc_point *p);
 
 typedef enum sbc_point_status {
     SBC_POINT_CONVERGED = 0, /* the increment converged and its state is certified at the words' accuracy */
-    SBC_POINT_FAILED         /* the controller stopped (message in err); the point is back at its committed state */
+    SBC_POINT_FAILED,        /* the controller stopped (message in err); the point is back at its committed state */
+    SBC_POINT_UNCERTIFIED    /* the increment converged, but its state cannot be certified at the words' accuracy
+                                (the reason in err, as the runner would stop with it): P stands and the state may be
+                                committed; step ratio 0.5 suggests a smaller step that may certify */
 } sbc_point_status;
 
 /* One increment from the committed state to F (3 x 3 slots, the dim x dim
  * block read): P (3 x 3 slots, N/m in 2D, N/m^2 in 3D) and a suggested step ratio (1
- * when converged; 0.5 when failed: retry with a step that much smaller).
+ * when converged; 0.5 when failed or uncertified: retry with a step that much smaller).
  * Never aborts. The point then holds the new state until commit or revert;
  * a second integrate starts from the committed state again. */
 sbc_point_status sbc_point_integrate(sbc_point *p, const double F[9], double P[9], double *step_ratio,
                                      sbc_error *err);
 
-/* The state of the last converged integrate becomes the committed one. */
-void sbc_point_commit(sbc_point *p);
+/* 1 when the current state (the last converged integrate since commit or
+ * revert, else the committed one; the creation's at first) is certified at
+ * the words' accuracy, 0 when it was accepted uncertified. */
+int sbc_point_certified(const sbc_point *p);
+
+/* The state of the last converged integrate becomes the committed one.
+ * SBC_OK, or SBC_ERR_NOMEM (the committed state as it was): the state's
+ * size follows the engine's pair list (sbc_point_state_size). */
+sbc_status sbc_point_commit(sbc_point *p);
 
 /* Back to the committed state. */
 void sbc_point_revert(sbc_point *p);
@@ -80,7 +91,8 @@ void sbc_point_revert(sbc_point *p);
 void sbc_point_committed(const sbc_point *p, double F[9], double P[9]);
 
 /* The committed state as doubles (engine, controller, FIRE, F, P), for an
- * FE code to store per integration point: sbc_point_state_size counts them,
+ * FE code to store per integration point: sbc_point_state_size counts them
+ * (it changes with the contacts the committed state has),
  * sbc_point_save writes them, sbc_point_load makes them the committed and
  * current state of a point created from the same definition (in another
  * process too: it continues bit for bit). */
@@ -103,8 +115,9 @@ sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], 
  * [k], on `threads` threads (C11 threads; <= 1: in the calling thread). A
  * point is integrated by one thread, so every result is that of
  * sbc_point_integrate on it alone, bit for bit, whatever the thread count.
- * SBC_OK when every point converged, else the status and message of the
- * first that did not ("point 7: ..."); the others' results stand. */
+ * SBC_OK when every point converged certified, else the status and message
+ * of the first that failed or was not certified ("point 7: ..."); the
+ * others' results stand. */
 sbc_status sbc_points_integrate(sbc_point *const *points, int count, const double *F, double *P, int *status,
                                 double *ratio, int threads, sbc_error *err);
 

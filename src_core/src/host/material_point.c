@@ -31,6 +31,7 @@ struct sbc_point {
     int at_committed;      /* the engine and the controller hold the committed state */
     double F[9], P[9];     /* committed */
     double Fc[9], Pc[9];   /* current: of the last converged integrate since commit or revert, else F, P */
+    int certified, certified_c; /* the committed and the current state certified (sbc_point_certified) */
 };
 
 sbc_point_def sbc_point_def_default(void)
@@ -93,7 +94,14 @@ static sbc_event run_increment(sbc_point *p, int first, sbc_error *err)
 
 size_t sbc_point_state_size(const sbc_point *p) { return p->size; }
 
-/* the current state into out (sbc_point_save's layout) */
+/* the values of the current state (sbc_point_save's layout): the engine's
+   grow and shrink with its pair list */
+static size_t current_size(const sbc_point *p)
+{
+    return 2 + p->a.ops->state_size(p->a.engine) + 1 + sbc_controller_state_size(p->ctl) + 2 + 18;
+}
+
+/* the current state into out [current_size] (sbc_point_save's layout) */
 static void save_current(const sbc_point *p, const double F[9], const double P[9], double *out)
 {
     const size_t ne = p->a.ops->state_size(p->a.engine), nc = sbc_controller_state_size(p->ctl);
@@ -114,14 +122,19 @@ static void save_current(const sbc_point *p, const double F[9], const double P[9
 /* in [n] into the engine, the controller, FIRE, F and P */
 static sbc_status load_state(sbc_point *p, const double *in, size_t n, double F[9], double P[9], sbc_error *err)
 {
-    const size_t ne = p->a.ops->state_size(p->a.engine), nc = sbc_controller_state_size(p->ctl);
+    const size_t nc = sbc_controller_state_size(p->ctl);
+    const double ne_saved = n >= 2 ? in[1] : -1.0;
     sbc_fire_state *fire = sbc_driver_fire(p->driver);
     sbc_saved s;
-    size_t at;
+    size_t at, ne;
     int k;
-    if (n != p->size || in[0] != POINT_STATE_VERSION || in[1] != (double)ne || in[2 + ne] != (double)nc)
+    /* the engine's share is as long as its pair list was (in[1]); the rest is this point's */
+    if (n < 3 + nc + 20 || in[0] != POINT_STATE_VERSION || !(ne_saved >= 0.0) || ne_saved != floor(ne_saved) ||
+        ne_saved != (double)(n - (3 + nc + 20)) || in[2 + (size_t)ne_saved] != (double)nc)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: the saved state (%zu values, version %g) is not one of "
-                        "this point (%zu values, version %g)", n, n > 0 ? in[0] : 0.0, p->size, POINT_STATE_VERSION);
+                        "this point (version %g, %zu controller values)", n, n > 0 ? in[0] : 0.0, POINT_STATE_VERSION,
+                        nc);
+    ne = (size_t)ne_saved;
     if (p->a.ops->load(p->a.engine, in + 2, ne, err) != SBC_OK ||
         sbc_controller_load(p->ctl, in + 3 + ne, nc, err) != SBC_OK)
         return err->status;
@@ -136,12 +149,31 @@ static sbc_status load_state(sbc_point *p, const double *in, size_t n, double F[
     return s.st;
 }
 
-void sbc_point_commit(sbc_point *p)
+int sbc_point_certified(const sbc_point *p) { return p->certified_c; }
+
+/* the committed buffer sized for n values; 0 when out of memory (the buffer as it was) */
+static int committed_room(sbc_point *p, size_t n)
 {
+    double *grown;
+    if (n == p->size && p->committed)
+        return 1;
+    if (!(grown = realloc(p->committed, sizeof(double) * n)))
+        return 0;
+    p->committed = grown;
+    p->size = n;
+    return 1;
+}
+
+sbc_status sbc_point_commit(sbc_point *p)
+{
+    if (!committed_room(p, current_size(p)))
+        return SBC_ERR_NOMEM;
+    p->certified = p->certified_c;
     memcpy(p->F, p->Fc, sizeof p->F);
     memcpy(p->P, p->Pc, sizeof p->P);
     save_current(p, p->F, p->P, p->committed);
     p->at_committed = 1;
+    return SBC_OK;
 }
 
 void sbc_point_revert(sbc_point *p)
@@ -152,6 +184,7 @@ void sbc_point_revert(sbc_point *p)
         return;
     /* a state this point saved itself: it loads */
     load_state(p, p->committed, p->size, F, P, &err);
+    p->certified_c = p->certified;
     memcpy(p->Fc, p->F, sizeof p->F);
     memcpy(p->Pc, p->P, sizeof p->P);
     p->at_committed = 1;
@@ -173,11 +206,17 @@ sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *e
         sbc_point_revert(p);
         return err->status;
     }
+    if (!committed_room(p, n)) { /* the committed state as it was: back to it */
+        p->at_committed = 0;
+        sbc_point_revert(p);
+        return sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory for a state of %zu values", n);
+    }
     memcpy(p->committed, in, sizeof(double) * n);
     memcpy(p->F, F, sizeof F);
     memcpy(p->P, P, sizeof P);
     memcpy(p->Fc, F, sizeof F);
     memcpy(p->Pc, P, sizeof P);
+    p->certified = p->certified_c = 1; /* a saved state is a committed one: the FE code took it */
     p->at_committed = 1;
     return SBC_OK;
 }
@@ -234,21 +273,21 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
     p->a.ops->frame_masses(p->a.engine, p->mass);
     p->a.mass = p->mass;
     cb = sbc_aggregate_callbacks(&p->a);
-    if (!(p->ctl = sbc_controller_create(&p->frame, &p->settings, p->mass, d->dt, d->law.kn, err)) ||
-        !(p->driver = sbc_driver_create(p->ctl, &p->settings, &cb, err)) ||
+    if ((p->ctl = sbc_controller_create(&p->frame, &p->settings, p->mass, d->dt, d->law.kn, err)))
+        sbc_controller_accept_uncertified(p->ctl, 1); /* an FE code is told, and decides (integrate's status) */
+    if (!p->ctl || !(p->driver = sbc_driver_create(p->ctl, &p->settings, &cb, err)) ||
         p->a.ops->forces(p->a.engine, err) != SBC_OK || run_increment(p, 1, err) != SBC_EVENT_FINISHED) {
-        sbc_point_free(p);
-        return NULL;
-    }
-    p->size = 2 + p->a.ops->state_size(p->a.engine) + 1 + sbc_controller_state_size(p->ctl) + 2 + 18;
-    if (!(p->committed = malloc(sizeof(double) * p->size))) {
-        sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
         sbc_point_free(p);
         return NULL;
     }
     memcpy(p->Fc, sbc_controller_result(p->ctl)->F, sizeof p->Fc);
     memcpy(p->Pc, sbc_controller_result(p->ctl)->P, sizeof p->Pc);
-    sbc_point_commit(p);
+    p->certified_c = !sbc_controller_uncertified(p->ctl, NULL, 0);
+    if (sbc_point_commit(p) != SBC_OK) {
+        sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
+        sbc_point_free(p);
+        return NULL;
+    }
     return p;
 }
 
@@ -269,6 +308,11 @@ sbc_point_status sbc_point_integrate(sbc_point *p, const double F[9], double P[9
     memcpy(p->Fc, sbc_controller_result(p->ctl)->F, sizeof p->Fc);
     memcpy(p->Pc, sbc_controller_result(p->ctl)->P, sizeof p->Pc);
     memcpy(P, p->Pc, sizeof(double) * 9);
+    p->certified_c = !sbc_controller_uncertified(p->ctl, err->message, sizeof err->message);
+    if (!p->certified_c) {
+        err->status = SBC_ERR_DIVERGED;
+        return SBC_POINT_UNCERTIFIED; /* the step ratio stays 0.5 */
+    }
     *step_ratio = 1.0;
     return SBC_POINT_CONVERGED;
 }
@@ -277,6 +321,7 @@ sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], 
 {
     const int dim = p->frame.dim;
     double F0[9], Pc[9], F[9], P[2][9], ratio, *current = NULL;
+    size_t current_n = 0;
     int k, l, side, ij;
     sbc_status st = SBC_OK;
     memset(C, 0, sizeof(double) * 81);
@@ -285,7 +330,8 @@ sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], 
     memcpy(F0, p->Fc, sizeof F0);
     memcpy(Pc, p->Pc, sizeof Pc);
     if (!p->at_committed) { /* the current state comes back afterwards */
-        if (!(current = malloc(sizeof(double) * p->size)))
+        current_n = current_size(p);
+        if (!(current = malloc(sizeof(double) * current_n)))
             return sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
         save_current(p, F0, Pc, current);
     }
@@ -304,7 +350,7 @@ sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], 
     if (current) { /* a state this point saved itself: it loads */
         sbc_error ignored;
         double Fs[9], Ps[9];
-        load_state(p, current, p->size, Fs, Ps, &ignored);
+        load_state(p, current, current_n, Fs, Ps, &ignored);
         memcpy(p->Fc, F0, sizeof F0);
         memcpy(p->Pc, Pc, sizeof Pc);
         p->at_committed = 0;

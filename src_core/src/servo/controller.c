@@ -349,6 +349,15 @@ static void F_along_move(const sbc_controller *c, long done, double F[9])
         F[k] = done >= c->motion.steps ? c->F_now[k] : c->F_prev[k] + t * (c->F_now[k] - c->F_prev[k]);
 }
 
+void sbc_controller_accept_uncertified(sbc_controller *c, int yes) { c->accept_uncertified = yes; }
+
+int sbc_controller_uncertified(const sbc_controller *c, char *why, size_t cap)
+{
+    if (c->uncertified && why && cap > 0)
+        snprintf(why, cap, "%s", c->why);
+    return c->uncertified;
+}
+
 void sbc_controller_set_newton(sbc_controller *c, sbc_newton_fn fn, void *user_data)
 {
     c->newton = fn;
@@ -482,8 +491,13 @@ static double residual_ratio(const sbc_controller *c, const sbc_servo_norms *n)
  * the result of increment i; the next increment starts. */
 static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *err)
 {
-    if (measure(c, snap, err) != SBC_OK || !sbc_ctl_certified(c, snap, err))
+    if (measure(c, snap, err) != SBC_OK)
         return SBC_EVENT_FAILED;
+    c->uncertified = !sbc_ctl_certified(c, snap, err);
+    if (c->uncertified && !c->accept_uncertified)
+        return SBC_EVENT_FAILED;
+    if (c->uncertified) /* a material point's: the state stands, with the reason */
+        snprintf(c->why, sizeof c->why, "%s", err->message);
     sbc_relax_path(&c->relax, c->relax.fc_known);
     c->work_path = fmax(c->work_path, sbc_homogenize_work_scale(c->frame->dim, c->result.P, c->result.F));
     c->sigma_path = fmax(c->sigma_path, sbc_ctl_largest_component(c->frame->dim, c->result.sigma));

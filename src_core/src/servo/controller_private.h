@@ -32,6 +32,9 @@ struct sbc_controller {
     double *a_hat;       /* [3Q] mixed: the boundary forces with the top's traction components at their targets */
     sbc_settings s;
     const sbc_update_rule *rule; /* the update rule of s.update (update_rules.h) */
+    int accept_uncertified;      /* sbc_controller_accept_uncertified */
+    int uncertified;             /* the last accepted increment was not certified: why */
+    char why[SBC_ERROR_LEN];
     sbc_newton_fn newton;        /* update newton: the host's correction (sbc_controller_set_newton) */
     void *newton_data;
     double dt;           /* s */
