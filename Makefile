@@ -284,6 +284,8 @@ bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangent
 	$(B)/bench_points 16 10 2
 	$(B)/bench_tangents 5 10 20
 	$(B)/bench_condensed
+	bash bench/newton_servo.sh $(B)/servo-bc
+	bash bench/newton_servo.sh $(B)/servo-bc tight
 	bash bench/remap_scaling.sh $(B)/servo-bc
 	@$(MAKE) --no-print-directory lammps liggghts > $(B)/bench-hosts.log 2>&1 || \
 	  { echo "bench: LAMMPS or LIGGGHTS could not be built (see $(B)/bench-hosts.log)"; exit 0; }; \
