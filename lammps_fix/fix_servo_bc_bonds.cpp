@@ -1,13 +1,14 @@
 /* ----------------------------------------------------------------------
    fix servo_bc/bonds (see fix_servo_bc_bonds.h):
-     fix ID group servo_bc/bonds MODEL E nu alpha [strength FT FS MB MT] [friction MU]   (3D)
+     fix ID group servo_bc/bonds MODEL E nu alpha [strength FT FS MB MT] [friction MU] [breaks FILE]   (3D)
      fix ID group servo_bc/bonds cohesive kn KN ks KS kr KR fn FN fs FS mr MR mu MU   (2D)
    MODEL = beam (Timoshenko beams, E_b = E Pa, nu_b = nu) or parallel
    (parallel bonds, k^n = E / 2 r_min, k^s = k^n / 4.2); bond radius
    alpha r_min; with a strength a bond breaks when eq. 8 in 3D reaches 1
    (bpm_bond.h) and becomes a frictional contact (friction MU). cohesive: the paper's eqs. 7-8 with Table 6's quantities
    (N/m, N/m, N m/rad, N, N, N m, -), eq. 6 after failure. Bonds join the
-   group's particles that touch at the first run.
+   group's particles that touch at the first run. breaks FILE writes a row
+   per broken bond (step,id_a,id_b,x,y,z: the midpoint of its centres, m).
    Outputs: f_ID (scalar) the bonds' strain energy (J, eq. 50 or the beams'
    1/2 u K u; cohesive: eq. 12's Ep of every contact, bonds included);
    f_ID[1] the intact bond count; f_ID[2] eq. 48's critical time step (s;
@@ -30,7 +31,9 @@
 #include "force.h"
 #include "pair.h"
 #include "group.h"
+#include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <algorithm>
@@ -45,8 +48,10 @@ using namespace FixConst;
 
 FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), strength{0.0, 0.0, 0.0, 0.0, 0.0}, failure(false), kn(0.0),
-    bonds(nullptr), contacts(nullptr), n(0), dim(3), last_step(-1), reported(-1), kinetic(0.0), external_work(0.0),
-    have_prev(false)
+    bonds(nullptr), contacts(nullptr), n(0), dim(3), reported(-1), last_step(-1), rmin(0.0), maxb(0), per(0),
+    width(0), critical_dt(0.0), formed(0), slot(nullptr), carry(nullptr), step_load(nullptr), step_motion(nullptr), partner_at(nullptr),
+    nmax_slots(0), have_prev(false), restarted(false), longest(0.0), reduced_at(-1), sums{0.0, 0.0, 0.0, 0.0, 0.0},
+    kinetic_mine(0.0), breaks_fp(nullptr)
 {
   law = sbc_cohesive_default();
   if (narg < 4) fail("expected a model after the style (beam, parallel or cohesive)");
@@ -74,7 +79,8 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     bool have_strength = false, have_friction = false;
     for (int k = 7; k < narg;) {
       const std::string key = arg[k];
-      if ((key == "strength" && have_strength) || (key == "friction" && have_friction))
+      if ((key == "strength" && have_strength) || (key == "friction" && have_friction) ||
+          (key == "breaks" && !breaks_file.empty()))
         fail("keyword " + key + " given twice (each keyword once)");
       if (key == "strength") {
         have_strength = true;
@@ -93,8 +99,13 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
         strength[4] = number("friction", arg[k + 1]);
         if (!(strength[4] >= 0.0)) fail(std::string("keyword friction: ") + arg[k + 1] + " (expected >= 0)");
         k += 2;
+      } else if (key == "breaks") {
+        if (k + 1 >= narg) fail("keyword breaks needs a file name");
+        breaks_file = arg[k + 1];
+        if (breaks_file.empty()) fail("keyword breaks: an empty file name");
+        k += 2;
       } else
-        fail("unknown keyword '" + key + "' (expected strength or friction)");
+        fail("unknown keyword '" + key + "' (expected strength, friction or breaks)");
     }
   }
   if (!atom->sphere_flag) fail("requires atom_style sphere");
@@ -105,6 +116,16 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     fail(dim == 3 ? "requires a 3d box (the bond models are 3D)"
                   : "cohesive requires a 2d box (the paper's cohesive bonds are 2D: dimension 2)");
   restart_global = 1;
+  if (dim == 3) {    // the bonds' per-atom slots
+    restart_peratom = 1;
+    comm_forward = 6;
+#ifndef SERVO_BC_LIGGGHTS
+    maxexchange_dynamic = 1;    // the slots' width is known once the bonds form
+#endif
+    grow_arrays(atom->nmax);
+    atom->add_callback(0);    // Atom::GROW
+    atom->add_callback(1);    // Atom::RESTART
+  }
   scalar_flag = 1;
   vector_flag = 1;
   size_vector = dim == 3 ? 6 : 2;
@@ -115,22 +136,38 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
 
 FixServoBCBonds::~FixServoBCBonds()
 {
+  if (dim == 3) {
+    atom->delete_callback(id, 0);
+    atom->delete_callback(id, 1);
+  }
+  memory->destroy(slot);
+  memory->destroy(carry);
+  memory->destroy(step_load);
+  memory->destroy(step_motion);
+  memory->destroy(partner_at);
+  if (breaks_fp) fclose(breaks_fp);
   sbc_bpm_free(bonds);
   sbc_cohesive_host_free(contacts);
 }
 
 int FixServoBCBonds::setmask() { return POST_FORCE | POST_RUN | END_OF_STEP; }
 
-/* cohesive: how many bonds are left, at the end of a run where some broke */
+/* how many bonds are left, at the end of a run where some broke */
 void FixServoBCBonds::post_run()
 {
   if (!contacts && !(bonds && failure)) return;
-  const int intact = contacts ? sbc_cohesive_host_bond_count(contacts) : sbc_bpm_host_intact(bonds);
+  int intact, initial = formed;
+  if (contacts) {
+    intact = sbc_cohesive_host_bond_count(contacts);
+    initial = sbc_cohesive_host_bonds_initial(contacts);
+  } else {
+    reduce_outputs();
+    intact = (int) sums[1];
+  }
   if (intact == reported) return;
   reported = intact;
   char line[128];
-  std::snprintf(line, sizeof line, "fix servo_bc/bonds: %s bonds intact %d of %d\n", model.c_str(), intact,
-                contacts ? sbc_cohesive_host_bonds_initial(contacts) : sbc_bpm_host_bond_count(bonds));
+  std::snprintf(line, sizeof line, "fix servo_bc/bonds: %s bonds intact %d of %d\n", model.c_str(), intact, initial);
   say(line);
 }
 
@@ -158,6 +195,13 @@ void FixServoBCBonds::fail(const std::string &message)
   error->all(FLERR, last_error.c_str());
 }
 
+/* an error only this rank sees (it aborts the others) */
+void FixServoBCBonds::fail_here(const std::string &message)
+{
+  last_error = "Fix servo_bc/bonds: " + message;
+  error->one(FLERR, last_error.c_str());
+}
+
 void FixServoBCBonds::init()
 {
   // cohesive: the core computes every contact; a pair style that does too counts them twice
@@ -176,20 +220,20 @@ void FixServoBCBonds::init()
            std::to_string(total) + " of this fix's atoms (group " + group->names[igroup] +
            ") too, which would bond them twice; one fix servo_bc/bonds per atom");
   }
-  if (bonds || contacts) return;
-  if (tags.empty()) create_bonds();    // cohesive: also from a restart file, at the present centres
-  else bond_spheres();                 // from a restart file
+  if (model == "cohesive" && !contacts) create_bonds();    // also from a restart file, at the present centres
 }
 
 namespace {
-// marks fix servo_bc/bonds' restart block (bump on any change of its layout)
-const double BONDS_MAGIC = 8.020005e7;
+// marks fix servo_bc/bonds' restart block (bump on any change of its layout);
+// the bonds' states moved into per-atom data with the layout after BONDS_GATHERED
+const double BONDS_MAGIC = 8.020006e7, BONDS_GATHERED = 8.020005e7;
 }
 
 /* rank 0: the marker, the block's length, then
-   beam | parallel: model (1 | 2), E, nu, alpha, failure, strength[5], n, the
-   bond count nb, doubles per bond state, the reference spheres (ID, centre,
-   radius, mass), every bond's state, W_ext of eq. 52, the fracture energy;
+   beam | parallel: model (1 | 2), E, nu, alpha, failure, strength[5], r_min,
+   slots per atom, doubles per bond state, eq. 48's step, the bonds formed,
+   the spheres, the longest bond at creation (the bonds' states are per-atom
+   data: pack_restart);
    cohesive: model 3, the law (kn ks kr fn fs mr mu), n, the atom IDs, the
    pair state's length and the pair state (cohesive_host.h) */
 void FixServoBCBonds::write_restart(FILE *fp)
@@ -204,20 +248,10 @@ void FixServoBCBonds::write_restart(FILE *fp)
     list.push_back((double) state.size());
     list.insert(list.end(), state.begin(), state.end());
   } else {
-    const int nb = sbc_bpm_host_bond_count(bonds), per = sbc_bpm_host_state_doubles(bonds);
     list = {BONDS_MAGIC, 0.0, model == "beam" ? 1.0 : 2.0, E, nu, alpha, failure ? 1.0 : 0.0};
     list.insert(list.end(), strength, strength + 5);
-    list.insert(list.end(), {(double) n, (double) nb, (double) per});
-    for (int k = 0; k < n; k++)
-      list.insert(list.end(),
-                  {(double) tags[k], ref_x[3 * k], ref_x[3 * k + 1], ref_x[3 * k + 2], ref_r[k], ref_m[k]});
-    std::vector<double> state(per);
-    for (int k = 0; k < nb; k++) {
-      sbc_bpm_host_state_get(bonds, k, state.data());
-      list.insert(list.end(), state.begin(), state.end());
-    }
-    list.push_back(external_work);    // eq. 52 so far
-    list.push_back(sbc_bpm_host_fracture_energy(bonds));
+    list.insert(list.end(),
+                {rmin, (double) maxb, (double) per, critical_dt, (double) formed, (double) n, longest});
   }
   list[1] = (double) list.size();
   int size = (int) (list.size() * sizeof(double));
@@ -232,6 +266,10 @@ void FixServoBCBonds::restart(char *raw)
   const double *list = (const double *) raw;
   sbc_error err;
   sbc_saved rd;
+  if (list[0] == BONDS_GATHERED)
+    fail("restart: this file's fix servo_bc/bonds block is from a version that kept every bond on every rank; "
+         "this version keeps each bond with its atoms and cannot read it (run the loading again from its data "
+         "file, or read the file with the version that wrote it)");
   if (list[0] != BONDS_MAGIC)
     fail("restart: this fix's block in the restart file is not this version's fix servo_bc/bonds' (write the "
          "restart file again)");
@@ -285,65 +323,56 @@ void FixServoBCBonds::restart(char *raw)
          std::to_string(saved_params[1]) + " " + std::to_string(saved_params[2]) +
          (saved_failure ? " with a strength" : "") +
          "; this fix asks for other ones (model, E, nu, alpha, strength and friction must be the same)");
-  const long count = sbc_saved_int(&rd, "sphere count", 1, (total - 2) / 6);
-  const long nb = sbc_saved_int(&rd, "bond count", 0, total);
-  const long per = sbc_saved_int(&rd, "doubles per bond", 1, 256);
+  rmin = sbc_saved_positive(&rd, "smallest radius");
+  maxb = (int) sbc_saved_int(&rd, "slots per atom", 1, 1000);
+  per = (int) sbc_saved_int(&rd, "doubles per bond", 1, 256);
+  critical_dt = sbc_saved_positive(&rd, "critical time step");
+  formed = (int) sbc_saved_int(&rd, "bonds formed", 1, 2000000000L);
+  n = (int) sbc_saved_int(&rd, "sphere count", 2, 2000000000L);
+  longest = sbc_saved_positive(&rd, "longest bond");
   if (rd.st != SBC_OK) fail(err.message);
-  if (15 + 6 * count + nb * per + 2 != total)
-    fail("restart: the block holds " + std::to_string(total) + " values; " + std::to_string(count) + " spheres and " +
-         std::to_string(nb) + " bonds of " + std::to_string(per) + " values need " +
-         std::to_string(14 + 6 * count + nb * per + 2));
-  n = (int) count;
-  tags.assign(n, 0);
-  ref_x.assign(3 * n, 0.0);
-  ref_r.assign(n, 0.0);
-  ref_m.assign(n, 0.0);
-  for (int k = 0; k < n; k++) {
-    tags[k] = (tagint) sbc_saved_int(&rd, "atom ID", 1, MAXTAGINT);
-    for (int c = 0; c < 3; c++) ref_x[3 * k + c] = sbc_saved_real(&rd, "reference centre");
-    ref_r[k] = sbc_saved_positive(&rd, "radius");
-    ref_m[k] = sbc_saved_positive(&rd, "mass");
-  }
-  saved.assign((size_t) (nb * per), 0.0);
-  for (long k = 0; k < nb * per; k++) saved[k] = sbc_saved_real(&rd, "bond state value");
-  external_work = sbc_saved_real(&rd, "external work");
-  fracture_saved = sbc_saved_real(&rd, "fracture energy");
-  if (rd.st != SBC_OK) fail(err.message);
-  if (!(fracture_saved >= 0.0)) fail("restart: the fracture energy " + std::to_string(fracture_saved) + " J < 0");
+  if ((long) rd.at != total - 2)
+    fail("restart: the block holds " + std::to_string(total) + " values, its contents " + std::to_string(rd.at + 2));
+  char msg[512] = "";
+  bonds = sbc_bpm_host_law(model.c_str(), E, nu, alpha, failure ? strength : nullptr, rmin, msg, sizeof msg);
+  if (!bonds) fail(std::string("restart: ") + msg);
+  if (per != sbc_bpm_host_state_doubles(bonds))
+    fail("restart: " + std::to_string(per) + " doubles per bond state; this version's " + model + " bonds have " +
+         std::to_string(sbc_bpm_host_state_doubles(bonds)));
+  width = 1 + maxb * (1 + per);
+  grow_arrays(atom->nmax);
+  restarted = true;
 }
 
-/* the group's atoms in ID order on every rank; the core bonds those that touch */
+/* cohesive: the group's atoms in ID order on every rank; the core bonds those that touch */
 void FixServoBCBonds::create_bonds()
 {
   const int nlocal = atom->nlocal;
-  std::vector<double> pack;    // per atom: tag, x, y, z, radius, mass
+  std::vector<double> pack;    // per atom: tag, x, y, radius
   for (int i = 0; i < nlocal; i++)
     if (atom->mask[i] & groupbit)
-      pack.insert(pack.end(), {(double) atom->tag[i], atom->x[i][0], atom->x[i][1], atom->x[i][2], atom->radius[i],
-                               atom->rmass[i]});
+      pack.insert(pack.end(), {(double) atom->tag[i], atom->x[i][0], atom->x[i][1], atom->radius[i]});
   int count = (int) pack.size(), nprocs = comm->nprocs;
   std::vector<int> counts(nprocs), displs(nprocs, 0);
   MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
   for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
   std::vector<double> every(displs[nprocs - 1] + counts[nprocs - 1]);
   MPI_Allgatherv(pack.data(), count, MPI_DOUBLE, every.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
-  n = (int) every.size() / 6;
+  n = (int) every.size() / 4;
   std::vector<int> order(n);
   for (int k = 0; k < n; k++) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return every[6 * a] < every[6 * b]; });
-  ref_x.assign(3 * n, 0.0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return every[4 * a] < every[4 * b]; });
+  ref_x.assign(2 * n, 0.0);
   ref_r.assign(n, 0.0);
-  ref_m.assign(n, 0.0);
   tags.assign(n, 0);
   for (int k = 0; k < n; k++) {
-    const double *p = &every[6 * order[k]];
+    const double *p = &every[4 * order[k]];
     tags[k] = (tagint) p[0];
-    for (int c = 0; c < 3; c++) ref_x[3 * k + c] = p[1 + c];
-    ref_r[k] = p[4];
-    ref_m[k] = p[5];
+    ref_x[2 * k] = p[1];
+    ref_x[2 * k + 1] = p[2];
+    ref_r[k] = p[3];
   }
-  if (contacts || model == "cohesive") bond_discs();
-  else bond_spheres();
+  bond_discs();
 }
 
 /* cohesive: the core's contacts on the group's discs at their present
@@ -352,13 +381,8 @@ void FixServoBCBonds::bond_discs()
 {
   index.clear();
   for (int k = 0; k < n; k++) index[tags[k]] = k;
-  std::vector<double> xy(2 * n);
-  for (int k = 0; k < n; k++) {
-    xy[2 * k] = ref_x[3 * k];
-    xy[2 * k + 1] = ref_x[3 * k + 1];
-  }
   char msg[512] = "";
-  contacts = sbc_cohesive_host_create(words.c_str(), n, xy.data(), ref_r.data(), msg, sizeof msg);
+  contacts = sbc_cohesive_host_create(words.c_str(), n, ref_x.data(), ref_r.data(), msg, sizeof msg);
   if (!contacts) fail(std::string(msg) + " (group " + group->names[igroup] + ")");
   if (!saved.empty()) {
     if (saved_tags != tags)
@@ -377,96 +401,63 @@ void FixServoBCBonds::bond_discs()
   say(line);
 }
 
-/* the core's bonds on the reference spheres (at the first run, or those of a
-   restart file, whose bond states are then put back) */
-void FixServoBCBonds::bond_spheres()
-{
-  index.clear();
-  for (int k = 0; k < n; k++) index[tags[k]] = k;
-  char msg[512] = "";
-  bonds = sbc_bpm_host_create(model.c_str(), E, nu, alpha, failure ? strength : nullptr, n, ref_x.data(), ref_r.data(), ref_m.data(), msg,
-                              sizeof msg);
-  if (!bonds) fail(std::string(msg) + " (group " + group->names[igroup] + ")");
-  if (!saved.empty()) {
-    const int nb = sbc_bpm_host_bond_count(bonds), per = sbc_bpm_host_state_doubles(bonds);
-    if ((int) saved.size() != nb * per)
-      fail("restart: the saved bonds (" + std::to_string(saved.size()) + " values) are not the " +
-           std::to_string(nb) + " bonds these spheres form");
-    for (int k = 0; k < nb; k++) sbc_bpm_host_state_set(bonds, k, &saved[(size_t) k * per]);
-    sbc_bpm_host_set_fracture_energy(bonds, fracture_saved);
-    saved.clear();
-  }
-  mine.assign(9 * n, 0.0);
-  all.assign(9 * n, 0.0);
-  load.assign(6 * n, 0.0);
-  other.assign(6 * n, 0.0);
-  other_prev.assign(6 * n, 0.0);
-  other_mine.assign(6 * n, 0.0);
-  char line[256];
-  std::snprintf(line, sizeof line, "fix servo_bc/bonds: %d %s bonds between %d spheres, critical time step %.6g s\n",
-                sbc_bpm_host_bond_count(bonds), model.c_str(), n, sbc_bpm_critical_dt(bonds));
-  say(line);
-}
-
-/* x, v, omega of the group in ID order as three blocks, x | v | omega (3n
-   each; cohesive: 2n | 2n | n, the plane's components and the spin about z),
-   summed over ranks (each atom is owned once) */
+/* cohesive: x, v of the group in ID order and the spins about z, as three
+   blocks x | v | omega (2n, 2n, n), summed over ranks (each atom is owned once) */
 void FixServoBCBonds::gather()
 {
   std::fill(mine.begin(), mine.end(), 0.0);
   double **x = atom->x, **v = atom->v, **omega = atom->omega;
-  const int spins = dim == 3 ? 3 : 1, first_spin = dim == 3 ? 0 : 2;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     auto it = index.find(atom->tag[i]);
     if (it == index.end()) fail("atom " + std::to_string((long) atom->tag[i]) + " joined the group after set-up");
     const int k = it->second;
-    for (int c = 0; c < dim; c++) {
-      mine[dim * k + c] = x[i][c];
-      mine[dim * (n + k) + c] = v[i][c];
+    for (int c = 0; c < 2; c++) {
+      mine[2 * k + c] = x[i][c];
+      mine[2 * (n + k) + c] = v[i][c];
     }
-    for (int c = 0; c < spins; c++) mine[2 * dim * n + spins * k + c] = omega[i][first_spin + c];
+    mine[4 * n + k] = omega[i][2];
   }
   MPI_Allreduce(mine.data(), all.data(), (int) mine.size(), MPI_DOUBLE, MPI_SUM, world);
 }
 
-void FixServoBCBonds::setup(int) { post_force(0); }
+void FixServoBCBonds::setup(int)
+{
+  if (model == "cohesive") {
+    post_force(0);
+    return;
+  }
+  if (!bonds) create_slots();    // the first run: the group's touching spheres
+  map_images();
+  step_slots(false);             // the last configuration again: no motion, the same loads
+}
 
 /* the bonds' loads: the motion of the step just taken is dt v(t + dt/2)
-   (velocity Verlet: v is at the half step here); the setup of a run sees the
-   last configuration again, whose loads are added once more, unchanged */
+   (velocity Verlet: v is at the half step here) */
 void FixServoBCBonds::post_force(int)
 {
+  if (model != "cohesive") {
+    if (neighbor->ago == 0) map_images();
+    step_slots(true);
+    return;
+  }
+  // cohesive: the setup of a run sees the last configuration again, whose loads are added once more, unchanged
   if (update->ntimestep != last_step) {
     gather();
     // the first evaluation (no step taken yet) builds no increment
-    if (last_step < 0) std::fill(all.begin() + dim * n, all.end(), 0.0);
-    const double *x = &all[0], *v = &all[dim * n], *w = &all[2 * dim * n];
-    if (contacts) {
-      if (sbc_cohesive_host_loads(contacts, x, v, w, update->dt, load.data()))
-        fail("step " + std::to_string((long) update->ntimestep) + ": " + sbc_cohesive_host_message(contacts));
-    } else if (sbc_bpm_host_loads(bonds, x, v, w, update->dt, load.data()))
-      fail("a bond load is not finite at step " + std::to_string((long) update->ntimestep) + " (time step " +
-           std::to_string(update->dt) + " s, eq. 48's critical step " + std::to_string(sbc_bpm_critical_dt(bonds)) +
-           " s)");
+    if (last_step < 0) std::fill(all.begin() + 2 * n, all.end(), 0.0);
+    const double *x = &all[0], *v = &all[2 * n], *w = &all[4 * n];
+    if (sbc_cohesive_host_loads(contacts, x, v, w, update->dt, load.data()))
+      fail("step " + std::to_string((long) update->ntimestep) + ": " + sbc_cohesive_host_message(contacts));
     last_step = update->ntimestep;
   }
   double **f = atom->f, **torque = atom->torque;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    const int k = index[atom->tag[i]];
-    if (contacts) {
-      const double *l = &load[3 * k];
-      f[i][0] += l[0];
-      f[i][1] += l[1];
-      torque[i][2] += l[2];
-      continue;
-    }
-    const double *l = &load[6 * k];
-    for (int c = 0; c < 3; c++) {
-      f[i][c] += l[c];
-      torque[i][c] += l[3 + c];
-    }
+    const double *l = &load[3 * index[atom->tag[i]]];
+    f[i][0] += l[0];
+    f[i][1] += l[1];
+    torque[i][2] += l[2];
   }
 }
 
@@ -479,25 +470,28 @@ void FixServoBCBonds::contact_sums(double out[4]) const
 double FixServoBCBonds::compute_scalar()
 {
   if (contacts) {
-    double sums[4];
-    sbc_cohesive_host_sums(contacts, sums);
-    return sums[0];
+    double sums4[4];
+    sbc_cohesive_host_sums(contacts, sums4);
+    return sums4[0];
   }
-  return bonds ? sbc_bpm_host_strain_energy(bonds) : 0.0;
+  if (!bonds) return 0.0;
+  reduce_outputs();
+  return sums[0];
 }
 
 double FixServoBCBonds::compute_vector(int k)
 {
   if (contacts) return k == 0 ? sbc_cohesive_host_bond_count(contacts) : sbc_cohesive_host_bonds_initial(contacts);
   if (!bonds) return 0.0;
+  if (k == 1) return critical_dt;
+  reduce_outputs();
+  const double u = sums[0], kinetic = sums[2], d = sums[3], external_work = sums[4];
   switch (k) {
-    case 0: return sbc_bpm_host_intact(bonds);
-    case 1: return sbc_bpm_critical_dt(bonds);
+    case 0: return sums[1];
     case 2: return kinetic;
-    case 3: return sbc_bpm_host_dissipated(bonds);
+    case 3: return d;
     case 4: return external_work;
     default: {    // eq. 53
-      const double u = sbc_bpm_host_strain_energy(bonds), d = sbc_bpm_host_dissipated(bonds);
       double big = std::max(std::fabs(kinetic), std::max(std::fabs(u), std::fabs(external_work)));
       big = std::max(big, std::fabs(d));
       return big > 0.0 ? std::fabs(kinetic + u + d - external_work) / big : 0.0;
@@ -507,40 +501,7 @@ double FixServoBCBonds::compute_vector(int k)
 
 void FixServoBCBonds::end_of_step()
 {
-  if (bonds) energy_step();
-}
-
-/* eqs. 49 and 52 after the step: every force and moment on the group is in
-   f and torque now (other fixes add theirs after this fix's post_force); the
-   others' share is that less the bonds' loads. The motion of the step is
-   dt v(t - dt/2 .. t + dt/2) as gathered in post_force, so the work of the
-   step is (F(t) + F(t + dt)) / 2 . dt v (and likewise for the moments). */
-void FixServoBCBonds::energy_step()
-{
-  std::fill(other_mine.begin(), other_mine.end(), 0.0);
-  double **f = atom->f, **torque = atom->torque, **v = atom->v, **omega = atom->omega;
-  double ek = 0.0;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    const int k = index[atom->tag[i]];
-    const double m = atom->rmass[i], I = 0.4 * m * atom->radius[i] * atom->radius[i];
-    for (int c = 0; c < 3; c++) {
-      other_mine[6 * k + c] = f[i][c] - load[6 * k + c];
-      other_mine[6 * k + 3 + c] = torque[i][c] - load[6 * k + 3 + c];
-      ek += 0.5 * m * v[i][c] * v[i][c] + 0.5 * I * omega[i][c] * omega[i][c];
-    }
-  }
-  MPI_Allreduce(other_mine.data(), other.data(), 6 * n, MPI_DOUBLE, MPI_SUM, world);
-  MPI_Allreduce(&ek, &kinetic, 1, MPI_DOUBLE, MPI_SUM, world);
-  if (!have_prev) other_prev = other;    // the first step: the loads of its end on both sides
-  const double dt = update->dt;
-  double w = 0.0;
-  for (int k = 0; k < n; k++)
-    for (int c = 0; c < 3; c++) {
-      w += 0.5 * (other_prev[6 * k + c] + other[6 * k + c]) * dt * all[3 * (n + k) + c];
-      w += 0.5 * (other_prev[6 * k + 3 + c] + other[6 * k + 3 + c]) * dt * all[3 * (2 * n + k) + c];
-    }
-  external_work += w;
-  other_prev.swap(other);
-  have_prev = true;
+  if (!bonds) return;
+  energy_slots();
+  if (failure && !breaks_file.empty()) write_breaks();
 }

@@ -8,9 +8,17 @@
      contact of the group (cohesive_host.h, the embedded 2D engine's pair
      loop); the pair style must leave the group alone (pair_style zero or
      none), and fix servo_bc takes its contact sums from this fix.
-   Every rank gathers the group's centres and velocities in atom-ID order
-   each step and runs the same loop, so the loads do not depend on the rank
-   count; each rank adds them to the atoms it owns.
+   beam | parallel keep each bond with its atoms (fix_servo_bc_bonds_slots.cpp):
+   both atoms of a bond hold a copy of its state in per-atom slots that
+   migrate between ranks and go into restart files; each rank computes the
+   bonds of the atoms it owns, the partner a ghost when another rank owns it
+   (its velocity and spin by this fix's forward communication), with the
+   smaller atom ID as end A, so both owners advance their copies alike and
+   agree when a bond breaks.
+   cohesive gathers the group's centres and velocities in atom-ID order on
+   every rank each step and runs the same loop (its contacts between every
+   pair of the group are not distributed); each rank adds the loads to the
+   atoms it owns.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -47,6 +55,22 @@ class FixServoBCBonds : public Fix {
   double compute_vector(int) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
+  // beam | parallel: per-atom slots (fix_servo_bc_bonds_slots.cpp)
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+#ifdef SERVO_BC_LIGGGHTS
+  int pack_comm(int, int *, double *, int, int *) override;
+  void unpack_comm(int, int, double *) override;
+#else
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+#endif
 
   // cohesive: every contact of the group is this fix's (fix servo_bc asks)
   bool owns_contacts() const { return model == "cohesive"; }
@@ -58,34 +82,58 @@ class FixServoBCBonds : public Fix {
   double E, nu, alpha;                     // beam, parallel
   double strength[5];                      // optional failure: FT FS MB MT (N, N, N m, N m), friction MU
   bool failure;                            // a strength was given
-  double fracture_saved = 0.0;             // the broken bonds' energy from a restart file, J
   std::string words;                       // cohesive: the law's words (cohesive_host.h)
   double kn;                               // cohesive: the law's kn, N/m
   sbc_cohesive law;                        // cohesive: the law (eqs. 6-8), saved in restart files
-  sbc_bpm *bonds;
+  sbc_bpm *bonds;                          // beam | parallel: the law (no spheres; bpm_host.h)
   sbc_cohesive_host *contacts;
   int n;                                   // particles of the group
   int dim;                                 // 3 (beam, parallel) or 2 (cohesive): components gathered per vector
-  std::vector<tagint> tags;                // atom IDs in order (the core's sphere order)
-  std::vector<double> ref_x, ref_r, ref_m; // the spheres at bond creation (restart rebuilds from them)
-  std::vector<double> saved;               // bond states from a restart file, set in init()
-  std::vector<tagint> saved_tags;          // cohesive: the atom IDs of the restart file's pair state
-  std::unordered_map<tagint, int> index;   // atom ID -> sphere
-  std::vector<double> mine, all, load;     // gather buffers: x | v | omega; loads (6 per sphere in 3D, 3 per disc in 2D)
+  // cohesive: the gathered path
+  std::vector<tagint> tags;                // atom IDs in order (the core's disc order)
+  std::vector<double> ref_x, ref_r;        // the discs at bond creation
+  std::vector<double> saved;               // the pair state from a restart file, set in init()
+  std::vector<tagint> saved_tags;          // the atom IDs of the restart file's pair state
+  std::unordered_map<tagint, int> index;   // atom ID -> disc
+  std::vector<double> mine, all, load;     // gather buffers: x | v | omega; loads (3 per disc)
+  int reported;                            // the intact bonds post_run last printed
   bigint last_step;                        // the step whose loads are in `load`
-  int reported;                            // cohesive: the intact bonds post_run last printed
-  // eqs. 49-53 (beam, parallel): the loads on the group other than the bonds' at the last
-  // end of step (6 per sphere, tag order), and the energies (J)
-  std::vector<double> other, other_prev, other_mine;
-  double kinetic, external_work;
-  bool have_prev;
-  void energy_step();
+  // beam | parallel: per atom, slot[i] = count, then per bond the partner's
+  // ID and the bond's state (per doubles); carry[i] = the other loads of the
+  // last end of step (6), the external work of eq. 52 on this atom (J) and
+  // the fracture energy of the bonds it is end A of (J); both migrate
+  double rmin;                             // the smallest radius of the group at creation, m
+  int maxb, per, width;                    // slots per atom, doubles per bond state, doubles per atom
+  double critical_dt;                      // eq. 48 at creation, s
+  int formed;                              // bonds formed (every rank)
+  double **slot, **carry;
+  double **step_load, **step_motion;       // this step's bond loads (6) and motion v | omega (6), local atoms
+  int **partner_at;                        // per slot of an owned atom: its partner's owned or ghost index
+  int nmax_slots;                          // rows allocated
+  bool have_prev;                          // carry holds a last end of step's loads
+  bool restarted;                          // slots came from a restart file
+  double longest;                          // the longest bond at creation, m
+  std::unordered_map<tagint, int> image_first;  // atom ID -> a local or ghost index; image_next chains
+  std::vector<int> image_next;                  // the other indices of the same ID (periodic images), -1 ends
+  bigint reduced_at;                       // the step the outputs below were summed over ranks
+  double sums[5];                          // strain, intact bonds, kinetic, dissipated, external work
+  double kinetic_mine;                     // eq. 49 on this rank's atoms at the last end of step
+  std::string breaks_file;                 // keyword breaks: a row per broken bond
+  FILE *breaks_fp;
+  std::vector<double> break_rows;          // this step's breaks on this rank: step, ID A, ID B, x, y, z
+  void create_slots();
+  void map_images();
+  int partner(tagint tag, const double *near) const;
+  void step_slots(bool motion);
+  void energy_slots();
+  void write_breaks();
+  void reduce_outputs();
   std::string last_error;
   void create_bonds();
-  void bond_spheres();
   void bond_discs();
   void gather();
   void fail(const std::string &message);
+  void fail_here(const std::string &message);
   void say(const char *line);
   double number(const char *keyword, const char *word);
 };

@@ -220,6 +220,113 @@ static void failure(void)
           strstr(msg, "expected a tension > 0 N"));
 }
 
+/* Bonds kept with their spheres (the distributed path of LAMMPS and
+ * LIGGGHTS) against the whole-array path: a 3 x 3 x 3 lattice with a
+ * strength (bonds break on the way), random motions for 400 steps; each
+ * sphere sums its bonds in its partners' order (ascending), as a rank does.
+ * Loads, broken bonds, fracture and strain energies agree to 1e-12. */
+static void kept_with_spheres(void)
+{
+    enum { N = 27, STEPS = 400 };
+    const double strength[5] = {2e4, 3e4, 0, 0, 0.3}, dt = 1e-6;
+    double x[3 * N], r[N], m[N], v[3 * N], w[3 * N], load[6 * N], mine[6 * N], worst = 0.0, scale = 0.0;
+    int model;
+    unsigned seed = 12345u;
+    for (model = 0; model < 2; ++model) {
+        char msg[256];
+        const char *name = model ? "parallel" : "beam";
+        sbc_bpm *whole, *law;
+        int *pairs = NULL, i, s, per, broke_whole = 0, broke_mine = 0, bad_steps = 0;
+        long np, p;
+        double *state, fracture = 0.0, strain_whole, strain_mine = 0.0;
+        for (i = 0; i < N; ++i) {
+            x[3 * i] = 2 * R * (i % 3);
+            x[3 * i + 1] = 2 * R * (i / 3 % 3);
+            x[3 * i + 2] = 2 * R * (i / 9);
+            r[i] = R;
+            m[i] = 30.0;
+        }
+        whole = sbc_bpm_host_create(name, EB, NUB, 1.0, strength, N, x, r, m, msg, sizeof msg);
+        law = sbc_bpm_host_law(name, EB, NUB, 1.0, strength, R, msg, sizeof msg);
+        CHECK(whole != NULL && law != NULL);
+        if (!whole || !law) {
+            sbc_bpm_free(whole);
+            sbc_bpm_free(law);
+            continue;
+        }
+        np = sbc_bpm_host_pairs(law, N, x, r, &pairs, msg, sizeof msg);
+        CHECK(np == sbc_bpm_host_bond_count(whole) && np == 54);
+        per = sbc_bpm_host_state_doubles(law);
+        CHECK(per == sbc_bpm_host_state_doubles(whole));
+        state = calloc((size_t)(np > 0 ? np : 1) * (size_t)per, sizeof *state);
+        for (p = 0; p < np; ++p) {
+            const int a = pairs[2 * p], b = pairs[2 * p + 1];
+            sbc_bpm_host_bond_start(law, &x[3 * a], r[a], &x[3 * b], r[b], &state[p * per]);
+        }
+        for (s = 0; s < STEPS; ++s) {
+            for (i = 0; i < 3 * N; ++i) {
+                seed = seed * 1103515245u + 12345u;
+                v[i] = 2e-3 * ((double)(seed >> 8) / 16777216.0 - 0.5) + (i % 3 == 0 ? 0.1 * (i / 3 % 3) : 0.0);
+                seed = seed * 1103515245u + 12345u;
+                w[i] = 1e-2 * ((double)(seed >> 8) / 16777216.0 - 0.5);
+            }
+            bad_steps += sbc_bpm_host_loads(whole, x, v, w, dt, load) != 0;
+            memset(mine, 0, sizeof mine);
+            for (i = 0; i < N; ++i) { /* sphere i: its bonds by ascending partner */
+                int q;
+                for (q = 0; q < N; ++q)
+                    for (p = 0; p < np; ++p) {
+                        const int a = pairs[2 * p], b = pairs[2 * p + 1];
+                        double other[6] = {0}, f = 0.0;
+                        if (!((a == i && b == q) || (b == i && a == q)))
+                            continue;
+                        if (a == i) { /* the copy this sphere keeps advances here; its partner's alike */
+                            double copy[64];
+                            memcpy(copy, &state[p * per], (size_t)per * sizeof *copy);
+                            (void)sbc_bpm_host_bond_step(law, copy, &x[3 * a], r[a], &v[3 * a], &w[3 * a], &x[3 * b],
+                                                         r[b], &v[3 * b], &w[3 * b], dt, &mine[6 * i], other, &f);
+                        } else {
+                            broke_mine += sbc_bpm_host_bond_step(law, &state[p * per], &x[3 * a], r[a], &v[3 * a],
+                                                                 &w[3 * a], &x[3 * b], r[b], &v[3 * b], &w[3 * b],
+                                                                 dt, other, &mine[6 * i], &f);
+                            fracture += f;
+                        }
+                    }
+            }
+            for (i = 0; i < 6 * N; ++i) {
+                double d = fabs(mine[i] - load[i]);
+                if (d > worst) worst = d;
+                if (fabs(load[i]) > scale) scale = fabs(load[i]);
+            }
+            for (i = 0; i < 3 * N; ++i)
+                x[i] += dt * v[i];
+        }
+        broke_whole = sbc_bpm_host_bond_count(whole) - sbc_bpm_host_intact(whole);
+        for (p = 0; p < np; ++p) {
+            const int a = pairs[2 * p], b = pairs[2 * p + 1];
+            double u, fr;
+            sbc_bpm_host_bond_energies(law, &state[p * per], &x[3 * a], r[a], &x[3 * b], r[b], &u, &fr);
+            strain_mine += u;
+        }
+        strain_whole = sbc_bpm_host_strain_energy(whole);
+        printf("  bonds kept with their spheres (%s): %d of %ld broke (whole arrays %d), loads within %.2g of %.3g N, "
+               "strain %.6g J (whole %.6g), fracture %.6g J (whole %.6g)\n",
+               name, broke_mine, np, broke_whole, worst, scale, strain_mine, strain_whole, fracture,
+               sbc_bpm_host_fracture_energy(whole));
+        CHECK(bad_steps == 0);
+        CHECK(broke_mine == broke_whole && broke_mine > 0 && broke_mine < np);
+        CHECK(worst <= 1e-12 * scale && scale > 0.0);
+        CHECK_REL(strain_mine, strain_whole, 1e-12);
+        CHECK_REL(fracture, sbc_bpm_host_fracture_energy(whole), 1e-12);
+        free(state);
+        sbc_bpm_host_pairs_free(pairs);
+        sbc_bpm_free(whole);
+        sbc_bpm_free(law);
+        worst = scale = 0.0;
+        fracture = 0.0;
+    }
+}
+
 static void refusals(void)
 {
     const double x[6] = {0, 0, 0, 1, 0, 0}, r[2] = {R, R}, m[2] = {1, 1};
@@ -238,6 +345,7 @@ void test_bpm_host(void)
     size_t k;
     one_bond();
     failure();
+    kept_with_spheres();
     for (k = 0; k < sizeof sizes / sizeof sizes[0]; ++k) {
         const int n = sizes[k];
         const double Le = 2 * R * (n - 1), G = EB / (2 * (1 + NUB));

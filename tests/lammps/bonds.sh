@@ -153,22 +153,38 @@ if [ -n "$a" ] && [ -n "$b" ] && awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if 
 else
   bad "restart mid-run: ${b:-none} m after the split, ${a:-none} m straight through: $(tail -3 "$tmp/restart.log")"
 fi
-# the bonds fix's restart block checked value by value (sbc/saved.h): corrupted
-# counts, sizes and values are refused by name, never a crash or a NaN output.
-# corrupt_bonds FILE OFFSET VALUE overwrites one double of the block (found by
-# its marker, BONDS_MAGIC of fix_servo_bc_bonds.cpp); OFFSET may be "last"
+# the bonds fix's restart block and its per-atom data checked value by value
+# (sbc/saved.h): corrupted counts, sizes and values are refused by name, never
+# a crash or a NaN output. corrupt_bonds FILE OFFSET VALUE overwrites one
+# double of the block (found by its marker, BONDS_MAGIC of
+# fix_servo_bc_bonds.cpp); OFFSET may be "last". corrupt_atom FILE OFFSET VALUE
+# overwrites one double of atom 1's per-atom data (size 33, work, fracture,
+# 1 bond, partner 2, its 28 beam values: fix_servo_bc_bonds_slots.cpp)
 corrupt_bonds() {
   perl -e '
     my ($file, $k, $value) = @ARGV;
     open(my $f, "+<", $file) or exit 1; binmode $f; local $/; my $d = <$f>;
-    my $at = index($d, pack("d", 8.020005e7)); exit 1 if $at < 0;
+    my $at = index($d, pack("d", 8.020006e7)); exit 1 if $at < 0;
     $k = unpack("d", substr($d, $at + 8, 8)) - 1 if $k eq "last";
     substr($d, $at + 8 * $k, 8) = pack("d", $value eq "nan" ? 9**9**9 / 9**9**9 : $value);
     seek($f, 0, 0); print $f $d; close $f;' "$1" "$2" "$3"
 }
-refused_restart() {  # LABEL OFFSET VALUE EXPECTED
+corrupt_atom() {
+  perl -e '
+    my ($file, $k, $value) = @ARGV;
+    open(my $f, "+<", $file) or exit 1; binmode $f; local $/; my $d = <$f>;
+    my ($at, $from) = (-1, 0);
+    while (($at = index($d, pack("d", 33), $from)) >= 0) {
+      last if substr($d, $at + 24, 16) eq pack("d", 1) . pack("d", 2);
+      $from = $at + 1;
+    }
+    exit 1 if $at < 0;
+    substr($d, $at + 8 * $k, 8) = pack("d", $value eq "nan" ? 9**9**9 / 9**9**9 : $value);
+    seek($f, 0, 0); print $f $d; close $f;' "$1" "$2" "$3"
+}
+refused_restart() {  # LABEL OFFSET VALUE EXPECTED [corrupt_atom]
   cp "$tmp/split.restart" "$tmp/bad.restart"
-  corrupt_bonds "$tmp/bad.restart" "$2" "$3" || { bad "restart: no fix servo_bc/bonds block in the file"; return; }
+  ${5:-corrupt_bonds} "$tmp/bad.restart" "$2" "$3" || { bad "restart: no fix servo_bc/bonds data in the file"; return; }
   sed 's/read_restart split.restart/read_restart bad.restart/' "$tmp/split.in" > "$tmp/bad.in"
   (cd "$tmp" && timeout 60 "$bin" -in bad.in -log none > bad.log 2>&1)
   local status=$?
@@ -179,13 +195,19 @@ refused_restart() {  # LABEL OFFSET VALUE EXPECTED
   fi
 }
 refused_restart "a length of 1e12" 1 1e12 "'length'"
-refused_restart "1e9 spheres" 12 1e9 "'sphere count'"
+refused_restart "1e10 spheres" 17 1e10 "'sphere count'"
 refused_restart "1e6 doubles per bond" 14 1e6 "'doubles per bond'"
-refused_restart "a bond count that does not fit the block" 13 7 "need"
-refused_restart "a radius 0" 19 0 "'radius'"
-refused_restart "a NaN bond state" 81 nan "'bond state value'"
-refused_restart "a NaN fracture energy" last nan "'fracture energy'"
+refused_restart "29 doubles per beam bond" 14 29 "29 doubles per bond state; this version's beam bonds have 28"
+refused_restart "1e4 bonds per sphere" 13 1e4 "'slots per atom'"
+refused_restart "a smallest radius 0" 12 0 "'smallest radius'"
+refused_restart "a NaN critical time step" 15 nan "'critical time step'"
 refused_restart "another E" 3 5e9 "the file's bonds are beam 5000000000"
+refused_restart "an atom with 7 bonds" 3 7 "'bond count'" corrupt_atom
+refused_restart "an atom whose size does not fit its bonds" 0 34 "34 values for 1 bonds" corrupt_atom
+refused_restart "a partner ID 0" 4 0 "'partner ID'" corrupt_atom
+refused_restart "a NaN bond state" 9 nan "'bond state value'" corrupt_atom
+refused_restart "a NaN fracture energy" 2 nan "'fracture energy'" corrupt_atom
+refused_restart "a negative fracture energy" 2 -1 "fracture energy -1" corrupt_atom
 # a second bonds fix on the same atoms, and a keyword twice
 refused_fix_line() {  # LABEL WHAT-TO-APPEND-TO-THE-FIX-LINE EXPECTED
   sed "s/^fix bonds all servo_bc\/bonds beam 4e9 0.3 1.0\$/&$2/" "$tmp/split.in" > "$tmp/twice.in"
@@ -258,8 +280,9 @@ refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION [UNITS]]
   # 2d: periodic in z, the discs at z = 0
   local z=0.5 zb="0 1" bz=f
   [ "${4:-3}" = 2 ] && z=0 zb="-0.5 0.5" bz=p
-  printf 'units %s\ndimension %s\nboundary f f %s\natom_style sphere\nregion b block 0 1 0 1 %s\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 %s\ncreate_atoms 1 single 0.3 0.5 %s\nset type 1 diameter 0.2\n%s\nrun 1\n' \
-    "${5:-si}" "${4:-3}" "$bz" "$zb" "$z" "$z" "$2" > "$tmp/bad.in"
+  # LIGGGHTS 3.8 cannot sort atoms without a pair style (bin size 0)
+  printf 'units %s\ndimension %s\nboundary f f %s\natom_style sphere\n%s\nregion b block 0 1 0 1 %s\ncreate_box 1 b\ncreate_atoms 1 single 0.1 0.5 %s\ncreate_atoms 1 single 0.3 0.5 %s\nset type 1 diameter 0.2\n%s\nrun 1\n' \
+    "${5:-si}" "${4:-3}" "$bz" "$([ "$host" = liggghts ] && echo 'atom_modify sort 0 0.0')" "$zb" "$z" "$z" "$2" > "$tmp/bad.in"
   (cd "$tmp" && timeout 60 "$bin" -in bad.in -log none) > "$tmp/bad.log" 2>&1
   local status=$?
   if [ $status -ne 0 ] && grep -qF "$3" "$tmp/bad.log"; then ok "refuses $1 (exit $status): $3"
@@ -268,7 +291,7 @@ refused() {  # LABEL FIX-LINE EXPECTED [DIMENSION [UNITS]]
 refused "a missing alpha" "fix b all servo_bc/bonds beam 4e9 0.3" "expected at least 4 arguments after the style (MODEL E nu alpha), got 3"
 refused "a strength with 3 values" "fix b all servo_bc/bonds beam 4e9 0.3 1 strength 1e5 0 0" "keyword strength needs 4 values (FT FS MB MT"
 refused "a zero tensile strength" "fix b all servo_bc/bonds parallel 4e9 0.3 1 strength 0 1 1 1" "keyword strength: 0 1 1 1 (expected a tension > 0"
-refused "an unknown keyword" "fix b all servo_bc/bonds beam 4e9 0.3 1 strenght 1e5 0 0 0" "unknown keyword 'strenght' (expected strength or friction)"
+refused "an unknown keyword" "fix b all servo_bc/bonds beam 4e9 0.3 1 strenght 1e5 0 0 0" "unknown keyword 'strenght' (expected strength, friction or breaks)"
 refused "an unknown model" "fix b all servo_bc/bonds rope 4e9 0.3 1" "model 'rope' is not valid (expected beam, parallel or cohesive)"
 refused "a word for E" "fix b all servo_bc/bonds beam stiff 0.3 1" "keyword E: 'stiff' is not a number"
 refused "nu = 0.5" "fix b all servo_bc/bonds beam 4e9 0.5 1" "expected E > 0 Pa, -1 < nu < 0.5, alpha > 0"

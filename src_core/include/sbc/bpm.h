@@ -113,6 +113,54 @@ sbc_status sbc_bpm_add(sbc_bpm *e, const double x[3], double r, double rho, size
  * after the last sbc_bpm_add. */
 sbc_status sbc_bpm_bond_touching(sbc_bpm *e, sbc_error *err);
 
+/* ---- One bond, wherever its state is kept --------------------------------
+ * The embedded engine keeps its bonds' states in arrays; a host that keeps
+ * them with its particles (per-atom slots that migrate between ranks,
+ * bpm_host.h) calls the same functions one bond at a time. A view points at
+ * one bond's state: beam for SBC_BOND_BEAM, parallel otherwise; broken and
+ * contact only with a strength (else NULL). */
+typedef struct sbc_bpm_bond_view {
+    sbc_beam_bond *beam;
+    sbc_parallel_bond *parallel;
+    unsigned char *broken;
+    sbc_broken_bond *contact;
+} sbc_bpm_bond_view;
+
+/* Spheres at xa and xb (radii ra, rb, m) bond: |xb - xa| <= (ra + rb)(1 + touch). */
+int sbc_bpm_touch(const sbc_bpm_settings *set, const double xa[3], double ra, const double xb[3], double rb);
+
+/* Calls found(i, j, user) for every touching pair i < j of the n spheres
+ * (centres x [3n], radii r [n]) through a uniform grid of cells no smaller
+ * than the largest bonding distance; stops at the first status found
+ * returns other than SBC_OK, and returns it. */
+typedef sbc_status (*sbc_bpm_pair_fn)(size_t i, size_t j, void *user, sbc_error *err);
+sbc_status sbc_bpm_pairs(const sbc_bpm_settings *set, size_t n, const double *x, const double *r,
+                         sbc_bpm_pair_fn found, void *user, sbc_error *err);
+
+/* A new bond's state between A (xa, ra) and B (xb, rb): bond radius alpha
+ * min(ra, rb) (eq. 9), no load; a beam's frame and stiffness from A -> B. */
+void sbc_bpm_bond_start(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+                        const double xb[3], double rb);
+
+/* The bond's axial stiffness, N/m (eq. 36: k^n A, or E A / L for a beam). */
+double sbc_bpm_bond_stiffness(const sbc_bpm_settings *set, sbc_bpm_bond_view b);
+
+/* One step of one bond at t (eqs. 10-34) from the motion dt v(t - dt/2),
+ * dt w(t - dt/2) of its spheres A and B; adds its loads to fa, ma (on A) and
+ * fb, mb (on B). With a strength, a bond whose criterion reaches 1 breaks
+ * before its loads are applied: returns 1 with the strain energy it held in
+ * *fracture (J), else 0. */
+int sbc_bpm_bond_advance(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+                         const double va[3], const double wa[3], const double xb[3], double rb, const double vb[3],
+                         const double wb[3], double dt, double fa[3], double ma[3], double fb[3], double mb[3],
+                         double *fracture);
+
+/* The bond's energies at centres xa, xb (J): *strain its elastic energy
+ * (eq. 50 or 1/2 u K u; a broken bond's contact: kn dn^2/2 + |fs|^2/2 ks),
+ * *friction the work of friction in a broken bond's contact (0 intact). */
+void sbc_bpm_bond_energies(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+                           const double xb[3], double rb, double *strain, double *friction);
+
 /* Eq. 48: 0.22 sqrt(m / k) with the smallest mass and the largest bond axial
  * stiffness (k^n A for the parallel bond, E A / L for the beam), s; 0 when
  * there is no bond. */

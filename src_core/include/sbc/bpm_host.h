@@ -63,6 +63,46 @@ int sbc_bpm_host_state_doubles(const sbc_bpm *e);
 void sbc_bpm_host_state_get(const sbc_bpm *e, int k, double *state);
 void sbc_bpm_host_state_set(sbc_bpm *e, int k, const double *state);
 
+/* ---- Bonds kept with their spheres --------------------------------------
+ * A host on many ranks (LAMMPS, LIGGGHTS) keeps each bond's state in
+ * per-atom slots that migrate with its atoms, both spheres holding a copy,
+ * and computes a bond from its two spheres, one of which may be a ghost.
+ * A state is sbc_bpm_host_state_doubles(law) doubles, the layout of
+ * sbc_bpm_host_state_get; A is the sphere with the smaller atom ID, so both
+ * owners advance their copies alike and agree when a bond breaks. */
+
+/* The law without spheres: as sbc_bpm_host_create, with r_min (m) the
+ * smallest radius of the bonded spheres over every rank (a parallel bond's
+ * k^n = E / 2 r_min). NULL with the message in msg on bad input. */
+sbc_bpm *sbc_bpm_host_law(const char *model, double E, double nu, double alpha, const double *strength, double rmin,
+                          char *msg, size_t cap);
+
+/* Every touching pair i < j of the n spheres (centres x [3n], radii r [n]):
+ * returns the count and the pairs in *pairs (2 ints each, free with
+ * sbc_bpm_host_pairs_free), or -1 with the message in msg. */
+long sbc_bpm_host_pairs(const sbc_bpm *law, int n, const double *x, const double *r, int **pairs, char *msg,
+                        size_t cap);
+void sbc_bpm_host_pairs_free(int *pairs);
+
+/* A new bond between A (centre xa, radius ra) and B into state. */
+void sbc_bpm_host_bond_start(const sbc_bpm *law, const double xa[3], double ra, const double xb[3], double rb,
+                             double *state);
+
+/* One host step of one bond (sbc_bpm_host_loads' law for one bond): adds
+ * its force and moment on A to load_a [6] and on B to load_b [6] (N, N m).
+ * Returns 1 when the bond broke at this step, with the strain energy it
+ * held in *fracture (J), else 0. */
+int sbc_bpm_host_bond_step(const sbc_bpm *law, double *state, const double xa[3], double ra, const double va[3],
+                           const double wa[3], const double xb[3], double rb, const double vb[3], const double wb[3],
+                           double dt, double load_a[6], double load_b[6], double *fracture);
+
+/* The bond's axial stiffness (N/m, for eq. 48: 0.22 sqrt(m_min / k_max)),
+ * whether it is broken, and its energies (sbc_bpm_bond_energies, J). */
+double sbc_bpm_host_bond_stiffness(const sbc_bpm *law, const double *state);
+int sbc_bpm_host_bond_broken(const sbc_bpm *law, const double *state);
+void sbc_bpm_host_bond_energies(const sbc_bpm *law, const double *state, const double xa[3], double ra,
+                                const double xb[3], double rb, double *strain, double *friction);
+
 #ifdef __cplusplus
 }
 #endif

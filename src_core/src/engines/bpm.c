@@ -137,22 +137,54 @@ sbc_status sbc_bpm_add(sbc_bpm *e, const double x[3], double r, double rho, size
     return SBC_OK;
 }
 
-static double bond_radius(const sbc_bpm *e, size_t a, size_t b)
+/* bond k of the engine as a view */
+static sbc_bpm_bond_view view_of(const sbc_bpm *e, size_t k)
 {
-    return e->set.alpha * (e->r[a] < e->r[b] ? e->r[a] : e->r[b]); /* eq. 9 */
+    sbc_bpm_bond_view b;
+    b.beam = e->beam ? &e->beam[k] : NULL;
+    b.parallel = e->parallel ? &e->parallel[k] : NULL;
+    b.broken = e->broken ? &e->broken[k] : NULL;
+    b.contact = e->contact ? &e->contact[k] : NULL;
+    return b;
 }
 
-/* axial stiffness of a bond, N/m (eq. 36) */
-static double bond_axial_stiffness(const sbc_bpm *e, size_t k)
+int sbc_bpm_touch(const sbc_bpm_settings *set, const double xa[3], double ra, const double xb[3], double rb)
 {
-    if (e->set.model == SBC_BOND_PARALLEL)
-        return e->set.parallel.kn * sbc_bond_area(e->parallel[k].rb);
-    return e->beam[k].k[0];
+    double d = 0.0, reach = (ra + rb) * (1.0 + set->touch);
+    int k;
+    for (k = 0; k < 3; ++k) {
+        double dx = xb[k] - xa[k];
+        d += dx * dx;
+    }
+    return d <= reach * reach;
 }
 
-static sbc_status add_bond(sbc_bpm *e, size_t a, size_t b, sbc_error *err)
+void sbc_bpm_bond_start(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+                        const double xb[3], double rb)
 {
-    sbc_bpm_bond *bd;
+    double rbond = set->alpha * (ra < rb ? ra : rb); /* eq. 9 */
+    if (b.broken) {
+        *b.broken = 0;
+        memset(b.contact, 0, sizeof *b.contact);
+    }
+    if (set->model == SBC_BOND_PARALLEL) {
+        memset(b.parallel, 0, sizeof *b.parallel);
+        b.parallel->rb = rbond;
+    } else {
+        sbc_beam_bond_init(&set->beam, rbond, xa, xb, b.beam);
+    }
+}
+
+double sbc_bpm_bond_stiffness(const sbc_bpm_settings *set, sbc_bpm_bond_view b)
+{
+    if (set->model == SBC_BOND_PARALLEL)
+        return set->parallel.kn * sbc_bond_area(b.parallel->rb);
+    return b.beam->k[0];
+}
+
+static sbc_status add_bond(size_t a, size_t b, void *user, sbc_error *err)
+{
+    sbc_bpm *e = user;
     int parallel = e->set.model == SBC_BOND_PARALLEL;
     if (e->nb == e->bcap) {
         size_t cap = e->bcap ? 2 * e->bcap : 256;
@@ -164,53 +196,42 @@ static sbc_status add_bond(sbc_bpm *e, size_t a, size_t b, sbc_error *err)
             return sbc_fail(err, SBC_ERR_NOMEM, "out of memory for %zu bonds", cap);
         e->bcap = cap;
     }
-    bd = &e->bonds[e->nb];
-    memset(bd, 0, sizeof *bd);
-    if (e->broken) {
-        e->broken[e->nb] = 0;
-        memset(&e->contact[e->nb], 0, sizeof *e->contact);
-    }
-    bd->a = a;
-    bd->b = b;
-    if (parallel) {
-        memset(&e->parallel[e->nb], 0, sizeof *e->parallel);
-        e->parallel[e->nb].rb = bond_radius(e, a, b);
-    } else {
-        sbc_beam_bond_init(&e->set.beam, bond_radius(e, a, b), &e->x[3 * a], &e->x[3 * b], &e->beam[e->nb]);
-    }
+    memset(&e->bonds[e->nb], 0, sizeof e->bonds[e->nb]);
+    e->bonds[e->nb].a = a;
+    e->bonds[e->nb].b = b;
+    sbc_bpm_bond_start(&e->set, view_of(e, e->nb), &e->x[3 * a], e->r[a], &e->x[3 * b], e->r[b]);
     ++e->nb;
     ++e->coordination[a];
     ++e->coordination[b];
     return SBC_OK;
 }
 
-/* Pairs within reach through a uniform grid of cells no smaller than the
- * largest bonding distance. */
-sbc_status sbc_bpm_bond_touching(sbc_bpm *e, sbc_error *err)
+sbc_status sbc_bpm_pairs(const sbc_bpm_settings *set, size_t n, const double *x, const double *r,
+                         sbc_bpm_pair_fn found, void *user, sbc_error *err)
 {
     double lo[3], hi[3], cell, rmax = 0.0;
     size_t nc[3], ncells, i, *head = NULL, *next = NULL, k;
     sbc_status st = SBC_OK;
-    if (e->n == 0)
+    if (n == 0)
         return SBC_OK;
     for (k = 0; k < 3; ++k)
-        lo[k] = hi[k] = e->x[k];
-    for (i = 0; i < e->n; ++i) {
+        lo[k] = hi[k] = x[k];
+    for (i = 0; i < n; ++i) {
         for (k = 0; k < 3; ++k) {
-            if (e->x[3 * i + k] < lo[k]) lo[k] = e->x[3 * i + k];
-            if (e->x[3 * i + k] > hi[k]) hi[k] = e->x[3 * i + k];
+            if (x[3 * i + k] < lo[k]) lo[k] = x[3 * i + k];
+            if (x[3 * i + k] > hi[k]) hi[k] = x[3 * i + k];
         }
-        if (e->r[i] > rmax) rmax = e->r[i];
+        if (r[i] > rmax) rmax = r[i];
     }
-    cell = 2.0 * rmax * (1.0 + e->set.touch) * (1.0 + 1e-12);
+    cell = 2.0 * rmax * (1.0 + set->touch) * (1.0 + 1e-12);
     ncells = 1;
     for (k = 0; k < 3; ++k) {
         double span = (hi[k] - lo[k]) / cell;
         nc[k] = span < 1e6 ? (size_t)span + 1 : 1000000;
         ncells *= nc[k];
     }
-    if (ncells > 8 * e->n + 64) { /* sparse spheres: a coarser grid */
-        double f = cbrt((double)ncells / (double)(8 * e->n + 64));
+    if (ncells > 8 * n + 64) { /* sparse spheres: a coarser grid */
+        double f = cbrt((double)ncells / (double)(8 * n + 64));
         cell *= f;
         ncells = 1;
         for (k = 0; k < 3; ++k) {
@@ -219,7 +240,7 @@ sbc_status sbc_bpm_bond_touching(sbc_bpm *e, sbc_error *err)
         }
     }
     head = malloc(ncells * sizeof *head);
-    next = malloc(e->n * sizeof *next);
+    next = malloc(n * sizeof *next);
     if (!head || !next) {
         free(head);
         free(next);
@@ -227,52 +248,52 @@ sbc_status sbc_bpm_bond_touching(sbc_bpm *e, sbc_error *err)
     }
     for (k = 0; k < ncells; ++k)
         head[k] = (size_t)-1;
-    for (i = 0; i < e->n; ++i) {
+    for (i = 0; i < n; ++i) {
         size_t c[3], id;
         for (k = 0; k < 3; ++k) {
-            c[k] = (size_t)((e->x[3 * i + k] - lo[k]) / cell);
+            c[k] = (size_t)((x[3 * i + k] - lo[k]) / cell);
             if (c[k] >= nc[k]) c[k] = nc[k] - 1;
         }
         id = (c[2] * nc[1] + c[1]) * nc[0] + c[0];
         next[i] = head[id];
         head[id] = i;
     }
-    for (i = 0; i < e->n && st == SBC_OK; ++i) {
+    for (i = 0; i < n && st == SBC_OK; ++i) {
         long c[3], d0, d1, d2;
         for (k = 0; k < 3; ++k) {
-            c[k] = (long)((e->x[3 * i + k] - lo[k]) / cell);
+            c[k] = (long)((x[3 * i + k] - lo[k]) / cell);
             if (c[k] >= (long)nc[k]) c[k] = (long)nc[k] - 1;
         }
-        for (d2 = -1; d2 <= 1; ++d2)
-            for (d1 = -1; d1 <= 1; ++d1)
-                for (d0 = -1; d0 <= 1; ++d0) {
+        for (d2 = -1; d2 <= 1 && st == SBC_OK; ++d2)
+            for (d1 = -1; d1 <= 1 && st == SBC_OK; ++d1)
+                for (d0 = -1; d0 <= 1 && st == SBC_OK; ++d0) {
                     long q0 = c[0] + d0, q1 = c[1] + d1, q2 = c[2] + d2;
                     size_t j;
                     if (q0 < 0 || q1 < 0 || q2 < 0 || q0 >= (long)nc[0] || q1 >= (long)nc[1] || q2 >= (long)nc[2])
                         continue;
                     for (j = head[((size_t)q2 * nc[1] + (size_t)q1) * nc[0] + (size_t)q0]; j != (size_t)-1;
-                         j = next[j]) {
-                        double d = 0.0, reach;
-                        if (j <= i)
-                            continue;
-                        for (k = 0; k < 3; ++k) {
-                            double dx = e->x[3 * j + k] - e->x[3 * i + k];
-                            d += dx * dx;
-                        }
-                        reach = (e->r[i] + e->r[j]) * (1.0 + e->set.touch);
-                        if (d <= reach * reach && (st = add_bond(e, i, j, err)) != SBC_OK)
+                         j = next[j])
+                        if (j > i && sbc_bpm_touch(set, &x[3 * i], r[i], &x[3 * j], r[j]) &&
+                            (st = found(i, j, user, err)) != SBC_OK)
                             break;
-                    }
                 }
     }
     free(head);
     free(next);
+    return st;
+}
+
+sbc_status sbc_bpm_bond_touching(sbc_bpm *e, sbc_error *err)
+{
+    size_t k;
+    sbc_status st = sbc_bpm_pairs(&e->set, e->n, e->x, e->r, add_bond, e, err);
     if (st != SBC_OK)
         return st;
     for (k = 0; k < e->nb; ++k) { /* eq. 37 */
         sbc_bpm_bond *bd = &e->bonds[k];
         double cn = 0.5 * (e->coordination[bd->a] + e->coordination[bd->b]);
-        bd->c = sbc_bond_damping(e->set.xi, bond_axial_stiffness(e, k), e->m[bd->a], e->m[bd->b], cn);
+        bd->c = sbc_bond_damping(e->set.xi, sbc_bpm_bond_stiffness(&e->set, view_of(e, k)), e->m[bd->a],
+                                 e->m[bd->b], cn);
     }
     return SBC_OK;
 }
@@ -285,111 +306,137 @@ double sbc_bpm_critical_dt(const sbc_bpm *e)
         if (i == 0 || e->m[i] < mmin)
             mmin = e->m[i];
     for (i = 0; i < e->nb; ++i) {
-        double k = bond_axial_stiffness(e, i);
+        double k = sbc_bpm_bond_stiffness(&e->set, view_of(e, i));
         if (k > kmax)
             kmax = k;
     }
     return kmax > 0.0 ? 0.22 * sqrt(mmin / kmax) : 0.0; /* eq. 48 */
 }
 
-/* contact law of bond k once broken */
-static sbc_friction_law broken_law(const sbc_bpm *e, size_t k)
+/* contact law of a bond once broken */
+static sbc_friction_law broken_law(const sbc_bpm_settings *set, sbc_bpm_bond_view b)
 {
     sbc_friction_law law;
-    law.kn = bond_axial_stiffness(e, k);
-    law.ks = e->set.model == SBC_BOND_PARALLEL ? law.kn * e->set.parallel.ks / e->set.parallel.kn
-                                               : law.kn / (2.0 * (1.0 + e->set.beam.nu));
-    law.mu = e->set.mu;
+    law.kn = sbc_bpm_bond_stiffness(set, b);
+    law.ks = set->model == SBC_BOND_PARALLEL ? law.kn * set->parallel.ks / set->parallel.kn
+                                             : law.kn / (2.0 * (1.0 + set->beam.nu));
+    law.mu = set->mu;
     return law;
 }
 
-/* strain energy bond k holds (intact), J */
-static double bond_energy(const sbc_bpm *e, size_t k)
+/* strain energy an intact bond holds, J */
+static double bond_energy(const sbc_bpm_settings *set, sbc_bpm_bond_view b)
 {
-    return e->set.model == SBC_BOND_BEAM ? e->beam[k].w : sbc_parallel_bond_energy(&e->set.parallel, &e->parallel[k]);
+    return set->model == SBC_BOND_BEAM ? b.beam->w : sbc_parallel_bond_energy(&set->parallel, b.parallel);
 }
 
-/* bond k fails: its energy is dissipated, its loads vanish */
-static void break_bond(sbc_bpm *e, size_t k)
+/* the bond fails: its loads vanish; returns the energy it held (dissipated) */
+static double break_bond(const sbc_bpm_settings *set, sbc_bpm_bond_view b)
 {
-    e->w_fracture += bond_energy(e, k);
-    if (e->set.model == SBC_BOND_BEAM) {
-        memset(e->beam[k].f, 0, sizeof e->beam[k].f);
-        e->beam[k].w = 0.0;
+    double w = bond_energy(set, b);
+    if (set->model == SBC_BOND_BEAM) {
+        memset(b.beam->f, 0, sizeof b.beam->f);
+        b.beam->w = 0.0;
     } else {
-        double rb = e->parallel[k].rb;
-        memset(&e->parallel[k], 0, sizeof e->parallel[k]);
-        e->parallel[k].rb = rb;
+        double rb = b.parallel->rb;
+        memset(b.parallel, 0, sizeof *b.parallel);
+        b.parallel->rb = rb;
     }
-    e->broken[k] = 1;
-    memset(&e->contact[k], 0, sizeof e->contact[k]);
-    ++e->nbroken;
+    *b.broken = 1;
+    memset(b.contact, 0, sizeof *b.contact);
+    return w;
+}
+
+int sbc_bpm_bond_advance(const sbc_bpm_settings *set, sbc_bpm_bond_view bv, const double xa[3], double ra,
+                         const double va[3], const double wa_[3], const double xb[3], double rb, const double vb[3],
+                         const double wb_[3], double dt, double fa[3], double ma[3], double fb[3], double mb[3],
+                         double *fracture)
+{
+    double dxa[3], dta[3], dxb[3], dtb[3], xc[3], n[3], ra_[3], rb_[3], wa[3], wb[3], du[3], dth[3], L = 0.0;
+    int q, beam = set->model == SBC_BOND_BEAM, failure = set->strength.tension > 0.0;
+    int broken = failure && *bv.broken;
+    for (q = 0; q < 3; ++q) {
+        dxa[q] = dt * va[q];
+        dta[q] = dt * wa_[q];
+        dxb[q] = dt * vb[q];
+        dtb[q] = dt * wb_[q];
+    }
+    if (!beam || broken) { /* the contact point's motion, eqs. 14-15 */
+        L = sbc_parallel_bond_geometry(xa, ra, xb, rb, n, xc);
+        for (q = 0; q < 3; ++q) {
+            ra_[q] = xc[q] - xa[q];
+            rb_[q] = xc[q] - xb[q];
+        }
+        sbc_cross3(dta, ra_, wa);
+        sbc_cross3(dtb, rb_, wb);
+        for (q = 0; q < 3; ++q) {
+            du[q] = (dxa[q] + wa[q]) - (dxb[q] + wb[q]);
+            dth[q] = dta[q] - dtb[q];
+        }
+    }
+    if (broken) {
+        sbc_friction_law law = broken_law(set, bv);
+        double f[3], tf[3];
+        sbc_broken_bond_increment(&law, bv.contact, ra + rb - L, n, du, f);
+        for (q = 0; q < 3; ++q) {
+            fa[q] += f[q];
+            fb[q] -= f[q];
+        }
+        sbc_cross3(ra_, f, tf); /* eq. 20 */
+        for (q = 0; q < 3; ++q) ma[q] += tf[q];
+        sbc_cross3(f, rb_, tf); /* (xc - xb) x (-f) */
+        for (q = 0; q < 3; ++q) mb[q] += tf[q];
+        return 0;
+    }
+    if (beam)
+        sbc_beam_bond_increment(bv.beam, dxa, dta, dxb, dtb);
+    else
+        sbc_parallel_bond_increment(&set->parallel, bv.parallel, n, du, dth);
+    if (failure) {
+        double l[4];
+        if (beam) sbc_beam_bond_loads(bv.beam, l);
+        else sbc_parallel_bond_loads(bv.parallel, n, l);
+        if (sbc_bond_criterion(&set->strength, l[0], l[1], l[2], l[3]) >= 1.0) {
+            *fracture = break_bond(set, bv);
+            return 1;
+        }
+    }
+    if (beam)
+        sbc_beam_bond_apply(bv.beam, fa, ma, fb, mb);
+    else
+        sbc_parallel_bond_apply(bv.parallel, xa, xb, xc, fa, ma, fb, mb);
+    return 0;
+}
+
+void sbc_bpm_bond_energies(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+                           const double xb[3], double rb, double *strain, double *friction)
+{
+    if (b.broken && *b.broken) { /* elastic part as strain, the rest (friction) dissipated */
+        sbc_friction_law law = broken_law(set, b);
+        double n[3], xc[3], L = sbc_parallel_bond_geometry(xa, ra, xb, rb, n, xc);
+        double el = sbc_broken_bond_energy(&law, b.contact, ra + rb - L);
+        *strain = el;
+        *friction = b.contact->w - el;
+    } else {
+        *strain = bond_energy(set, b);
+        *friction = 0.0;
+    }
 }
 
 /* Bond loads at t from the increments dt v(t - dt/2), eqs. 10-34; adds the
  * forces to load (6 per sphere). */
 void sbc_bpm_bond_loads(sbc_bpm *e, double *load)
 {
-    double dt = e->dt;
     size_t k;
-    int failure = e->set.strength.tension > 0.0;
     for (k = 0; k < e->nb; ++k) {
-        sbc_bpm_bond *bd = &e->bonds[k];
-        size_t a = bd->a, b = bd->b;
-        const double *xa = &e->x[3 * a], *xb = &e->x[3 * b];
-        double dxa[3], dta[3], dxb[3], dtb[3], xc[3], n[3], ra_[3], rb_[3], wa[3], wb[3], du[3], dth[3], L = 0.0;
-        double *fa = &load[6 * a], *ma = &load[6 * a + 3], *fb = &load[6 * b], *mb = &load[6 * b + 3];
-        int q, beam = e->set.model == SBC_BOND_BEAM, broken = failure && e->broken[k];
-        for (q = 0; q < 3; ++q) {
-            dxa[q] = dt * e->v[3 * a + q];
-            dta[q] = dt * e->w[3 * a + q];
-            dxb[q] = dt * e->v[3 * b + q];
-            dtb[q] = dt * e->w[3 * b + q];
+        size_t a = e->bonds[k].a, b = e->bonds[k].b;
+        double w = 0.0;
+        if (sbc_bpm_bond_advance(&e->set, view_of(e, k), &e->x[3 * a], e->r[a], &e->v[3 * a], &e->w[3 * a],
+                                 &e->x[3 * b], e->r[b], &e->v[3 * b], &e->w[3 * b], e->dt, &load[6 * a],
+                                 &load[6 * a + 3], &load[6 * b], &load[6 * b + 3], &w)) {
+            e->w_fracture += w;
+            ++e->nbroken;
         }
-        if (!beam || broken) { /* the contact point's motion, eqs. 14-15 */
-            L = sbc_parallel_bond_geometry(xa, e->r[a], xb, e->r[b], n, xc);
-            for (q = 0; q < 3; ++q) {
-                ra_[q] = xc[q] - xa[q];
-                rb_[q] = xc[q] - xb[q];
-            }
-            sbc_cross3(dta, ra_, wa);
-            sbc_cross3(dtb, rb_, wb);
-            for (q = 0; q < 3; ++q) {
-                du[q] = (dxa[q] + wa[q]) - (dxb[q] + wb[q]);
-                dth[q] = dta[q] - dtb[q];
-            }
-        }
-        if (broken) {
-            sbc_friction_law law = broken_law(e, k);
-            double f[3], tf[3];
-            sbc_broken_bond_increment(&law, &e->contact[k], e->r[a] + e->r[b] - L, n, du, f);
-            for (q = 0; q < 3; ++q) {
-                fa[q] += f[q];
-                fb[q] -= f[q];
-            }
-            sbc_cross3(ra_, f, tf); /* eq. 20 */
-            for (q = 0; q < 3; ++q) ma[q] += tf[q];
-            sbc_cross3(f, rb_, tf); /* (xc - xb) x (-f) */
-            for (q = 0; q < 3; ++q) mb[q] += tf[q];
-            continue;
-        }
-        if (beam)
-            sbc_beam_bond_increment(&e->beam[k], dxa, dta, dxb, dtb);
-        else
-            sbc_parallel_bond_increment(&e->set.parallel, &e->parallel[k], n, du, dth);
-        if (failure) {
-            double l[4];
-            if (beam) sbc_beam_bond_loads(&e->beam[k], l);
-            else sbc_parallel_bond_loads(&e->parallel[k], n, l);
-            if (sbc_bond_criterion(&e->set.strength, l[0], l[1], l[2], l[3]) >= 1.0) {
-                break_bond(e, k);
-                continue;
-            }
-        }
-        if (beam)
-            sbc_beam_bond_apply(&e->beam[k], fa, ma, fb, mb);
-        else
-            sbc_parallel_bond_apply(&e->parallel[k], xa, xb, xc, fa, ma, fb, mb);
     }
 }
 
@@ -473,16 +520,12 @@ sbc_bpm_energy sbc_bpm_energies(const sbc_bpm *e)
     en.external = e->w_ext;
     en.strain = 0.0;
     for (k = 0; k < e->nb; ++k) {
-        if (e->broken && e->broken[k]) { /* elastic part as strain, the rest (friction) dissipated */
-            sbc_friction_law law = broken_law(e, k);
-            double n[3], xc[3], L = sbc_parallel_bond_geometry(&e->x[3 * e->bonds[k].a], e->r[e->bonds[k].a],
-                                                               &e->x[3 * e->bonds[k].b], e->r[e->bonds[k].b], n, xc);
-            double el = sbc_broken_bond_energy(&law, &e->contact[k], e->r[e->bonds[k].a] + e->r[e->bonds[k].b] - L);
-            en.strain += el;
-            en.dissipated += e->contact[k].w - el;
-        } else {
-            en.strain += bond_energy(e, k);
-        }
+        size_t a = e->bonds[k].a, b = e->bonds[k].b;
+        double strain, friction;
+        sbc_bpm_bond_energies(&e->set, view_of(e, k), &e->x[3 * a], e->r[a], &e->x[3 * b], e->r[b], &strain,
+                              &friction);
+        en.strain += strain;
+        en.dissipated += friction;
     }
     big = fabs(en.kinetic);
     if (fabs(en.strain) > big) big = fabs(en.strain);

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static sbc_bpm *fail_create(sbc_bpm *e, char *msg, size_t cap, const char *text)
@@ -13,15 +14,13 @@ static sbc_bpm *fail_create(sbc_bpm *e, char *msg, size_t cap, const char *text)
     return NULL;
 }
 
-sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alpha, const double *strength, int n,
-                             const double *x, const double *r, const double *m, char *msg, size_t cap)
+sbc_bpm *sbc_bpm_host_law(const char *model, double E, double nu, double alpha, const double *strength, double rmin,
+                          char *msg, size_t cap)
 {
     sbc_bpm_settings set = sbc_bpm_settings_default();
     sbc_bpm *e = NULL;
     sbc_error err;
     char text[SBC_ERROR_LEN];
-    double rmin = HUGE_VAL;
-    int i;
     if (!model || (strcmp(model, "beam") != 0 && strcmp(model, "parallel") != 0))
         return fail_create(NULL, msg, cap, "bonds: model must be beam or parallel");
     if (!(E > 0.0) || !isfinite(E) || !(nu > -1.0 && nu < 0.5) || !(alpha > 0.0) || !isfinite(alpha)) {
@@ -29,11 +28,10 @@ sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alph
                  nu, alpha);
         return fail_create(NULL, msg, cap, text);
     }
-    if (n < 2 || !x || !r || !m)
-        return fail_create(NULL, msg, cap, "bonds: fewer than 2 spheres, or their centres, radii or masses missing");
-    for (i = 0; i < n; ++i)
-        if (r[i] > 0.0 && r[i] < rmin)
-            rmin = r[i];
+    if (!(rmin > 0.0) || !isfinite(rmin)) {
+        snprintf(text, sizeof text, "bonds: smallest radius %g m (expected > 0)", rmin);
+        return fail_create(NULL, msg, cap, text);
+    }
     set.model = strcmp(model, "beam") == 0 ? SBC_BOND_BEAM : SBC_BOND_PARALLEL;
     set.beam.E = E;
     set.beam.nu = nu;
@@ -57,6 +55,25 @@ sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alph
     }
     if (sbc_bpm_create(&set, &e, &err) != SBC_OK)
         return fail_create(e, msg, cap, err.message);
+    return e;
+}
+
+sbc_bpm *sbc_bpm_host_create(const char *model, double E, double nu, double alpha, const double *strength, int n,
+                             const double *x, const double *r, const double *m, char *msg, size_t cap)
+{
+    sbc_bpm *e = NULL;
+    sbc_error err;
+    char text[SBC_ERROR_LEN];
+    double rmin = HUGE_VAL;
+    int i;
+    if (n < 2 || !x || !r || !m)
+        return fail_create(NULL, msg, cap, "bonds: fewer than 2 spheres, or their centres, radii or masses missing");
+    for (i = 0; i < n; ++i)
+        if (r[i] > 0.0 && r[i] < rmin)
+            rmin = r[i];
+    e = sbc_bpm_host_law(model, E, nu, alpha, strength, rmin, msg, cap);
+    if (!e)
+        return NULL;
     for (i = 0; i < n; ++i) {
         double rho = m[i] / (4.0 / 3.0 * SBC_PI * r[i] * r[i] * r[i]);
         if (!(r[i] > 0.0) || !(m[i] > 0.0) || !isfinite(rho) || !isfinite(x[3 * i]) || !isfinite(x[3 * i + 1]) ||
@@ -112,7 +129,10 @@ static int bond_doubles(const sbc_bpm *e)
     return (int)((e->set.model == SBC_BOND_BEAM ? sizeof(sbc_beam_bond) : sizeof(sbc_parallel_bond)) / sizeof(double));
 }
 
-int sbc_bpm_host_state_doubles(const sbc_bpm *e) { return bond_doubles(e) + (e->broken ? BROKEN_DOUBLES : 0); }
+int sbc_bpm_host_state_doubles(const sbc_bpm *e)
+{
+    return bond_doubles(e) + (e->set.strength.tension > 0.0 ? BROKEN_DOUBLES : 0);
+}
 
 void sbc_bpm_host_state_get(const sbc_bpm *e, int k, double *state)
 {
@@ -143,4 +163,130 @@ void sbc_bpm_host_state_set(sbc_bpm *e, int k, const double *state)
         e->broken[k] = now;
         memcpy(&e->contact[k], &b[1], sizeof e->contact[k]);
     }
+}
+
+/* ---- bonds kept with their spheres ---- */
+
+typedef struct pair_list {
+    int *pairs;
+    long count, cap;
+} pair_list;
+
+static sbc_status keep_pair(size_t i, size_t j, void *user, sbc_error *err)
+{
+    pair_list *p = user;
+    if (p->count == p->cap) {
+        long cap = p->cap ? 2 * p->cap : 1024;
+        int *q = realloc(p->pairs, (size_t)cap * 2 * sizeof *q);
+        if (!q)
+            return sbc_fail(err, SBC_ERR_NOMEM, "out of memory for %ld bonded pairs", cap);
+        p->pairs = q;
+        p->cap = cap;
+    }
+    p->pairs[2 * p->count] = (int)i;
+    p->pairs[2 * p->count + 1] = (int)j;
+    ++p->count;
+    return SBC_OK;
+}
+
+long sbc_bpm_host_pairs(const sbc_bpm *law, int n, const double *x, const double *r, int **pairs, char *msg,
+                        size_t cap)
+{
+    pair_list p = {NULL, 0, 0};
+    sbc_error err;
+    *pairs = NULL;
+    if (n < 0 || (n > 0 && (!x || !r))) {
+        if (msg && cap > 0)
+            snprintf(msg, cap, "bonds: %d spheres without centres or radii", n);
+        return -1;
+    }
+    if (sbc_bpm_pairs(&law->set, (size_t)n, x, r, keep_pair, &p, &err) != SBC_OK) {
+        free(p.pairs);
+        if (msg && cap > 0)
+            snprintf(msg, cap, "%s", err.message);
+        return -1;
+    }
+    *pairs = p.pairs;
+    return p.count;
+}
+
+void sbc_bpm_host_pairs_free(int *pairs) { free(pairs); }
+
+/* one bond's state as structs, read from and written back to its doubles */
+typedef struct unpacked {
+    sbc_beam_bond beam;
+    sbc_parallel_bond parallel;
+    unsigned char broken;
+    sbc_broken_bond contact;
+} unpacked;
+
+static sbc_bpm_bond_view unpack(const sbc_bpm *law, const double *state, unpacked *u)
+{
+    sbc_bpm_bond_view b = {NULL, NULL, NULL, NULL};
+    if (law->set.model == SBC_BOND_BEAM) {
+        memcpy(&u->beam, state, sizeof u->beam);
+        b.beam = &u->beam;
+    } else {
+        memcpy(&u->parallel, state, sizeof u->parallel);
+        b.parallel = &u->parallel;
+    }
+    if (law->set.strength.tension > 0.0) {
+        const double *f = &state[bond_doubles(law)];
+        u->broken = f[0] != 0.0;
+        memcpy(&u->contact, &f[1], sizeof u->contact);
+        b.broken = &u->broken;
+        b.contact = &u->contact;
+    }
+    return b;
+}
+
+static void pack(const sbc_bpm *law, const unpacked *u, double *state)
+{
+    if (law->set.model == SBC_BOND_BEAM)
+        memcpy(state, &u->beam, sizeof u->beam);
+    else
+        memcpy(state, &u->parallel, sizeof u->parallel);
+    if (law->set.strength.tension > 0.0) {
+        double *f = &state[bond_doubles(law)];
+        f[0] = u->broken;
+        memcpy(&f[1], &u->contact, sizeof u->contact);
+    }
+}
+
+void sbc_bpm_host_bond_start(const sbc_bpm *law, const double xa[3], double ra, const double xb[3], double rb,
+                             double *state)
+{
+    unpacked u;
+    memset(&u, 0, sizeof u);
+    sbc_bpm_bond_start(&law->set, unpack(law, state, &u), xa, ra, xb, rb);
+    pack(law, &u, state);
+}
+
+int sbc_bpm_host_bond_step(const sbc_bpm *law, double *state, const double xa[3], double ra, const double va[3],
+                           const double wa[3], const double xb[3], double rb, const double vb[3], const double wb[3],
+                           double dt, double load_a[6], double load_b[6], double *fracture)
+{
+    unpacked u;
+    int broke = sbc_bpm_bond_advance(&law->set, unpack(law, state, &u), xa, ra, va, wa, xb, rb, vb, wb, dt, load_a,
+                                     &load_a[3], load_b, &load_b[3], fracture);
+    pack(law, &u, state);
+    return broke;
+}
+
+double sbc_bpm_host_bond_stiffness(const sbc_bpm *law, const double *state)
+{
+    unpacked u;
+    return sbc_bpm_bond_stiffness(&law->set, unpack(law, state, &u));
+}
+
+int sbc_bpm_host_bond_broken(const sbc_bpm *law, const double *state)
+{
+    return law->set.strength.tension > 0.0 && state[bond_doubles(law)] != 0.0;
+}
+
+void sbc_bpm_host_bond_energies(const sbc_bpm *law, const double *state, const double xa[3], double ra,
+                                const double xb[3], double rb, double *strain, double *friction)
+{
+    unpacked u;
+    sbc_bpm_bond_energies(&law->set, unpack(law, state, &u), xa, ra, xb, rb, strain, friction);
 }
