@@ -39,6 +39,7 @@ create_atoms 1 region solid
 set type 1 diameter 0.01
 set type 1 density 925
 velocity all ramp vx 0 1e-5 x 0 0.25 units box
+comm_modify cutoff 0.015
 fix bonds all servo_bc/bonds beam 4e9 0.3 1.0
 fix integrate all nve/sphere
 thermo_style custom step f_bonds f_bonds[1]

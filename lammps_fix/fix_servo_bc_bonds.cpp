@@ -49,7 +49,7 @@ using namespace FixConst;
 FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), strength{0.0, 0.0, 0.0, 0.0, 0.0}, failure(false), kn(0.0),
     bonds(nullptr), contacts(nullptr), n(0), dim(3), reported(-1), last_step(-1), rmin(0.0), maxb(0), per(0),
-    width(0), critical_dt(0.0), formed(0), slot(nullptr), carry(nullptr), step_load(nullptr), step_motion(nullptr), partner_at(nullptr),
+    width(0), critical_dt(0.0), formed(0), slot(nullptr), carry(nullptr), step_load(nullptr), step_motion(nullptr), partner_at(nullptr), partner_slot(nullptr), slot_load(nullptr),
     nmax_slots(0), have_prev(false), restarted(false), longest(0.0), reduced_at(-1), sums{0.0, 0.0, 0.0, 0.0, 0.0},
     kinetic_mine(0.0), breaks_fp(nullptr)
 {
@@ -145,6 +145,8 @@ FixServoBCBonds::~FixServoBCBonds()
   memory->destroy(step_load);
   memory->destroy(step_motion);
   memory->destroy(partner_at);
+  memory->destroy(partner_slot);
+  memory->destroy(slot_load);
   if (breaks_fp) fclose(breaks_fp);
   sbc_bpm_free(bonds);
   sbc_cohesive_host_free(contacts);

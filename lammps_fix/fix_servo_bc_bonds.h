@@ -108,7 +108,10 @@ class FixServoBCBonds : public Fix {
   int formed;                              // bonds formed (every rank)
   double **slot, **carry;
   double **step_load, **step_motion;       // this step's bond loads (6) and motion v | omega (6), local atoms
-  int **partner_at;                        // per slot of an owned atom: its partner's owned or ghost index
+  int **partner_at;                        // per slot of an owned atom: its partner's owned or ghost index (-1:
+                                           // a broken bond's partner out of reach)
+  int **partner_slot;                      // the partner's slot of the same bond when it is owned here, else -1
+  double **slot_load;                      // this step's load of each slot's bond on the atom (6 per slot)
   int nmax_slots;                          // rows allocated
   bool have_prev;                          // carry holds a last end of step's loads
   bool restarted;                          // slots came from a restart file

@@ -6,7 +6,8 @@
    owners agree on every load and on the step a bond breaks. The slots
    migrate with their atoms (pack_exchange) and go into restart files
    (pack_restart); the partner of each slot is looked up once per neighbour
-   build (map_images) and must then be owned or a ghost of this rank.
+   build (map_images) and must then be owned or a ghost of this rank, unless
+   the bond is broken (its contact is then apart).
 ------------------------------------------------------------------------- */
 
 #include "fix_servo_bc_bonds.h"
@@ -65,7 +66,7 @@ void FixServoBCBonds::create_slots()
   // a bond forms at |xb - xa| <= (ra + rb)(1 + 1e-9): the partner must be a ghost when another rank owns it
   const double reach = 2.0 * rmax * (1.0 + 1e-9);
   const double cut = std::min(comm->cutghost[0], std::min(comm->cutghost[1], comm->cutghost[2]));
-  if (comm->nprocs > 1 && cut < reach)
+  if ((comm->nprocs > 1 || domain->xperiodic || domain->yperiodic || domain->zperiodic) && cut < reach)
     fail("the ghost cutoff " + std::to_string(cut) + " m is shorter than a bond at creation (2 r_max = " +
          std::to_string(reach) + " m); set it to the longest a bond may stretch to (comm_modify cutoff in "
          "LAMMPS, communicate single cutoff in LIGGGHTS)");
@@ -173,6 +174,11 @@ void FixServoBCBonds::map_images()
     for (int s = 0; s < count; s++) {
       const tagint t = (tagint) slot[i][1 + s * (1 + per)];
       const int j = partner(t, x[i]);
+      // a broken bond's partner out of reach: its contact is apart (step_slots)
+      if (j < 0 && sbc_bpm_host_bond_broken(bonds, &slot[i][2 + s * (1 + per)])) {
+        partner_at[i][s] = -1;
+        continue;
+      }
       if (j < 0) {
         const double cut = std::min(comm->cutghost[0], std::min(comm->cutghost[1], comm->cutghost[2]));
         fail_here("the bond of atoms " + std::to_string((long) tag[i]) + " and " + std::to_string((long) t) +
@@ -183,6 +189,21 @@ void FixServoBCBonds::map_images()
                   "communicate single cutoff in LIGGGHTS)");
       }
       partner_at[i][s] = j;
+    }
+  }
+  // the same bond in the partner's slots, when this rank owns both atoms
+  for (int i = 0; i < nlocal; i++) {
+    const int count = (int) slot[i][0];
+    for (int s = 0; s < count; s++) {
+      const int j = partner_at[i][s];
+      partner_slot[i][s] = -1;
+      if (j < 0 || j >= nlocal) continue;
+      const int other = (int) slot[j][0];
+      for (int q = 0; q < other && partner_slot[i][s] < 0; q++)
+        if ((tagint) slot[j][1 + q * (1 + per)] == tag[i]) partner_slot[i][s] = q;
+      if (partner_slot[i][s] < 0)
+        fail_here("atom " + std::to_string((long) tag[j]) + " keeps no bond to atom " + std::to_string((long) tag[i]) +
+                  ", which keeps one to it (its per-atom data were changed)");
     }
   }
 }
@@ -206,7 +227,12 @@ int FixServoBCBonds::partner(tagint t, const double *near) const
 
 /* every bond of the owned atoms: their loads into f and torque; motion false
    (a run's setup) sees the last configuration again with no motion, so the
-   states keep their loads and the same loads are added */
+   states keep their loads and the same loads are added. A bond whose atoms
+   this rank both owns is advanced once, from its end A, and its state copied
+   to end B's slot; a bond to a ghost is advanced here and on the ghost's
+   rank alike. Each atom then sums its bonds' loads in slot order, so the
+   sums do not depend on which partners are ghosts, nor the results on the
+   rank count */
 void FixServoBCBonds::step_slots(bool motion)
 {
   if (motion && !comm->ghost_velocity) comm->forward_comm_fix(this);    // v, omega of the ghosts
@@ -215,9 +241,9 @@ void FixServoBCBonds::step_slots(bool motion)
   double *radius = atom->radius;
   tagint *tag = atom->tag;
   const double dt = update->dt, rest[3] = {0.0, 0.0, 0.0};
+  const int stride = 1 + per;
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    double acc[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     const double *vi = motion ? v[i] : rest, *wi = motion ? omega[i] : rest;
     for (int c = 0; c < 3; c++) {
       step_motion[i][c] = vi[c];
@@ -225,23 +251,41 @@ void FixServoBCBonds::step_slots(bool motion)
     }
     const int count = (int) slot[i][0];
     for (int s = 0; s < count; s++) {
-      const tagint t = (tagint) slot[i][1 + s * (1 + per)];
-      double *state = &slot[i][2 + s * (1 + per)];
+      const tagint t = (tagint) slot[i][1 + s * stride];
+      double *state = &slot[i][2 + s * stride], *own = &slot_load[i][6 * s];
       const int j = partner_at[i][s];
+      if (j < 0) {
+        sbc_bpm_host_bond_apart(bonds, state);
+        for (int c = 0; c < 6; c++) own[c] = 0.0;
+        continue;
+      }
+      if (j < nlocal && t < tag[i]) continue;    // advanced from its end A, the partner
       const double *vj = motion ? v[j] : rest, *wj = motion ? omega[j] : rest;
-      double other[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, w = 0.0;
-      if (tag[i] < t) {
-        if (sbc_bpm_host_bond_step(bonds, state, x[i], radius[i], vi, wi, x[j], radius[j], vj, wj, dt, acc, other,
-                                   &w)) {
-          carry[i][FRACTURE] += w;
-          break_rows.insert(break_rows.end(), {(double) update->ntimestep, (double) tag[i], (double) t,
-                                               0.5 * (x[i][0] + x[j][0]), 0.5 * (x[i][1] + x[j][1]),
-                                               0.5 * (x[i][2] + x[j][2])});
-        }
-      } else {
-        sbc_bpm_host_bond_step(bonds, state, x[j], radius[j], vj, wj, x[i], radius[i], vi, wi, dt, other, acc, &w);
+      double la[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, lb[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, w = 0.0;
+      const bool a_here = tag[i] < t;
+      const int a = a_here ? i : j, b = a_here ? j : i;
+      const double *va = a_here ? vi : vj, *wa = a_here ? wi : wj, *vb = a_here ? vj : vi, *wb = a_here ? wj : wi;
+      if (sbc_bpm_host_bond_step(bonds, state, x[a], radius[a], va, wa, x[b], radius[b], vb, wb, dt, la, lb, &w) &&
+          a_here) {
+        carry[i][FRACTURE] += w;
+        break_rows.insert(break_rows.end(), {(double) update->ntimestep, (double) tag[i], (double) t,
+                                             0.5 * (x[i][0] + x[j][0]), 0.5 * (x[i][1] + x[j][1]),
+                                             0.5 * (x[i][2] + x[j][2])});
+      }
+      for (int c = 0; c < 6; c++) own[c] = a_here ? la[c] : lb[c];
+      if (j < nlocal) {    // end B is owned here too: its copy of the state, its load
+        const int q = partner_slot[i][s];
+        std::memcpy(&slot[j][2 + q * stride], state, sizeof(double) * per);
+        for (int c = 0; c < 6; c++) slot_load[j][6 * q + c] = lb[c];
       }
     }
+  }
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    double acc[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    const int count = (int) slot[i][0];
+    for (int s = 0; s < count; s++)
+      for (int c = 0; c < 6; c++) acc[c] += slot_load[i][6 * s + c];
     for (int c = 0; c < 6; c++)
       if (!std::isfinite(acc[c]))
         fail_here("a bond load on atom " + std::to_string((long) tag[i]) + " is not finite at step " +
@@ -302,7 +346,8 @@ void FixServoBCBonds::reduce_outputs()
       const double *state = &slot[i][2 + s * (1 + per)];
       const int j = partner_at[i][s];
       double strain = 0.0, friction = 0.0;
-      sbc_bpm_host_bond_energies(bonds, state, x[i], radius[i], x[j], radius[j], &strain, &friction);
+      sbc_bpm_host_bond_energies(bonds, state, x[i], radius[i], j < 0 ? nullptr : x[j], j < 0 ? 0.0 : radius[j],
+                                 &strain, &friction);
       mine[0] += strain;
       mine[1] += !sbc_bpm_host_bond_broken(bonds, state);
       mine[3] += friction;
@@ -346,6 +391,8 @@ void FixServoBCBonds::grow_arrays(int nmax)
   if (width > 0) {
     memory->grow(slot, nmax, width, "servo_bc/bonds:slot");
     memory->grow(partner_at, nmax, maxb, "servo_bc/bonds:partner_at");
+    memory->grow(partner_slot, nmax, maxb, "servo_bc/bonds:partner_slot");
+    memory->grow(slot_load, nmax, 6 * maxb, "servo_bc/bonds:slot_load");
   }
   memory->grow(carry, nmax, CARRY, "servo_bc/bonds:carry");
   memory->grow(step_load, nmax, 6, "servo_bc/bonds:step_load");

@@ -153,6 +153,80 @@ if [ -n "$a" ] && [ -n "$b" ] && awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if 
 else
   bad "restart mid-run: ${b:-none} m after the split, ${a:-none} m straight through: $(tail -3 "$tmp/restart.log")"
 fi
+# bonds that travel with their atoms: a bar of 11 x 2 x 2 spheres flies 2.4 m
+# along x through the rank boundaries (a 4 x 1 x 1 grid at 1.25 and 3 m; for
+# its second half LAMMPS moves them to balance the atoms), stretched at its
+# ends and kicked at its middle, with a strength: on 1, 2
+# and 4 ranks the middle's deflection to 1e-10, the intact bonds alike and the
+# rows of keyword breaks byte for byte (atoms created one by one: their IDs,
+# and so each bond's end A, do not depend on the rank count)
+{
+  printf 'units si\ndimension 3\nboundary f f f\natom_style sphere\natom_modify map array%s\n' \
+    "$([ "$host" = liggghts ] && echo ' sort 0 0.0')"
+  printf 'region box block -0.5 6.5 -1 1 -1 1\ncreate_box 1 box\n'
+  for k in 0 1; do for j in 0 1; do for i in 0 1 2 3 4 5 6 7 8 9 10; do
+    echo "create_atoms 1 single $(awk -v i=$i 'BEGIN { print 0.2 * i }') 0.$((2 * j)) 0.$((2 * k)) units box"
+  done; done; done
+  printf 'set type 1 diameter 0.2\nset type 1 density 925\n%s\n' \
+    "$([ "$host" = liggghts ] && echo 'communicate single cutoff 0.5' || echo 'comm_modify cutoff 0.5')"
+  printf 'fix bonds all servo_bc/bonds beam 4e9 0.3 1.0 strength 2e4 0 0 0 friction 0.5 breaks breaks.csv\n'
+  printf 'fix integrate all nve/sphere\n'
+  printf 'region left block INF 0.05 INF INF INF INF units box\nregion right block 1.95 INF INF INF INF INF units box\n'
+  printf 'region middle block 0.95 1.05 INF INF INF INF units box\n'
+  printf 'group left region left\ngroup right region right\ngroup middle region middle\n'
+  printf 'velocity all set 25 0 0 units box\nvelocity left set 23 0 0 units box\n'
+  printf 'velocity right set 27 0 0 units box\nvelocity middle set 25 0 2 units box\n'
+  # the second half after load balancing: the subdomains move to where the bar is
+  printf 'timestep 8e-6\nrun 6000\n%s\nrun 6000\n' \
+    "$([ "$host" = liggghts ] && echo '# balance: LIGGGHTS 3.8 has no balance command' || echo 'balance 1.0 shift x 10 1.0')"
+  printf 'variable zm equal xcm(middle,z)-0.5*(xcm(left,z)+xcm(right,z))\nvariable xm equal xcm(all,x)\n'
+  printf 'variable intact equal f_bonds[1]\nprint "flight ${zm} ${intact} ${xm}" file flight.txt\n'
+} > "$tmp/flight.in"
+for np in 1 2 4; do
+  (cd "$tmp" && rm -f flight.txt breaks.csv && if [ $np = 1 ]; then timeout 300 "$bin" -in flight.in -log none -screen none
+   else timeout 300 mpirun --allow-run-as-root --oversubscribe -np $np "$bin" -in flight.in -log none -screen none; fi
+   cp breaks.csv "breaks$np.csv" 2> /dev/null) > "$tmp/flight.log" 2>&1
+  set -- $(awk '$1 == "flight" { print $2, $3, $4 }' "$tmp/flight.txt" 2>/dev/null)
+  rows=$(($(wc -l < "$tmp/breaks$np.csv" 2>/dev/null || echo 1) - 1))
+  if [ $np = 1 ]; then
+    z1=${1:-none} n1=${2:-none}
+    if [ -n "${3:-}" ] && awk -v x="$3" -v n="$n1" -v r="$rows" 'BEGIN { exit !(x > 3.3 && n > 0 && n < 84 && r == 84 - n) }'; then
+      ok "bonded bar in flight on 1 rank: moved to x = $3 m, $rows of 84 bonds broke (rows of keyword breaks), $n1 intact"
+    else
+      bad "bonded bar in flight on 1 rank: x ${3:-none} m, intact ${n1}, $rows break rows: $(grep -m1 ERROR "$tmp/flight.log")"
+    fi
+  elif [ "${2:-x}" = "$n1" ] && cmp -s "$tmp/breaks1.csv" "$tmp/breaks$np.csv" &&
+       awk -v a="$z1" -v b="${1:-none}" 'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a
+         exit !(a == a + 0 && b == b + 0 && s > 1e-4 && d <= 1e-10 * s) }'; then
+    ok "bonded bar in flight on $np ranks: deflection $1 m (1 rank $z1), $2 intact, the $rows break rows byte for byte"
+  else
+    bad "bonded bar in flight on $np ranks: deflection ${1:-none} against $z1 m, intact ${2:-none} against $n1, break rows $(cmp "$tmp/breaks1.csv" "$tmp/breaks$np.csv" 2>&1 | head -1): $(grep -m1 ERROR "$tmp/flight.log")"
+  fi
+done
+# the flight split by write_restart on 2 ranks and read_restart on 4: the bonds'
+# per-atom states travel in the file to other ranks; the same deflection, intact
+# bonds and break rows (the second part appends to them) as straight through
+sed '/^balance\|^# balance/,$d' "$tmp/flight.in" > "$tmp/flight1.in"
+echo 'write_restart flight.restart' >> "$tmp/flight1.in"
+{
+  printf 'read_restart flight.restart\n'
+  [ "$host" = liggghts ] && printf 'atom_modify sort 0 0.0\n'
+  sed -n '/^comm_modify\|^communicate/p; /^fix /p' "$tmp/flight.in"
+  printf 'timestep 8e-6\n'
+  sed -n '/^balance\|^# balance/,$p' "$tmp/flight.in"
+} > "$tmp/flight2.in"
+(cd "$tmp" && rm -f flight.txt breaks.csv &&
+  timeout 300 mpirun --allow-run-as-root --oversubscribe -np 2 "$bin" -in flight1.in -log none -screen none &&
+  timeout 300 mpirun --allow-run-as-root --oversubscribe -np 4 "$bin" -in flight2.in -log none -screen none) \
+  > "$tmp/flight.log" 2>&1
+set -- $(awk '$1 == "flight" { print $2, $3 }' "$tmp/flight.txt" 2>/dev/null)
+if [ "${2:-x}" = "$n1" ] && cmp -s "$tmp/breaks1.csv" "$tmp/breaks.csv" &&
+   awk -v a="$z1" -v b="${1:-none}" 'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a
+     exit !(a == a + 0 && b == b + 0 && s > 1e-4 && d <= 1e-10 * s) }'; then
+  ok "the flight split by a restart, written on 2 ranks, read on 4: deflection $1 m, $2 intact, the break rows byte for byte"
+else
+  bad "the flight split by a restart (2 -> 4 ranks): ${1:-none} against $z1 m, intact ${2:-none} against $n1, $(cmp "$tmp/breaks1.csv" "$tmp/breaks.csv" 2>&1 | head -1): $(grep -m1 ERROR "$tmp/flight.log")"
+fi
 # the bonds fix's restart block and its per-atom data checked value by value
 # (sbc/saved.h): corrupted counts, sizes and values are refused by name, never
 # a crash or a NaN output. corrupt_bonds FILE OFFSET VALUE overwrites one

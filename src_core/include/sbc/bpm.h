@@ -139,18 +139,18 @@ sbc_status sbc_bpm_pairs(const sbc_bpm_settings *set, size_t n, const double *x,
 
 /* A new bond's state between A (xa, ra) and B (xb, rb): bond radius alpha
  * min(ra, rb) (eq. 9), no load; a beam's frame and stiffness from A -> B. */
-void sbc_bpm_bond_start(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+void sbc_bpm_bond_start(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b, const double xa[3], double ra,
                         const double xb[3], double rb);
 
 /* The bond's axial stiffness, N/m (eq. 36: k^n A, or E A / L for a beam). */
-double sbc_bpm_bond_stiffness(const sbc_bpm_settings *set, sbc_bpm_bond_view b);
+double sbc_bpm_bond_stiffness(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b);
 
 /* One step of one bond at t (eqs. 10-34) from the motion dt v(t - dt/2),
  * dt w(t - dt/2) of its spheres A and B; adds its loads to fa, ma (on A) and
  * fb, mb (on B). With a strength, a bond whose criterion reaches 1 breaks
  * before its loads are applied: returns 1 with the strain energy it held in
  * *fracture (J), else 0. */
-int sbc_bpm_bond_advance(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+int sbc_bpm_bond_advance(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b, const double xa[3], double ra,
                          const double va[3], const double wa[3], const double xb[3], double rb, const double vb[3],
                          const double wb[3], double dt, double fa[3], double ma[3], double fb[3], double mb[3],
                          double *fracture);
@@ -158,7 +158,7 @@ int sbc_bpm_bond_advance(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const
 /* The bond's energies at centres xa, xb (J): *strain its elastic energy
  * (eq. 50 or 1/2 u K u; a broken bond's contact: kn dn^2/2 + |fs|^2/2 ks),
  * *friction the work of friction in a broken bond's contact (0 intact). */
-void sbc_bpm_bond_energies(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+void sbc_bpm_bond_energies(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b, const double xa[3], double ra,
                            const double xb[3], double rb, double *strain, double *friction);
 
 /* Eq. 48: 0.22 sqrt(m / k) with the smallest mass and the largest bond axial

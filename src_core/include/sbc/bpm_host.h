@@ -96,8 +96,15 @@ int sbc_bpm_host_bond_step(const sbc_bpm *law, double *state, const double xa[3]
                            const double wa[3], const double xb[3], double rb, const double vb[3], const double wb[3],
                            double dt, double load_a[6], double load_b[6], double *fracture);
 
+/* A bond whose partner is out of the host's reach (beyond its ghost
+ * cutoff, so farther than any contact): a broken bond's contact is apart
+ * (no load, its spring reset as sbc_broken_bond_increment does); returns 0,
+ * or 1 when the bond is intact (an intact bond cannot be out of reach). */
+int sbc_bpm_host_bond_apart(const sbc_bpm *law, double *state);
+
 /* The bond's axial stiffness (N/m, for eq. 48: 0.22 sqrt(m_min / k_max)),
- * whether it is broken, and its energies (sbc_bpm_bond_energies, J). */
+ * whether it is broken, and its energies (sbc_bpm_bond_energies, J; xb NULL
+ * for a partner out of reach, as sbc_bpm_host_bond_apart). */
 double sbc_bpm_host_bond_stiffness(const sbc_bpm *law, const double *state);
 int sbc_bpm_host_bond_broken(const sbc_bpm *law, const double *state);
 void sbc_bpm_host_bond_energies(const sbc_bpm *law, const double *state, const double xa[3], double ra,

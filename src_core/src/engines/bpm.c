@@ -159,27 +159,27 @@ int sbc_bpm_touch(const sbc_bpm_settings *set, const double xa[3], double ra, co
     return d <= reach * reach;
 }
 
-void sbc_bpm_bond_start(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+void sbc_bpm_bond_start(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b, const double xa[3], double ra,
                         const double xb[3], double rb)
 {
     double rbond = set->alpha * (ra < rb ? ra : rb); /* eq. 9 */
-    if (b.broken) {
-        *b.broken = 0;
-        memset(b.contact, 0, sizeof *b.contact);
+    if (b->broken) {
+        *b->broken = 0;
+        memset(b->contact, 0, sizeof *b->contact);
     }
     if (set->model == SBC_BOND_PARALLEL) {
-        memset(b.parallel, 0, sizeof *b.parallel);
-        b.parallel->rb = rbond;
+        memset(b->parallel, 0, sizeof *b->parallel);
+        b->parallel->rb = rbond;
     } else {
-        sbc_beam_bond_init(&set->beam, rbond, xa, xb, b.beam);
+        sbc_beam_bond_init(&set->beam, rbond, xa, xb, b->beam);
     }
 }
 
-double sbc_bpm_bond_stiffness(const sbc_bpm_settings *set, sbc_bpm_bond_view b)
+double sbc_bpm_bond_stiffness(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b)
 {
     if (set->model == SBC_BOND_PARALLEL)
-        return set->parallel.kn * sbc_bond_area(b.parallel->rb);
-    return b.beam->k[0];
+        return set->parallel.kn * sbc_bond_area(b->parallel->rb);
+    return b->beam->k[0];
 }
 
 static sbc_status add_bond(size_t a, size_t b, void *user, sbc_error *err)
@@ -199,7 +199,8 @@ static sbc_status add_bond(size_t a, size_t b, void *user, sbc_error *err)
     memset(&e->bonds[e->nb], 0, sizeof e->bonds[e->nb]);
     e->bonds[e->nb].a = a;
     e->bonds[e->nb].b = b;
-    sbc_bpm_bond_start(&e->set, view_of(e, e->nb), &e->x[3 * a], e->r[a], &e->x[3 * b], e->r[b]);
+    sbc_bpm_bond_view v = view_of(e, e->nb);
+    sbc_bpm_bond_start(&e->set, &v, &e->x[3 * a], e->r[a], &e->x[3 * b], e->r[b]);
     ++e->nb;
     ++e->coordination[a];
     ++e->coordination[b];
@@ -292,8 +293,8 @@ sbc_status sbc_bpm_bond_touching(sbc_bpm *e, sbc_error *err)
     for (k = 0; k < e->nb; ++k) { /* eq. 37 */
         sbc_bpm_bond *bd = &e->bonds[k];
         double cn = 0.5 * (e->coordination[bd->a] + e->coordination[bd->b]);
-        bd->c = sbc_bond_damping(e->set.xi, sbc_bpm_bond_stiffness(&e->set, view_of(e, k)), e->m[bd->a],
-                                 e->m[bd->b], cn);
+        sbc_bpm_bond_view v = view_of(e, k);
+        bd->c = sbc_bond_damping(e->set.xi, sbc_bpm_bond_stiffness(&e->set, &v), e->m[bd->a], e->m[bd->b], cn);
     }
     return SBC_OK;
 }
@@ -306,7 +307,8 @@ double sbc_bpm_critical_dt(const sbc_bpm *e)
         if (i == 0 || e->m[i] < mmin)
             mmin = e->m[i];
     for (i = 0; i < e->nb; ++i) {
-        double k = sbc_bpm_bond_stiffness(&e->set, view_of(e, i));
+        sbc_bpm_bond_view v = view_of(e, i);
+        double k = sbc_bpm_bond_stiffness(&e->set, &v);
         if (k > kmax)
             kmax = k;
     }
@@ -314,7 +316,7 @@ double sbc_bpm_critical_dt(const sbc_bpm *e)
 }
 
 /* contact law of a bond once broken */
-static sbc_friction_law broken_law(const sbc_bpm_settings *set, sbc_bpm_bond_view b)
+static sbc_friction_law broken_law(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b)
 {
     sbc_friction_law law;
     law.kn = sbc_bpm_bond_stiffness(set, b);
@@ -325,36 +327,36 @@ static sbc_friction_law broken_law(const sbc_bpm_settings *set, sbc_bpm_bond_vie
 }
 
 /* strain energy an intact bond holds, J */
-static double bond_energy(const sbc_bpm_settings *set, sbc_bpm_bond_view b)
+static double bond_energy(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b)
 {
-    return set->model == SBC_BOND_BEAM ? b.beam->w : sbc_parallel_bond_energy(&set->parallel, b.parallel);
+    return set->model == SBC_BOND_BEAM ? b->beam->w : sbc_parallel_bond_energy(&set->parallel, b->parallel);
 }
 
 /* the bond fails: its loads vanish; returns the energy it held (dissipated) */
-static double break_bond(const sbc_bpm_settings *set, sbc_bpm_bond_view b)
+static double break_bond(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b)
 {
     double w = bond_energy(set, b);
     if (set->model == SBC_BOND_BEAM) {
-        memset(b.beam->f, 0, sizeof b.beam->f);
-        b.beam->w = 0.0;
+        memset(b->beam->f, 0, sizeof b->beam->f);
+        b->beam->w = 0.0;
     } else {
-        double rb = b.parallel->rb;
-        memset(b.parallel, 0, sizeof *b.parallel);
-        b.parallel->rb = rb;
+        double rb = b->parallel->rb;
+        memset(b->parallel, 0, sizeof *b->parallel);
+        b->parallel->rb = rb;
     }
-    *b.broken = 1;
-    memset(b.contact, 0, sizeof *b.contact);
+    *b->broken = 1;
+    memset(b->contact, 0, sizeof *b->contact);
     return w;
 }
 
-int sbc_bpm_bond_advance(const sbc_bpm_settings *set, sbc_bpm_bond_view bv, const double xa[3], double ra,
+int sbc_bpm_bond_advance(const sbc_bpm_settings *set, const sbc_bpm_bond_view *bv, const double xa[3], double ra,
                          const double va[3], const double wa_[3], const double xb[3], double rb, const double vb[3],
                          const double wb_[3], double dt, double fa[3], double ma[3], double fb[3], double mb[3],
                          double *fracture)
 {
     double dxa[3], dta[3], dxb[3], dtb[3], xc[3], n[3], ra_[3], rb_[3], wa[3], wb[3], du[3], dth[3], L = 0.0;
     int q, beam = set->model == SBC_BOND_BEAM, failure = set->strength.tension > 0.0;
-    int broken = failure && *bv.broken;
+    int broken = failure && *bv->broken;
     for (q = 0; q < 3; ++q) {
         dxa[q] = dt * va[q];
         dta[q] = dt * wa_[q];
@@ -377,7 +379,7 @@ int sbc_bpm_bond_advance(const sbc_bpm_settings *set, sbc_bpm_bond_view bv, cons
     if (broken) {
         sbc_friction_law law = broken_law(set, bv);
         double f[3], tf[3];
-        sbc_broken_bond_increment(&law, bv.contact, ra + rb - L, n, du, f);
+        sbc_broken_bond_increment(&law, bv->contact, ra + rb - L, n, du, f);
         for (q = 0; q < 3; ++q) {
             fa[q] += f[q];
             fb[q] -= f[q];
@@ -389,34 +391,34 @@ int sbc_bpm_bond_advance(const sbc_bpm_settings *set, sbc_bpm_bond_view bv, cons
         return 0;
     }
     if (beam)
-        sbc_beam_bond_increment(bv.beam, dxa, dta, dxb, dtb);
+        sbc_beam_bond_increment(bv->beam, dxa, dta, dxb, dtb);
     else
-        sbc_parallel_bond_increment(&set->parallel, bv.parallel, n, du, dth);
+        sbc_parallel_bond_increment(&set->parallel, bv->parallel, n, du, dth);
     if (failure) {
         double l[4];
-        if (beam) sbc_beam_bond_loads(bv.beam, l);
-        else sbc_parallel_bond_loads(bv.parallel, n, l);
+        if (beam) sbc_beam_bond_loads(bv->beam, l);
+        else sbc_parallel_bond_loads(bv->parallel, n, l);
         if (sbc_bond_criterion(&set->strength, l[0], l[1], l[2], l[3]) >= 1.0) {
             *fracture = break_bond(set, bv);
             return 1;
         }
     }
     if (beam)
-        sbc_beam_bond_apply(bv.beam, fa, ma, fb, mb);
+        sbc_beam_bond_apply(bv->beam, fa, ma, fb, mb);
     else
-        sbc_parallel_bond_apply(bv.parallel, xa, xb, xc, fa, ma, fb, mb);
+        sbc_parallel_bond_apply(bv->parallel, xa, xb, xc, fa, ma, fb, mb);
     return 0;
 }
 
-void sbc_bpm_bond_energies(const sbc_bpm_settings *set, sbc_bpm_bond_view b, const double xa[3], double ra,
+void sbc_bpm_bond_energies(const sbc_bpm_settings *set, const sbc_bpm_bond_view *b, const double xa[3], double ra,
                            const double xb[3], double rb, double *strain, double *friction)
 {
-    if (b.broken && *b.broken) { /* elastic part as strain, the rest (friction) dissipated */
+    if (b->broken && *b->broken) { /* elastic part as strain, the rest (friction) dissipated */
         sbc_friction_law law = broken_law(set, b);
         double n[3], xc[3], L = sbc_parallel_bond_geometry(xa, ra, xb, rb, n, xc);
-        double el = sbc_broken_bond_energy(&law, b.contact, ra + rb - L);
+        double el = sbc_broken_bond_energy(&law, b->contact, ra + rb - L);
         *strain = el;
-        *friction = b.contact->w - el;
+        *friction = b->contact->w - el;
     } else {
         *strain = bond_energy(set, b);
         *friction = 0.0;
@@ -431,7 +433,8 @@ void sbc_bpm_bond_loads(sbc_bpm *e, double *load)
     for (k = 0; k < e->nb; ++k) {
         size_t a = e->bonds[k].a, b = e->bonds[k].b;
         double w = 0.0;
-        if (sbc_bpm_bond_advance(&e->set, view_of(e, k), &e->x[3 * a], e->r[a], &e->v[3 * a], &e->w[3 * a],
+        sbc_bpm_bond_view v = view_of(e, k);
+        if (sbc_bpm_bond_advance(&e->set, &v, &e->x[3 * a], e->r[a], &e->v[3 * a], &e->w[3 * a],
                                  &e->x[3 * b], e->r[b], &e->v[3 * b], &e->w[3 * b], e->dt, &load[6 * a],
                                  &load[6 * a + 3], &load[6 * b], &load[6 * b + 3], &w)) {
             e->w_fracture += w;
@@ -522,7 +525,8 @@ sbc_bpm_energy sbc_bpm_energies(const sbc_bpm *e)
     for (k = 0; k < e->nb; ++k) {
         size_t a = e->bonds[k].a, b = e->bonds[k].b;
         double strain, friction;
-        sbc_bpm_bond_energies(&e->set, view_of(e, k), &e->x[3 * a], e->r[a], &e->x[3 * b], e->r[b], &strain,
+        sbc_bpm_bond_view v = view_of(e, k);
+        sbc_bpm_bond_energies(&e->set, &v, &e->x[3 * a], e->r[a], &e->x[3 * b], e->r[b], &strain,
                               &friction);
         en.strain += strain;
         en.dissipated += friction;

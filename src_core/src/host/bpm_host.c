@@ -123,6 +123,9 @@ void sbc_bpm_host_set_fracture_energy(sbc_bpm *e, double w) { e->w_fracture = w;
 /* the bond states are structs of doubles only (bpm_bond.h); with failure, a
  * flag and the broken bond's contact follow */
 #define BROKEN_DOUBLES (1 + (int)(sizeof(sbc_broken_bond) / sizeof(double)))
+_Static_assert(sizeof(sbc_beam_bond) % sizeof(double) == 0 && sizeof(sbc_parallel_bond) % sizeof(double) == 0 &&
+                   sizeof(sbc_broken_bond) % sizeof(double) == 0,
+               "a bond state is doubles only: a host's slot of doubles holds it in place");
 
 static int bond_doubles(const sbc_bpm *e)
 {
@@ -212,53 +215,42 @@ long sbc_bpm_host_pairs(const sbc_bpm *law, int n, const double *x, const double
 
 void sbc_bpm_host_pairs_free(int *pairs) { free(pairs); }
 
-/* one bond's state as structs, read from and written back to its doubles */
+/* One bond's state in place: the bond structs hold doubles only (bpm_bond.h),
+ * so a view points into the host's doubles; the broken flag, a double there,
+ * goes through a byte and back (pack). */
 typedef struct unpacked {
-    sbc_beam_bond beam;
-    sbc_parallel_bond parallel;
     unsigned char broken;
-    sbc_broken_bond contact;
 } unpacked;
 
-static sbc_bpm_bond_view unpack(const sbc_bpm *law, const double *state, unpacked *u)
+static sbc_bpm_bond_view unpack(const sbc_bpm *law, double *state, unpacked *u)
 {
     sbc_bpm_bond_view b = {NULL, NULL, NULL, NULL};
-    if (law->set.model == SBC_BOND_BEAM) {
-        memcpy(&u->beam, state, sizeof u->beam);
-        b.beam = &u->beam;
-    } else {
-        memcpy(&u->parallel, state, sizeof u->parallel);
-        b.parallel = &u->parallel;
-    }
+    if (law->set.model == SBC_BOND_BEAM)
+        b.beam = (sbc_beam_bond *)state;
+    else
+        b.parallel = (sbc_parallel_bond *)state;
     if (law->set.strength.tension > 0.0) {
-        const double *f = &state[bond_doubles(law)];
+        double *f = &state[bond_doubles(law)];
         u->broken = f[0] != 0.0;
-        memcpy(&u->contact, &f[1], sizeof u->contact);
         b.broken = &u->broken;
-        b.contact = &u->contact;
+        b.contact = (sbc_broken_bond *)&f[1];
     }
     return b;
 }
 
 static void pack(const sbc_bpm *law, const unpacked *u, double *state)
 {
-    if (law->set.model == SBC_BOND_BEAM)
-        memcpy(state, &u->beam, sizeof u->beam);
-    else
-        memcpy(state, &u->parallel, sizeof u->parallel);
-    if (law->set.strength.tension > 0.0) {
-        double *f = &state[bond_doubles(law)];
-        f[0] = u->broken;
-        memcpy(&f[1], &u->contact, sizeof u->contact);
-    }
+    if (law->set.strength.tension > 0.0)
+        state[bond_doubles(law)] = u->broken;
 }
 
 void sbc_bpm_host_bond_start(const sbc_bpm *law, const double xa[3], double ra, const double xb[3], double rb,
                              double *state)
 {
     unpacked u;
-    memset(&u, 0, sizeof u);
-    sbc_bpm_bond_start(&law->set, unpack(law, state, &u), xa, ra, xb, rb);
+    memset(state, 0, (size_t)sbc_bpm_host_state_doubles(law) * sizeof *state);
+    sbc_bpm_bond_view b = unpack(law, state, &u);
+    sbc_bpm_bond_start(&law->set, &b, xa, ra, xb, rb);
     pack(law, &u, state);
 }
 
@@ -267,16 +259,29 @@ int sbc_bpm_host_bond_step(const sbc_bpm *law, double *state, const double xa[3]
                            double dt, double load_a[6], double load_b[6], double *fracture)
 {
     unpacked u;
-    int broke = sbc_bpm_bond_advance(&law->set, unpack(law, state, &u), xa, ra, va, wa, xb, rb, vb, wb, dt, load_a,
+    sbc_bpm_bond_view b = unpack(law, state, &u);
+    int broke = sbc_bpm_bond_advance(&law->set, &b, xa, ra, va, wa, xb, rb, vb, wb, dt, load_a,
                                      &load_a[3], load_b, &load_b[3], fracture);
     pack(law, &u, state);
     return broke;
 }
 
+int sbc_bpm_host_bond_apart(const sbc_bpm *law, double *state)
+{
+    unpacked u;
+    sbc_bpm_bond_view b = unpack(law, state, &u);
+    if (!b.broken || !*b.broken)
+        return 1;
+    memset(b.contact->fs, 0, sizeof b.contact->fs);
+    memset(b.contact->f, 0, sizeof b.contact->f);
+    return 0;
+}
+
 double sbc_bpm_host_bond_stiffness(const sbc_bpm *law, const double *state)
 {
     unpacked u;
-    return sbc_bpm_bond_stiffness(&law->set, unpack(law, state, &u));
+    sbc_bpm_bond_view b = unpack(law, (double *)state, &u); /* read only */
+    return sbc_bpm_bond_stiffness(&law->set, &b);
 }
 
 int sbc_bpm_host_bond_broken(const sbc_bpm *law, const double *state)
@@ -288,5 +293,11 @@ void sbc_bpm_host_bond_energies(const sbc_bpm *law, const double *state, const d
                                 const double xb[3], double rb, double *strain, double *friction)
 {
     unpacked u;
-    sbc_bpm_bond_energies(&law->set, unpack(law, state, &u), xa, ra, xb, rb, strain, friction);
+    sbc_bpm_bond_view b = unpack(law, (double *)state, &u); /* read only */
+    if (!xb) { /* out of reach: apart */
+        *strain = 0.0;
+        *friction = b.contact ? b.contact->w : 0.0;
+        return;
+    }
+    sbc_bpm_bond_energies(&law->set, &b, xa, ra, xb, rb, strain, friction);
 }
