@@ -50,7 +50,7 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), strength{0.0, 0.0, 0.0, 0.0, 0.0}, failure(false), kn(0.0),
     bonds(nullptr), contacts(nullptr), n(0), dim(3), reported(-1), last_step(-1), rmin(0.0), maxb(0), per(0),
     width(0), critical_dt(0.0), formed(0), slot(nullptr), carry(nullptr), step_load(nullptr), step_motion(nullptr), partner_at(nullptr), partner_slot(nullptr), slot_load(nullptr),
-    nmax_slots(0), have_prev(false), restarted(false), longest(0.0), reduced_at(-1), sums{0.0, 0.0, 0.0, 0.0, 0.0},
+    nmax_slots(0), have_prev(false), restarted(false), copies_stale(false), longest(0.0), reduced_at(-1), sums{0.0, 0.0, 0.0, 0.0, 0.0},
     kinetic_mine(0.0), breaks_fp(nullptr)
 {
   law = sbc_cohesive_default();
@@ -152,11 +152,18 @@ FixServoBCBonds::~FixServoBCBonds()
   sbc_cohesive_host_free(contacts);
 }
 
-int FixServoBCBonds::setmask() { return POST_FORCE | POST_RUN | END_OF_STEP; }
+int FixServoBCBonds::setmask() { return PRE_EXCHANGE | POST_FORCE | POST_RUN | END_OF_STEP; }
+
+/* atoms are about to migrate: each bond's copies alike first */
+void FixServoBCBonds::pre_exchange()
+{
+  if (bonds) sync_copies();
+}
 
 /* how many bonds are left, at the end of a run where some broke */
 void FixServoBCBonds::post_run()
 {
+  if (bonds) sync_copies();    // any command after the run may move the atoms
   if (!contacts && !(bonds && failure)) return;
   int intact, initial = formed;
   if (contacts) {
@@ -222,6 +229,11 @@ void FixServoBCBonds::init()
            std::to_string(total) + " of this fix's atoms (group " + group->names[igroup] +
            ") too, which would bond them twice; one fix servo_bc/bonds per atom");
   }
+  // fix balance moves atoms in its pre_exchange: the bonds' copies must be alike before
+  for (int f = 0; f < modify->nfix && modify->fix[f] != this; f++)
+    if (std::strcmp(modify->fix[f]->style, "balance") == 0)
+      fail(std::string("fix ") + modify->fix[f]->id + " (balance) comes before this fix; define fix " + id +
+           " first (bonds whose atoms a rank owns keep one copy current until atoms migrate, in pre_exchange)");
   if (model == "cohesive" && !contacts) create_bonds();    // also from a restart file, at the present centres
 }
 
@@ -240,6 +252,7 @@ const double BONDS_MAGIC = 8.020006e7, BONDS_GATHERED = 8.020005e7;
    pair state's length and the pair state (cohesive_host.h) */
 void FixServoBCBonds::write_restart(FILE *fp)
 {
+  if (bonds) sync_copies();    // every rank, before its per-atom data are packed
   if (comm->me != 0 || (!bonds && !contacts)) return;
   std::vector<double> list;
   if (contacts) {

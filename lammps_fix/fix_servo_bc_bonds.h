@@ -50,6 +50,7 @@ class FixServoBCBonds : public Fix {
   void setup(int) override;
   void post_force(int) override;
   void post_run() override;
+  void pre_exchange() override;
   void end_of_step() override;
   double compute_scalar() override;
   double compute_vector(int) override;
@@ -112,9 +113,11 @@ class FixServoBCBonds : public Fix {
                                            // a broken bond's partner out of reach)
   int **partner_slot;                      // the partner's slot of the same bond when it is owned here, else -1
   double **slot_load;                      // this step's load of each slot's bond on the atom (6 per slot)
+  std::vector<int> slot_count;             // the owned atoms' bonds at the last neighbour build
   int nmax_slots;                          // rows allocated
   bool have_prev;                          // carry holds a last end of step's loads
   bool restarted;                          // slots came from a restart file
+  bool copies_stale;                       // end B's copies lag end A's (sync_copies)
   double longest;                          // the longest bond at creation, m
   std::unordered_map<tagint, int> image_first;  // atom ID -> a local or ghost index; image_next chains
   std::vector<int> image_next;                  // the other indices of the same ID (periodic images), -1 ends
@@ -128,6 +131,7 @@ class FixServoBCBonds : public Fix {
   void map_images();
   int partner(tagint tag, const double *near) const;
   void step_slots(bool motion);
+  void sync_copies();
   void energy_slots();
   void write_breaks();
   void reduce_outputs();

@@ -32,6 +32,8 @@ namespace {
 // (6), the external work of eq. 52 on the atom (J), the fracture energy of the
 // bonds it is end A of (J)
 constexpr int CARRY = 8, WORK = 6, FRACTURE = 7;
+// partner_slot of a slot whose partner, owned here too, is end A
+constexpr int SKIP = -2;
 }    // namespace
 
 /* the group's touching spheres, owned and ghost, bonded at the first run */
@@ -191,13 +193,18 @@ void FixServoBCBonds::map_images()
       partner_at[i][s] = j;
     }
   }
-  // the same bond in the partner's slots, when this rank owns both atoms
+  // the same bond in the partner's slots, when this rank owns both atoms (SKIP: the partner is end A)
+  slot_count.resize(nlocal);
   for (int i = 0; i < nlocal; i++) {
-    const int count = (int) slot[i][0];
+    const int count = slot_count[i] = (int) slot[i][0];
     for (int s = 0; s < count; s++) {
       const int j = partner_at[i][s];
       partner_slot[i][s] = -1;
       if (j < 0 || j >= nlocal) continue;
+      if (tag[j] < tag[i]) {
+        partner_slot[i][s] = SKIP;
+        continue;
+      }
       const int other = (int) slot[j][0];
       for (int q = 0; q < other && partner_slot[i][s] < 0; q++)
         if ((tagint) slot[j][1 + q * (1 + per)] == tag[i]) partner_slot[i][s] = q;
@@ -228,9 +235,9 @@ int FixServoBCBonds::partner(tagint t, const double *near) const
 /* every bond of the owned atoms: their loads into f and torque; motion false
    (a run's setup) sees the last configuration again with no motion, so the
    states keep their loads and the same loads are added. A bond whose atoms
-   this rank both owns is advanced once, from its end A, and its state copied
-   to end B's slot; a bond to a ghost is advanced here and on the ghost's
-   rank alike. Each atom then sums its bonds' loads in slot order, so the
+   this rank both owns is advanced once, in end A's slot; end B's copy is
+   brought up to date before it can leave or be written (sync_copies). A
+   bond to a ghost is advanced here and on the ghost's rank alike. Each atom then sums its bonds' loads in slot order, so the
    sums do not depend on which partners are ghosts, nor the results on the
    rank count */
 void FixServoBCBonds::step_slots(bool motion)
@@ -249,17 +256,17 @@ void FixServoBCBonds::step_slots(bool motion)
       step_motion[i][c] = vi[c];
       step_motion[i][3 + c] = wi[c];
     }
-    const int count = (int) slot[i][0];
+    const int count = slot_count[i];
     for (int s = 0; s < count; s++) {
-      const tagint t = (tagint) slot[i][1 + s * stride];
-      double *state = &slot[i][2 + s * stride], *own = &slot_load[i][6 * s];
       const int j = partner_at[i][s];
+      if (partner_slot[i][s] == SKIP) continue;    // advanced from its end A, the partner (its row untouched)
+      double *state = &slot[i][2 + s * stride], *own = &slot_load[i][6 * s];
       if (j < 0) {
         sbc_bpm_host_bond_apart(bonds, state);
         for (int c = 0; c < 6; c++) own[c] = 0.0;
         continue;
       }
-      if (j < nlocal && t < tag[i]) continue;    // advanced from its end A, the partner
+      const tagint t = tag[j];
       const double *vj = motion ? v[j] : rest, *wj = motion ? omega[j] : rest;
       double la[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, lb[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, w = 0.0;
       const bool a_here = tag[i] < t;
@@ -273,17 +280,17 @@ void FixServoBCBonds::step_slots(bool motion)
                                              0.5 * (x[i][2] + x[j][2])});
       }
       for (int c = 0; c < 6; c++) own[c] = a_here ? la[c] : lb[c];
-      if (j < nlocal) {    // end B is owned here too: its copy of the state, its load
+      if (j < nlocal) {    // end B is owned here too: its load (its copy of the state waits: sync_copies)
         const int q = partner_slot[i][s];
-        std::memcpy(&slot[j][2 + q * stride], state, sizeof(double) * per);
         for (int c = 0; c < 6; c++) slot_load[j][6 * q + c] = lb[c];
+        copies_stale = true;
       }
     }
   }
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     double acc[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    const int count = (int) slot[i][0];
+    const int count = slot_count[i];
     for (int s = 0; s < count; s++)
       for (int c = 0; c < 6; c++) acc[c] += slot_load[i][6 * s + c];
     for (int c = 0; c < 6; c++)
@@ -299,6 +306,25 @@ void FixServoBCBonds::step_slots(bool motion)
     }
   }
   reduced_at = -1;
+}
+
+/* end B's copy of every bond whose atoms this rank owns, from end A's: before
+   atoms migrate (pre_exchange; a run's end, after which any command may move
+   them) and before restart data are written. The partners' indices are those
+   of the last neighbour build, still valid at these points */
+void FixServoBCBonds::sync_copies()
+{
+  if (!copies_stale) return;
+  const int nlocal = atom->nlocal, stride = 1 + per;
+  for (int i = 0; i < nlocal; i++) {
+    const int count = (int) slot[i][0];
+    for (int s = 0; s < count; s++) {
+      const int j = partner_at[i][s];
+      if (j < 0 || j >= nlocal || partner_slot[i][s] < 0) continue;
+      std::memcpy(&slot[j][2 + partner_slot[i][s] * stride], &slot[i][2 + s * stride], sizeof(double) * per);
+    }
+  }
+  copies_stale = false;
 }
 
 /* eqs. 49 and 52 after the step: every force and moment on the group is in f
