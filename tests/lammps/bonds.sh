@@ -227,6 +227,31 @@ if [ "${2:-x}" = "$n1" ] && cmp -s "$tmp/breaks1.csv" "$tmp/breaks.csv" &&
 else
   bad "the flight split by a restart (2 -> 4 ranks): ${1:-none} against $z1 m, intact ${2:-none} against $n1, $(cmp "$tmp/breaks1.csv" "$tmp/breaks.csv" 2>&1 | head -1): $(grep -m1 ERROR "$tmp/flight.log")"
 fi
+# the ghost cutoff against the bonds, on 2 ranks: shorter than a bond at
+# creation is refused naming both lengths; a bond pulled (setforce, velocity
+# set) past the cutoff stops the run naming its atoms
+cutoff_case() {  # LABEL CUTOFF EXPECTED
+  {
+    printf 'units si\ndimension 3\nboundary f f f\natom_style sphere\natom_modify map array%s\n' \
+      "$([ "$host" = liggghts ] && echo ' sort 0 0.0')"
+    printf 'region box block -1 1 -0.5 0.5 -0.5 0.5\ncreate_box 1 box\n'
+    printf 'create_atoms 1 single -0.1 0 0\ncreate_atoms 1 single 0.1 0 0\nset type 1 diameter 0.2\nset type 1 density 925\n'
+    [ "$host" = liggghts ] && printf 'communicate single cutoff %s\n' "$2" || printf 'comm_modify cutoff %s\n' "$2"
+    printf 'fix bonds all servo_bc/bonds beam 4e9 0.3 1.0\nfix integrate all nve/sphere\nfix hold all setforce 0 0 0\n'
+    printf 'group a id 1\ngroup b id 2\nvelocity a set -1 0 0 units box\nvelocity b set 1 0 0 units box\n'
+    printf 'timestep 1e-4\nrun 2000\n'
+  } > "$tmp/cutoff.in"
+  (cd "$tmp" && timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$bin" -in cutoff.in -log none) \
+    > "$tmp/cutoff.log" 2>&1
+  local status=$?
+  if [ $status -ne 0 ] && grep -qF "$3" "$tmp/cutoff.log"; then
+    ok "on 2 ranks, refuses $1 (exit $status): $(grep -m1 -o 'ERROR.*' "$tmp/cutoff.log" | cut -c1-150)"
+  else
+    bad "on 2 ranks, $1 (exit $status): $(grep -m1 -E 'ERROR|signal' "$tmp/cutoff.log")"
+  fi
+}
+cutoff_case "a ghost cutoff shorter than a bond" 0.1 "the ghost cutoff 0.100000 m is shorter than a bond at creation (2 r_max = 0.200000 m)"
+cutoff_case "a bond stretched past the ghost cutoff" 0.25 "nor one of its ghosts (ghost cutoff 0.250000 m; the longest bond at creation 0.200000 m)"
 # the bonds fix's restart block and its per-atom data checked value by value
 # (sbc/saved.h): corrupted counts, sizes and values are refused by name, never
 # a crash or a NaN output. corrupt_bonds FILE OFFSET VALUE overwrites one
