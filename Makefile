@@ -258,6 +258,7 @@ $(B)/fe2-deps.installed:
 FE2_TANGENTS ?= condensed affine
 fe2-patch: $(B)/libservo_bc.so $(B)/fe2-deps.installed
 	SERVO_BC_LIB=$(B)/libservo_bc.so $(FE2_PYTHON) fe2/patch.py $(FE2_TANGENTS)
+	bash tests/fe2_mpi.sh $(B)/libservo_bc.so $(FE2_PYTHON)
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)

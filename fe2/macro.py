@@ -60,10 +60,10 @@ class Macro:
     make_point(index, X) (X the point's reference position, m). tangent: 'condensed', 'affine' or 'perturbation'
     (step h)."""
 
-    def __init__(self, W, H, nx, ny, make_point, tangent='condensed', h=1e-5, threads=2):
+    def __init__(self, W, H, nx, ny, make_point, tangent='condensed', h=1e-5, threads=2, comm=None):
         if tangent not in TANGENTS:
             raise ValueError("fe2: tangent '%s' (expected one of %s)" % (tangent, ', '.join(TANGENTS)))
-        self.tangent, self.h, self.threads = tangent, h, threads
+        self.tangent, self.h, self.threads, self.comm = tangent, h, threads, comm
         self.mesh = gf.Mesh('cartesian', np.linspace(0.0, W, nx + 1), np.linspace(0.0, H, ny + 1))
         self.mf = gf.MeshFem(self.mesh, 2)
         self.mf.set_classical_fem(1)
@@ -74,7 +74,12 @@ class Macro:
         self.md.add_im_data('C', gf.MeshImData(self.mim, -1, [2, 2, 2, 2]))
         self.mimd_F = gf.MeshImData(self.mim, -1, [2, 2])
         where = self.md.interpolation('X', gf.MeshImData(self.mim, -1, [2])).reshape(-1, 2)
-        self.points = [make_point(k, where[k]) for k in range(len(where))]
+        # on the ranks of comm (mpi4py), each rank keeps the points k = rank, rank + size, ...; every rank
+        # assembles and solves the macro problem alike from the gathered P and C
+        rank, size = (comm.Get_rank(), comm.Get_size()) if comm is not None else (0, 1)
+        self.count = len(where)
+        self.mine = list(range(rank, self.count, size))
+        self.points = [make_point(k, where[k]) for k in self.mine]
         self.X = self.mf.basic_dof_nodes()          # [2, ndof] the node of each dof
         self.comp = np.arange(self.mf.nbdof()) % 2   # the component of each dof (Q1 vector: interleaved)
         self.U = np.zeros(self.mf.nbdof())
@@ -99,12 +104,32 @@ class Macro:
         n = self.mf.nbdof()
         return scipy.sparse.csc_matrix((np.asarray(K.csc_val()), np.asarray(ir), np.asarray(jc)), shape=(n, n))
 
+    def _gathered(self, mine):
+        """Values of this rank's points (in self.mine's order) -> the values of every point, in index order."""
+        if self.comm is None:
+            return list(mine)
+        out = [None] * self.count
+        for indices, values in self.comm.allgather((self.mine, list(mine))):
+            for k, v in zip(indices, values):
+                out[k] = v
+        return out
+
+    def integrate(self, Fs):
+        """Every point to Fs[k] (9 values each; this rank integrates its own). Returns (P, converged, ratios,
+        message) of every point, as servo_bc_core.integrate_points; the message is the failed point's with the
+        smallest index."""
+        P, ok, ratios, message = core.integrate_points(self.points, [Fs[k] for k in self.mine], self.threads)
+        first = next((k for k, c in zip(self.mine, ok) if not c), self.count)
+        if self.comm is not None:
+            first, message = min(self.comm.allgather((first, message)))
+        return self._gathered(P), self._gathered(ok), self._gathered(ratios), message if first < self.count else ''
+
     def tangents(self):
         """C at every point's current state (the last integrate), the points' own (material_point.h)."""
         if self.tangent == 'condensed':
-            return list(self.pool.map(lambda p: p.condensed()[0], self.points))
+            return self._gathered(self.pool.map(lambda p: p.condensed()[0], self.points))
         h = self.h if self.tangent == 'perturbation' else None
-        return list(self.pool.map(lambda p: p.tangent(h), self.points))
+        return self._gathered(self.pool.map(lambda p: p.tangent(h), self.points))
 
     # one load step
     def newton(self, fixed, values, tol=1e-8, max_iterations=12, step=0):
@@ -116,7 +141,7 @@ class Macro:
         U[fixed] = values
         history = []
         for iteration in range(max_iterations + 1):
-            P, ok, ratios, message = core.integrate_points(self.points, self.deformation(U), self.threads)
+            P, ok, ratios, message = self.integrate(self.deformation(U))
             if not all(ok):
                 self.last_message = 'step %d, iteration %d: %s' % (step, iteration, message)
                 return False, min(ratios), history

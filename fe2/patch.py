@@ -54,7 +54,7 @@ for bc in ('D', 'P', 'T'):
         want = macro.boundary_forces(P, W, H, NX, NY, model.X, model.comp)
         target = uniform(model)
         if tangent == TANGENTS[0]:
-            P_all, conv, _, message = macro.core.integrate_points(model.points, model.deformation(target), 2)
+            P_all, conv, _, message = model.integrate(model.deformation(target))
             uniform_diff = relative(model.internal_forces(P_all), want) if all(conv) else float('inf')
             worst = max(worst, uniform_diff)
             print('patch %s uniform: 36 points, nodal forces against P . int N_a N0 dS: %.3e%s'

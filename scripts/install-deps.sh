@@ -41,6 +41,9 @@ for what in "$@"; do
     fe2)
       /usr/bin/python3 -c 'import getfem' 2>/dev/null || need+=(python3-getfem)
       /usr/bin/python3 -c 'import numpy, scipy.sparse.linalg' 2>/dev/null || need+=(python3-numpy python3-scipy)
+      # the material points over MPI ranks (fe2/macro.py, comm)
+      /usr/bin/python3 -c 'import mpi4py' 2>/dev/null || need+=(python3-mpi4py)
+      command -v mpirun >/dev/null || need+=(openmpi-bin)
       ;;
     yade)
       command -v yade >/dev/null || need+=(yade python3-yade)
