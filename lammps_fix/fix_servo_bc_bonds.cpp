@@ -120,7 +120,8 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     restart_peratom = 1;
     comm_forward = 6;
 #ifndef SERVO_BC_LIGGGHTS
-    maxexchange_dynamic = 1;    // the slots' width is known once the bonds form
+    maxexchange = 9;            // the 8 carried values and a count of 0 until the bonds form (size_slots)
+    maxexchange_dynamic = 1;
 #endif
     grow_arrays(atom->nmax);
     atom->add_callback(0);    // Atom::GROW
@@ -354,8 +355,7 @@ void FixServoBCBonds::restart(char *raw)
   if (per != sbc_bpm_host_state_doubles(bonds))
     fail("restart: " + std::to_string(per) + " doubles per bond state; this version's " + model + " bonds have " +
          std::to_string(sbc_bpm_host_state_doubles(bonds)));
-  width = 1 + maxb * (1 + per);
-  grow_arrays(atom->nmax);
+  size_slots();
   restarted = true;
 }
 

@@ -128,6 +128,7 @@ class FixServoBCBonds : public Fix {
   FILE *breaks_fp;
   std::vector<double> break_rows;          // this step's breaks on this rank: step, ID A, ID B, x, y, z
   void create_slots();
+  void size_slots();
   void map_images();
   int partner(tagint tag, const double *near) const;
   void step_slots(bool motion);

@@ -113,15 +113,7 @@ void FixServoBCBonds::create_slots()
   }
   MPI_Allreduce(&most, &maxb, 1, MPI_INT, MPI_MAX, world);
   if (maxb == 0) fail("no two spheres touch, so no bond formed (group " + std::string(group->names[igroup]) + ")");
-  width = 1 + maxb * (1 + per);
-#ifndef SERVO_BC_LIGGGHTS
-  maxexchange = CARRY + width;
-#else
-  if (CARRY + width > 1000)    // LIGGGHTS 3.8's exchange buffer keeps 1000 values per atom spare
-    fail(std::to_string(maxb) + " bonds on one sphere need " + std::to_string(CARRY + width) +
-         " values per atom in an exchange; LIGGGHTS 3.8 moves at most 1000");
-#endif
-  grow_arrays(atom->nmax);
+  size_slots();
   double local[3] = {0.0, 0.0, 0.0};    // bonds formed here (end A owned), the longest, the stiffest
   for (const Entry &e : entries) {
     double *row = slot[e.i];
@@ -147,6 +139,20 @@ void FixServoBCBonds::create_slots()
                 "fix servo_bc/bonds: %d %s bonds between %d spheres, critical time step %.6g s, longest %.6g m\n",
                 formed, model.c_str(), n, critical_dt, longest);
   say(line);
+}
+
+/* the slots' width from maxb and per, the exchange's room for it, the rows */
+void FixServoBCBonds::size_slots()
+{
+  width = 1 + maxb * (1 + per);
+#ifndef SERVO_BC_LIGGGHTS
+  maxexchange = CARRY + width;
+#else
+  if (CARRY + width > 1000)    // LIGGGHTS 3.8's exchange buffer keeps 1000 values per atom spare
+    fail(std::to_string(maxb) + " bonds on one sphere need " + std::to_string(CARRY + width) +
+         " values per atom in an exchange; LIGGGHTS 3.8 moves at most 1000");
+#endif
+  grow_arrays(atom->nmax);
 }
 
 /* the partner of every slot of the owned atoms: an owned or ghost index, the
