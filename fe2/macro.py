@@ -115,13 +115,18 @@ class Macro:
         return out
 
     def integrate(self, Fs):
-        """Every point to Fs[k] (9 values each; this rank integrates its own). Returns (P, converged, ratios,
-        message) of every point, as servo_bc_core.integrate_points; the message is the failed point's with the
-        smallest index."""
-        P, ok, ratios, message = core.integrate_points(self.points, [Fs[k] for k in self.mine], self.threads)
+        """Every point to Fs[k] (9 values each; this rank integrates its own). Returns (P, usable, ratios,
+        message) of every point: usable is converged, certified or not (a point that converged to a state its
+        words cannot certify returns P; self.uncertified counts them); the message is the failed point's with
+        the smallest index."""
+        P, _, ratios, message = core.integrate_points(self.points, [Fs[k] for k in self.mine], self.threads)
+        ok = [p.status != 'failed' for p in self.points]
         first = next((k for k, c in zip(self.mine, ok) if not c), self.count)
+        uncertified = sum(p.status == 'uncertified' for p in self.points)
         if self.comm is not None:
             first, message = min(self.comm.allgather((first, message)))
+            uncertified = self.comm.allreduce(uncertified)
+        self.uncertified = uncertified
         return self._gathered(P), self._gathered(ok), self._gathered(ratios), message if first < self.count else ''
 
     def tangents(self):

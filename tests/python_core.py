@@ -120,6 +120,10 @@ check(not created and not ok and point.status == 'uncertified' and 'cannot be ce
       ratio == 0.5 and all(v == v and abs(v) < 1e30 for v in P) and P[0] < 0 and not point.certified(),
       'uncertified: the material point is created and integrates, status %s, P11 %.6g N/m, ratio %g: %s'
       % (point.status, P[0], ratio, point.message[:90]))
+point.revert()
+P_batch, conv_batch, _, _ = core.integrate_points([point], [[0.9995, 0.0005, 0, 0, 0.9998, 0, 0, 0, 1]])
+check(point.status == 'uncertified' and conv_batch == [False] and P_batch[0] == P,
+      'uncertified: integrate_points gives the same P bit for bit and the point\'s status %s' % point.status)
 point.commit()
 saved = point.state()
 twin = core.MaterialPoint(x, r, 'T accuracy tight', kn=1e4, density=2e3, dt=1e-5, box=box)

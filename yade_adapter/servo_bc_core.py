@@ -249,13 +249,16 @@ class MaterialPoint:
 
 def integrate_points(points, Fs, threads=1):
     """Many MaterialPoints at once (sbc_points_integrate, C11 threads): points[k] to Fs[k] (9 values each).
-    Returns (P, converged, ratios, message): P a list of 9-value lists, converged a list of booleans, the
-    step ratios, and the first failed point's message ('' when all converged). Bit for bit the results of
-    integrating each point alone, whatever the thread count."""
+    Returns (P, converged, ratios, message): P a list of 9-value lists, converged a list of booleans (certified
+    converged), the step ratios, and the first failed point's message ('' when all converged); each point's
+    status ('converged', 'failed' or 'uncertified': converged, P returned, but not certified) is its .status.
+    Bit for bit the results of integrating each point alone, whatever the thread count."""
     n = len(points)
     handles = (ctypes.c_void_p * n)(*[p._p for p in points])
     F = doubles([v for f in Fs for v in f])
     P, status, ratio, err = (ctypes.c_double * (9 * n))(), (ctypes.c_int * n)(), (ctypes.c_double * n)(), _Error()
     library().sbc_points_integrate(handles, n, F, P, status, ratio, threads, ctypes.byref(err))
+    for point, code in zip(points, status):
+        point.status = POINT_STATUS[code]
     return ([list(P[9 * k:9 * k + 9]) for k in range(n)], [s == 0 for s in status], list(ratio),
             err.message.decode() if any(status) else '')
