@@ -133,6 +133,16 @@ F2 = [0.9993, 0.0007, 0, 0, 0.9997, 0, 0, 0, 1]
 check(len(saved) != created_size and point.integrate(F2)[1] == twin.integrate(F2)[1],
       'material point: a committed state of %d values (created with %d: the pair list grew) into a new point, '
       'which continues bit for bit' % (len(saved) // 8, created_size // 8))
+bonded = core.MaterialPoint(xy, [1e-3] * n, 'D accuracy tight', kn=1e4, density=2e3, dt=2e-6,
+                            bonds='kn 1e4 ks 4e3 kr 1e-4 fn 1e3 fs 1e3 mr 1e3 mu 0')
+ok, P, ratio = bonded.integrate([1.001, 0, 0, 0, 1, 0, 0, 0, 1])
+check(ok and abs(P[0] - 12.5) <= 1e-6 * 12.5, 'material point with cohesive bonds (eqs. 7-8): the touching 5 x 5 '
+      'lattice stretched by 1e-3 carries P11 %.10g N/m, N kb_n e / (N - 1) = 12.5' % P[0])
+try:
+    core.MaterialPoint(xy, [1e-3] * n, 'D', kn=1e4, bonds='kn 1e4 ks 4e3')
+    check(False, 'material point bonds: a law without its values is refused')
+except core.ServoBCError as e:
+    check('material point bonds' in str(e), 'material point bonds: refuses a law without its values: %s' % e)
 again = core.MaterialPoint(words='P accuracy balanced', **lattice)
 ok, P, ratio = again.integrate([0.999, 0, 0, 0, 0.999, 0, 0, 0, 1])
 check(ok and again.status == 'converged' and again.certified() and ratio == 1.0,

@@ -54,11 +54,16 @@ def frame_size(q, dim=2):
     return frame_offsets(q, dim)[2] + 2
 
 
+class Cohesive(ctypes.Structure):
+    """sbc_cohesive (contact.h): eqs. 7-8's kn, ks (N/m), kr (N m/rad), fn_u, fs_u (N), m_u (N m), mu."""
+    _fields_ = [(name, ctypes.c_double) for name in ('kn', 'ks', 'kr', 'fn_u', 'fs_u', 'm_u', 'mu')]
+
+
 class PointDef(ctypes.Structure):
     """sbc_point_def (material_point.h)."""
     _fields_ = [('dim', ctypes.c_int), ('n', ctypes.c_int), ('x', _pd), ('r', _pd), ('box', _pd), ('words', ctypes.c_char_p),
                 ('kn', ctypes.c_double), ('ks', ctypes.c_double), ('mu', ctypes.c_double),
-                ('density', ctypes.c_double), ('dt', ctypes.c_double)]
+                ('density', ctypes.c_double), ('dt', ctypes.c_double), ('bonds', ctypes.POINTER(Cohesive))]
 
 
 class ServoBCError(RuntimeError):
@@ -112,6 +117,7 @@ def _load():
         'sbc_cohesive_host_message': (ctypes.c_char_p, [P]),
         'sbc_cohesive_host_sums': (None, [P, pd]),
         'sbc_point_create': (P, [ctypes.POINTER(PointDef), P]),
+        'sbc_cohesive_parse': (I, [I, ctypes.POINTER(ctypes.c_char_p), ctypes.c_char_p, ctypes.POINTER(Cohesive), P]),
         'sbc_point_free': (None, [P]),
         'sbc_point_integrate': (I, [P, pd, pd, pd, P]),
         'sbc_point_certified': (I, [P]),
@@ -186,13 +192,21 @@ class MaterialPoint:
     the condensed one. F and P:
     9 values, row-major 3 x 3 slots (the 2 x 2 block in 2D)."""
 
-    def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6, box=None, dim=2):
+    def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6, box=None, dim=2, bonds=None):
         lib = library()
         self._x, self._r = doubles(x), doubles(r)
         self._box = doubles(box) if box else None
         self._words = words.encode()
-        d = PointDef(dim, len(r), self._x, self._r, self._box, self._words, kn, ks, mu, density, dt)
         err = _Error()
+        self._bonds = None
+        if bonds is not None:    # the law's words, as the runner's 'contact cohesive' takes them
+            w = [v.encode() for v in str(bonds).split()]
+            self._bonds = Cohesive()
+            if lib.sbc_cohesive_parse(len(w), (ctypes.c_char_p * max(1, len(w)))(*w), b'material point bonds',
+                                      ctypes.byref(self._bonds), ctypes.byref(err)):
+                raise ServoBCError(err.message.decode())
+        d = PointDef(dim, len(r), self._x, self._r, self._box, self._words, kn, ks, mu, density, dt,
+                     ctypes.pointer(self._bonds) if self._bonds is not None else None)
         self._p = lib.sbc_point_create(ctypes.byref(d), ctypes.byref(err))
         if not self._p:
             raise ServoBCError(err.message.decode())

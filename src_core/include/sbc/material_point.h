@@ -44,6 +44,10 @@ typedef struct sbc_point_def {
     sbc_frictional law; /* eq. 6 */
     double density;     /* kg/m^2 in 2D, kg/m^3 in 3D */
     double dt;          /* time step, s */
+    const sbc_cohesive *bonds; /* 2D: NULL, or cohesive bonds (eqs. 7-8) between the discs touching at creation
+                                  (gap below 1e-6 of the smallest radius, as the runner's 'contact cohesive');
+                                  their state is the point's. The affine and condensed tangents linearize eq. 6
+                                  only and refuse a bonded point; the perturbation tangent takes it */
 } sbc_point_def;
 
 /* dim 2, no packing, words "D", the contact law's default, density 2e3

@@ -19,6 +19,7 @@ static void *discs_create(const sbc_point_def *d, const sbc_settings *s, sbc_err
     e.r = d->r;
     e.density = d->density;
     e.law = d->law;
+    e.bonds = d->bonds;
     e.dt = d->dt;
     e.alpha = s->damping ? s->alpha : 0.0;
     e.beta = s->damping ? s->beta : 0.0;
@@ -96,6 +97,11 @@ sbc_status sbc_aggregate_network(const sbc_aggregate *a, sbc_network *net, int *
 {
     const int npair = a->ops->pair_count(a->engine);
     int k;
+    *ij = NULL;
+    *fs = NULL;
+    if (a->bonded)
+        return sbc_fail(err, SBC_ERR_INPUT, "contact network: the contacts are linearized by eq. 6 alone; this "
+                        "aggregate's cohesive bonds (eqs. 7-8) are not (use the perturbation tangent)");
     *ij = malloc(sizeof **ij * 2 * (size_t)(npair > 0 ? npair : 1));
     *fs = malloc(sizeof **fs * 3 * (size_t)(npair > 0 ? npair : 1));
     if (!*ij || !*fs)

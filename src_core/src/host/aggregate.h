@@ -50,6 +50,7 @@ typedef struct sbc_aggregate {
     const double *mass;           /* [frame n] the frame particles' masses, kg */
     double dt;                    /* s */
     sbc_frictional law;           /* eq. 6 */
+    int bonded;                   /* the engine has cohesive bonds (eqs. 7-8), which no linearization here holds */
 } sbc_aggregate;
 
 /* Host steps (move the frame, forces, sbc_driver_step) until ctl accepts an

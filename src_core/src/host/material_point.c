@@ -77,6 +77,12 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
         if (s->F[k] != I[k])
             return sbc_fail(err, SBC_ERR_INPUT, "material point: keyword 'F' is the FE code's (each integrate gives "
                             "it); leave it out of the words");
+    if (d->bonds && d->dim != 2)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: cohesive bonds are the paper's 2D bonds (eqs. 7-8); "
+                        "this point is 3D");
+    if (d->bonds && s->update == SBC_UPDATE_NEWTON)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': update newton linearizes eq. 6 alone, not "
+                        "the cohesive bonds (expected update fixed or secant)", d->words);
     if (s->bc == SBC_BC_MIXED || s->nstress > 0 || s->increments != 1 || s->file[0] || s->tangent)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': mixed, stress, increments, file and tangent "
                         "are the path's, which the FE code gives and asks for; expected D, P or T and their keywords", d->words);
@@ -239,6 +245,7 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
     }
     p->a.ops = d->dim == 3 ? &sbc_engine_ops_spheres : &sbc_engine_ops_discs;
     p->a.law = d->law;
+    p->a.bonded = d->bonds != NULL;
     p->a.n = d->n;
     p->a.frame = &p->frame;
     p->a.settings = &p->settings;

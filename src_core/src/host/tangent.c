@@ -17,6 +17,9 @@ sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], doubl
     const sbc_frictional *law = &a->law;
     double Finv[9];
     int c, i, j, k, l;
+    if (a->bonded)
+        return sbc_fail(err, SBC_ERR_INPUT, "affine tangent: it sums the contacts of eq. 6; this aggregate's "
+                        "cohesive bonds (eqs. 7-8) are not in it (use the perturbation tangent)");
     memset(C, 0, sizeof(double) * 81);
     if (!sbc_tensor_inverse(dim, F, Finv))
         return sbc_fail(err, SBC_ERR_GEOMETRY, "affine tangent: the current F cannot be inverted");

@@ -381,6 +381,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
     r.aggregate.mass = r.mass;
     r.aggregate.dt = s->dt;
     r.aggregate.law = s->law;
+    r.aggregate.bonded = s->cohesive;
     if (s->check) {
         if (s->log)
             fprintf(s->log, "check: run of line %d: servo_bc %s, %d particles, frame of %d, %d increments, dt = %g s "
