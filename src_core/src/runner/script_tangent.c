@@ -19,10 +19,13 @@ sbc_status sbc_script_tangent_open(const script *s, int dim, sbc_script_tangent 
     t->dim = dim;
     if (s->settings.tangent == SBC_TANGENT_NONE)
         return SBC_OK;
-    if (s->settings.bc == SBC_BC_MIXED || s->cohesive)
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'tangent': %s; the tangents are those of "
-                        "(D), (P) and (T) on a frictional packing in this version",
-                        s->servo_line, s->cohesive ? "the contacts are cohesive" : "the condition is mixed");
+    if (s->settings.bc == SBC_BC_MIXED)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'tangent': the condition is mixed; the "
+                        "tangents are those of (D), (P) and (T) in this version", s->servo_line);
+    if (s->cohesive && s->settings.tangent != SBC_TANGENT_PERTURBATION)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'tangent': %s linearizes the contacts of "
+                        "eq. 6 alone, and the contacts are cohesive (eqs. 7-8; expected perturbation)",
+                        s->servo_line, sbc_tangent_name(s->settings.tangent));
     if (s->check) /* probed with the other outputs */
         return SBC_OK;
     if (!(t->fp = sbc_output_open(s->settings.tangent_file, SBC_OUTPUT_RESULTS, "servo_bc keyword 'tangent'", err)))
