@@ -122,7 +122,7 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
      "`affine`, `condensed` or `perturbation`, then a path",
      "the embedded runner's: the tangent C̄ = ∂P̄/∂F̄ at every converged increment into a CSV, "
          "`increment,C1111,C1112,…` (dim⁴ columns, C_ijkl with (ij), (kl) row-major); D, P, T on discs "
-         "or spheres without bonds (see [fe2.md](fe2.md)); hosts refuse it",
+         "or spheres (with cohesive bonds only perturbation; see [fe2.md](fe2.md)); hosts refuse it",
      "none"},
 };
 
