@@ -218,6 +218,12 @@ void FixServoBCBonds::init()
   if (model == "cohesive" && force->pair && !force->pair_match("zero", 1))
     fail(std::string("cohesive computes every contact between the group's discs; pair_style ") + force->pair_style +
          " computes them again (use pair_style zero in LAMMPS, pair_style none in LIGGGHTS)");
+  // beam | parallel: bonded spheres interact through their bond alone, a broken bond through its contact
+  // (thesis Sect. 3); a pair style adds its own contact force between them when they overlap
+  if (model != "cohesive" && force->pair && !force->pair_match("zero", 1) && comm->me == 0)
+    error->warning(FLERR, (std::string("Fix servo_bc/bonds: pair_style ") + force->pair_style +
+                           " also acts between bonded spheres: where they overlap, its contact force adds to the "
+                           "bond's (and to a broken bond's contact)").c_str());
   // one fix servo_bc/bonds per atom: a second one on the same atoms would bond them twice
   for (int f = 0; f < modify->nfix; f++) {
     Fix *other = modify->fix[f];
