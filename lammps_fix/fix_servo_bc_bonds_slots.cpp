@@ -65,8 +65,8 @@ void FixServoBCBonds::create_slots()
   bonds = sbc_bpm_host_law(model.c_str(), E, nu, alpha, failure ? strength : nullptr, rmin, msg, sizeof msg);
   if (!bonds) fail(std::string(msg) + " (group " + group->names[igroup] + ")");
   per = sbc_bpm_host_state_doubles(bonds);
-  // a bond forms at |xb - xa| <= (ra + rb)(1 + 1e-9): the partner must be a ghost when another rank owns it
-  const double reach = 2.0 * rmax * (1.0 + 1e-9);
+  // a bond forms at |xb - xa| <= (ra + rb)(1 + touch): the partner must be a ghost when another rank owns it
+  const double reach = 2.0 * rmax * (1.0 + bonds->set.touch);
   const double cut = std::min(comm->cutghost[0], std::min(comm->cutghost[1], comm->cutghost[2]));
   if ((comm->nprocs > 1 || domain->xperiodic || domain->yperiodic || domain->zperiodic) && cut < reach)
     fail("the ghost cutoff " + std::to_string(cut) + " m is shorter than a bond at creation (2 r_max = " +
@@ -133,7 +133,7 @@ void FixServoBCBonds::create_slots()
   MPI_Allreduce(&local[1], most2, 2, MPI_DOUBLE, MPI_MAX, world);
   formed = (int) total;
   longest = most2[0];
-  critical_dt = 0.22 * std::sqrt(mmin / most2[1]);    // eq. 48
+  critical_dt = sbc_bpm_critical_dt_of(mmin, most2[1]);
   char line[256];
   std::snprintf(line, sizeof line,
                 "fix servo_bc/bonds: %d %s bonds between %d spheres, critical time step %.6g s, longest %.6g m\n",

@@ -166,6 +166,10 @@ void sbc_bpm_bond_energies(const sbc_bpm_settings *set, const sbc_bpm_bond_view 
  * there is no bond. */
 double sbc_bpm_critical_dt(const sbc_bpm *e);
 
+/* Eq. 48 from its two extremes: 0.22 sqrt(m_min / k_max) (kg, N/m), s; 0
+ * when k_max is not positive. For a host that reduces them over ranks. */
+double sbc_bpm_critical_dt_of(double mmin, double kmax);
+
 /* The bonds' loads (force, moment: 6 per sphere, N and N m) at the centres
  * e->x, from the motion dt (v, w) of the step (eqs. 10-34), added to load;
  * the bonds' state advances by that step and failing bonds break. The step

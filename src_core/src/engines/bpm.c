@@ -312,6 +312,11 @@ double sbc_bpm_critical_dt(const sbc_bpm *e)
         if (k > kmax)
             kmax = k;
     }
+    return sbc_bpm_critical_dt_of(mmin, kmax);
+}
+
+double sbc_bpm_critical_dt_of(double mmin, double kmax)
+{
     return kmax > 0.0 ? 0.22 * sqrt(mmin / kmax) : 0.0; /* eq. 48 */
 }
 
