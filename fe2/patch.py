@@ -4,15 +4,17 @@ aggregate (a prestressed 5 x 5 frictional lattice) under (D), (P) and (T).
 1. The mesh deformed uniformly by F (every node at u = (F - I) X): the nodal forces equal those of the single
    aggregate's P on the mesh's edges, f_a = P . int N_a N0 dS (zero inside).
 2. The boundary nodes at (F - I) X, the four inside nodes free and started at u = 0: the macro Newton with the
-   condensed tangent finds the uniform state again; its residual ratios and those of the perturbation and the
-   affine tangents are printed, and the nodal forces at convergence against the same closed form.
-3. (D) along the load path u = t (F - I) X on the boundary in one step with a Newton of at most 2 iterations, too few
+   condensed tangent finds the uniform state again, quadratically (its second contraction at most a tenth of its
+   first); its residual ratios and those of the perturbation and the affine tangents are printed, and the nodal
+   forces at convergence against the same closed form.
+3. (D) along the load path u = t (F2 - I) X on the boundary (F2 - I = 4 (F - I)) in one step with a Newton of at most 2 iterations, too few
    for the whole step: the step is reverted and cut in half, and the cut path ends bit for bit where two half steps
    from the start end, at the closed form's nodal forces.
 
 Prints one line per condition and tangent, then `patch max relative difference VALUE` (the largest over
 everything above with the condensed tangent, relative to the largest closed-form nodal force); exits 1 when it
-exceeds 1e-6 or a Newton with the condensed or the perturbation tangent does not converge.
+exceeds 1e-6, a Newton with the condensed or the perturbation tangent does not converge, or the condensed one's is
+not quadratic.
 Usage: python3 fe2/patch.py [TANGENT ...]   (default: condensed affine; perturbation on request)"""
 import sys
 import time
@@ -24,13 +26,15 @@ import macro
 W, H, NX, NY = 0.3, 0.3, 3, 3
 F = [0.9985, 0.0008, 0.0, -0.0003, 0.999, 0.0, 0.0, 0.0, 1.0]
 LIMIT = 1e-6
+# the load path's end (3.): four times F's strain, where the condensed tangent's quadratic Newton needs 3 iterations
+F_PATH = [4.0 * f - 3.0 * (1.0 if k in (0, 4, 8) else 0.0) for k, f in enumerate(F)]
 TANGENTS = sys.argv[1:] or ['condensed', 'affine']
 for name in TANGENTS:
     if name not in macro.TANGENTS:
         sys.exit("fe2/patch.py: tangent '%s' (expected %s)" % (name, ', '.join(macro.TANGENTS)))
 
 
-def uniform(model):
+def uniform(model, F=F):
     return np.array([(F[3 * c] - (1.0 if c == 0 else 0.0)) * x + (F[3 * c + 1] - (1.0 if c == 1 else 0.0)) * y
                      for x, y, c in zip(model.X[0], model.X[1], model.comp)])
 
@@ -70,6 +74,14 @@ for bc in ('D', 'P', 'T'):
                                    time.time() - t0))
         if tangent == 'condensed':
             worst = max(worst, newton_diff)
+            # quadratic: each contraction a fraction of the one before (a linear rate repeats it)
+            c = [history[i + 1] / history[i] for i in range(min(2, len(history) - 1))]
+            quadratic = len(c) == 2 and c[1] <= 0.1 * c[0]
+            print('patch %s Newton condensed: contractions %s (quadratic: the second at most 0.1 of the first: %s)'
+                  % (bc, ' '.join('%.2e' % v for v in c), quadratic))
+            if not quadratic:
+                print('FAIL patch %s: the condensed tangent\'s Newton is not quadratic' % bc)
+                failures += 1
         if not converged and tangent != 'affine':
             print('FAIL patch %s: %s' % (bc, model.last_message))
             failures += 1
@@ -78,14 +90,14 @@ def cut_path(steps):
     model = macro.Macro(W, H, NX, NY, lambda k, X: macro.lattice_point('D accuracy tight'), tangent='condensed')
     boundary = model.dofs_where(lambda x, y, c: np.isclose(x, 0.0) or np.isclose(y, 0.0) or np.isclose(x, W) or
                                 np.isclose(y, H))
-    target = uniform(model)
+    target = uniform(model, F_PATH)
     seen = []
     cuts = model.load(boundary, lambda t: t * target[boundary], steps, tol=1e-8, max_iterations=2,
                       on_step=lambda t, m, history: seen.append((t, len(history) - 1)))
     return model, cuts, seen
 
 
-ok, P, _ = macro.lattice_point('D accuracy tight').integrate(F)
+ok, P, _ = macro.lattice_point('D accuracy tight').integrate(F_PATH)
 cut, cuts, seen = cut_path(1)
 halves, cuts2, seen2 = cut_path(2)
 want = macro.boundary_forces(P, W, H, NX, NY, cut.X, cut.comp)

@@ -152,7 +152,12 @@ sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err);
  * the degrees of freedom that carry no stiffness (rattlers, rotations of
  * discs whose contacts all slide), set to zero; the dense solve also counts
  * the pivots it cannot take (the gear mode of a square lattice's free
- * rotations under (T)). Same layout as the others. */
+ * rotations under (T)). In 2D the tangential springs of sticking contacts
+ * are differentiated along the increment from the committed state (the
+ * straight path of each branch), so that C is the derivative of integrate's
+ * P with respect to F, the consistent tangent a macro Newton needs for its
+ * quadratic rate (docs/fe2.md, "The consistent tangent"); right after a
+ * commit, and in 3D, it is the state's. Same layout as the others. */
 sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanisms, sbc_error *err);
 
 #ifdef __cplusplus

@@ -78,8 +78,10 @@ sbc_status sbc_aggregate_network(const sbc_aggregate *a, struct sbc_network *net
 /* The affine tangent at F (material_point.h, sbc_point_tangent_affine). */
 sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], double C[81], sbc_error *err);
 
-/* The condensed tangent (material_point.h, sbc_point_tangent_condensed). */
-sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, double C[81], int *mechanisms, sbc_error *err);
+/* The condensed tangent (material_point.h, sbc_point_tangent_condensed);
+ * x0: NULL, or (2D) the centres where the increment started (condensed.h). */
+sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, const double *x0, double C[81], int *mechanisms,
+                                   sbc_error *err);
 
 /* The perturbation tangent at an increment that `accepted` has just accepted
  * (before the host's next step: in the driver's row callback), at its F:

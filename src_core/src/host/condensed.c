@@ -17,13 +17,42 @@
 
 #define MAXB 12 /* the largest contact block: 2 spheres x 6 dofs */
 
+/* 2D: the gradient over the branch l of the slip the increment gave a
+ * sticking contact, I(l) = integral of t . dl along the straight path from
+ * the branch l0 at the increment's start (t = J l / |l|, J l = (-l_y, l_x),
+ * the engine's dus summed over its steps): with J l0 . l0 = 0,
+ *   I(l) = (J l0 . l) G(l),  G(l) = int_0^1 ds / |l0 + s (l - l0)|,
+ *   grad I = G J l0 + (J l0 . l) grad G,  grad G = -int_0^1 s l(s) / |l(s)|^3 ds,
+ * by 4-point Gauss-Legendre on [0, 1] (|l(s)| changes by the increment's
+ * strain: the rule is exact to round-off there). At l = l0 it is t. */
+static void path_slip_gradient(const double x0a[2], const double x0b[2], double lx, double ly, double grad[2])
+{
+    static const double node[4] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
+                                   0.9305681557970263};
+    static const double weight[4] = {0.1739274225687269, 0.3260725774312731, 0.3260725774312731,
+                                     0.1739274225687269};
+    const double l0x = x0b[0] - x0a[0], l0y = x0b[1] - x0a[1];
+    const double jx = -l0y, jy = l0x, jl = jx * lx + jy * ly;
+    double G = 0.0, gx = 0.0, gy = 0.0;
+    int k;
+    for (k = 0; k < 4; ++k) {
+        const double s = node[k], sx = l0x + s * (lx - l0x), sy = l0y + s * (ly - l0y);
+        const double inv = 1.0 / sqrt(sx * sx + sy * sy);
+        G += weight[k] * inv;
+        gx -= weight[k] * s * sx * inv * inv * inv;
+        gy -= weight[k] * s * sy * inv * inv * inv;
+    }
+    grad[0] = G * jx + jl * gx;
+    grad[1] = G * jy + jl * gy;
+}
+
 /* 2D: d(loads)/d(dofs) of one contact, loads (f_i, tau_i, f_j, tau_j) over
  * dofs (u_i, theta_i, u_j, theta_j). With l = x_j - x_i, d = |l|, n = l/d,
  * t = (-n_y, n_x), overlap dn = R_i + R_j - d, fn = kn dn, the engine's
  * tangential force fs = (the spring's force on i) . t, and the force on j
  * f_j = fn n - fs t (eq. 6; the engine's moments tau = R fs on both):
  *   d f_j = -kn n (n.dl) + (fn/d) t (t.dl) + (fs/d) n (t.dl) - dfs t,  f_i = -f_j
- *   dfs = ks (t.dl - R_i dtheta_i - R_j dtheta_j)        sticking
+ *   dfs = ks (t.dl - R_i dtheta_i - R_j dtheta_j)        sticking (with x0: grad I . dl for t.dl)
  *   dfs = -sgn(fs) mu kn (n.dl)                           sliding (|fs| at mu fn)
  * with dl = du_j - du_i; the first two terms turn the normal force with the
  * branch, the third the tangential one. */
@@ -50,10 +79,17 @@ static int block_2d(const sbc_network *net, int k, double B[MAXB][MAXB])
         for (q = 0; q < 2; ++q)
             M[p][q] = -law->kn * n[p] * n[q] + fn / d * t[p] * t[q] + fs / d * n[p] * t[q];
     if (stick) { /* dfs = g . dl + gr . (dtheta_i, dtheta_j) */
+        if (net->x0)
+            path_slip_gradient(&net->x0[2 * a], &net->x0[2 * b], lx, ly, g);
+        else {
+            g[0] = t[0];
+            g[1] = t[1];
+        }
+        g[0] *= law->ks;
+        g[1] *= law->ks;
         for (p = 0; p < 2; ++p) {
-            g[p] = law->ks * t[p];
             for (q = 0; q < 2; ++q)
-                M[p][q] -= law->ks * t[p] * t[q];
+                M[p][q] -= t[p] * g[q];
             w[p][0] = law->ks * Ra * t[p];
             w[p][1] = law->ks * Rb * t[p];
         }

@@ -19,6 +19,8 @@ typedef struct sbc_network {
     const double *fs;   /* [3 npair] the tangential spring's force on i, N, in the contact plane (the force on
                            i is -fn n + fs, n from i to j); NULL without friction */
     sbc_frictional law; /* eq. 6 */
+    const double *x0;   /* [dim n] 2D: the centres where the increment started (a material point's committed
+                           state), or NULL; see sbc_condensed_tangent */
     int dense;          /* 1: solved densely even where the core has a sparse solver (tests compare the two) */
 } sbc_network;
 
@@ -28,7 +30,12 @@ typedef struct sbc_network {
  * law of sliding ones, the terms of the forces turning with their contacts)
  * with the interior's and the free frame's degrees of freedom condensed out
  * and the frame's kinematics of bc applied. *mechanisms: the degrees of
- * freedom found to carry no stiffness (set to zero). */
+ * freedom found to carry no stiffness (set to zero). With net->x0 (2D), a
+ * sticking contact's tangential spring is differentiated as the increment
+ * from x0 loaded it, along the straight path from x0's branch to the
+ * current one, instead of at the current state alone: the derivative of
+ * one increment's P with respect to its end, which a macro Newton needs
+ * for its quadratic rate (docs/fe2.md, "The consistent tangent"). */
 sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc_bc bc, double C[81],
                                  int *mechanisms, sbc_error *err);
 

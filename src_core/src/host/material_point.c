@@ -27,6 +27,7 @@ struct sbc_point {
     sbc_driver *driver;
     double *mass;          /* [Q] kg (a.mass) */
     double *committed;     /* [size] the committed state (sbc_point_save's layout) */
+    double *x_committed;   /* [dim n] its centres, m (the condensed tangent's start of the increment) */
     size_t size;
     int at_committed;      /* the engine and the controller hold the committed state */
     double F[9], P[9];     /* committed */
@@ -58,6 +59,7 @@ void sbc_point_free(sbc_point *p)
     sbc_frame_free(&p->frame);
     free(p->mass);
     free(p->committed);
+    free(p->x_committed);
     free(p);
 }
 
@@ -170,6 +172,12 @@ static int committed_room(sbc_point *p, size_t n)
     return 1;
 }
 
+/* the committed centres, from the engine that holds the committed state */
+static void keep_centres(sbc_point *p)
+{
+    memcpy(p->x_committed, p->a.ops->centres(p->a.engine), sizeof(double) * (size_t)(p->frame.dim * p->a.n));
+}
+
 sbc_status sbc_point_commit(sbc_point *p)
 {
     if (!committed_room(p, current_size(p)))
@@ -178,6 +186,7 @@ sbc_status sbc_point_commit(sbc_point *p)
     memcpy(p->F, p->Fc, sizeof p->F);
     memcpy(p->P, p->Pc, sizeof p->P);
     save_current(p, p->F, p->P, p->committed);
+    keep_centres(p);
     p->at_committed = 1;
     return SBC_OK;
 }
@@ -218,6 +227,7 @@ sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *e
         return sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory for a state of %zu values", n);
     }
     memcpy(p->committed, in, sizeof(double) * n);
+    keep_centres(p);
     memcpy(p->F, F, sizeof F);
     memcpy(p->P, P, sizeof P);
     memcpy(p->Fc, F, sizeof F);
@@ -272,7 +282,8 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
         return NULL;
     }
     p->a.ops->set_frame(p->a.engine, &p->frame);
-    if (!(p->mass = malloc(sizeof(double) * (size_t)p->frame.n))) {
+    if (!(p->mass = malloc(sizeof(double) * (size_t)p->frame.n)) ||
+        !(p->x_committed = malloc(sizeof(double) * (size_t)(p->frame.dim * d->n)))) {
         sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
         sbc_point_free(p);
         return NULL;
@@ -375,5 +386,5 @@ sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
 
 sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanisms, sbc_error *err)
 {
-    return sbc_aggregate_condensed(&p->a, C, mechanisms, err);
+    return sbc_aggregate_condensed(&p->a, p->x_committed, C, mechanisms, err);
 }

@@ -54,7 +54,8 @@ sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], doubl
     return SBC_OK;
 }
 
-sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, double C[81], int *mechanisms, sbc_error *err)
+sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, const double *x0, double C[81], int *mechanisms,
+                                   sbc_error *err)
 {
     int *ij = NULL, ignored;
     double *fs = NULL;
@@ -64,8 +65,10 @@ sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, double C[81], int *me
         mechanisms = &ignored;
     memset(C, 0, sizeof(double) * 81);
     *mechanisms = 0;
-    if ((st = sbc_aggregate_network(a, &net, &ij, &fs, err)) == SBC_OK)
+    if ((st = sbc_aggregate_network(a, &net, &ij, &fs, err)) == SBC_OK) {
+        net.x0 = net.dim == 2 ? x0 : NULL;
         st = sbc_condensed_tangent(&net, a->frame, a->settings->bc, C, mechanisms, err);
+    }
     free(ij);
     free(fs);
     return st;

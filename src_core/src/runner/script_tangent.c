@@ -56,7 +56,7 @@ sbc_status sbc_script_tangent_row(const script *s, sbc_script_tangent *t, const 
         st = sbc_aggregate_affine(a, row->F, C, err);
         break;
     case SBC_TANGENT_CONDENSED:
-        st = sbc_aggregate_condensed(a, C, &mechanisms, err);
+        st = sbc_aggregate_condensed(a, NULL, C, &mechanisms, err);
         break;
     default:
         st = sbc_aggregate_perturbation(a, ctl, fire, PERTURBATION_STEP, C, err);
