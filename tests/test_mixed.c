@@ -169,6 +169,39 @@ static void lattice_layer(void)
            "translated layer %.1e apart\n", rows[0][2][COL("F22")], rows[0][4][COL("P22")], hm, worst);
 }
 
+/* The same layer with `stress P22 -100 0`: the stress held from increment
+ * 0 (no stage, no new reference), so increment 0 ends at the closed form
+ * F22 = 0.991 with P22 = P22*, and the shear keeps P22* (F12 measured on the
+ * original reference); Hill-Mandel at every increment. */
+static void lattice_layer_held(void)
+{
+    static double rows[8][CSV_COLS];
+    char csv[512], script[1024];
+    sbc_error err;
+    int k, n;
+    double hm = 0.0;
+    snprintf(csv, sizeof csv, "%s/layer_held.csv", test_tmpdir);
+    snprintf(script, sizeof script,
+             "dimension 2\nlattice square 6 6 spacing 0.001953125 radius 0.0009765625\ncontact frictional kn 1e4 ks 0 "
+             "mu 0\ndensity 2e3\ntimestep 1e-5\nservo_bc mixed F 1 0.01 0 1 increments 2 stress P22 -100 0 accuracy "
+             "tight tol_relative 1e-11 file %s\nrun\n", csv);
+    CHECK(sbc_script_run_string(script, "layer held", NULL, &err) == SBC_OK);
+    n = csv_read(csv, rows, 8);
+    CHECK(n == 3);
+    if (n != 3)
+        return;
+    CHECK_REL(rows[0][COL("F22")], 1.0 - 100.0 * 4.5 / (1e4 * 5.0), 1e-9);
+    CHECK_REL(rows[0][COL("P22")], -100.0, 1e-9);
+    CHECK_REL(rows[1][COL("P22")], -100.0, 1e-4);
+    CHECK_REL(rows[2][COL("P22")], -100.0, 1e-4);
+    CHECK_REL(rows[2][COL("F12")], 0.01, 1e-6);
+    for (k = 0; k < 3; ++k)
+        hm = fmax(hm, fabs(rows[k][COL("hill_mandel")]));
+    CHECK(hm <= 1e-6);
+    printf("  mixed lattice layer, stress held from increment 0: F22 %.12f at increment 0, P22 %.9f N/m at F12 = "
+           "%.9f, Hill-Mandel <= %.1e\n", rows[0][COL("F22")], rows[2][COL("P22")], rows[2][COL("F12")], hm);
+}
+
 void test_mixed(void)
 {
     static const char *words[] = {"mixed", "F", "1", "0.004", "0", "1", "increments", "2", "stress", "P22",
@@ -186,6 +219,7 @@ void test_mixed(void)
     int nrows = 0, k, bottom_follows = 1;
     long step;
     lattice_layer();
+    lattice_layer_held();
     e = test_layer(&p, &f, 0);
     CHECK(e != NULL);
     if (!e) return;

@@ -67,7 +67,8 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
      "Pij value N",
      "mixed only: first Piola–Kirchhoff component P̄ij (N/m; N/m² in 3D) held by the (T) components whose "
          "edge or face normal is e_j, ramped linearly over a stress stage of N increments (i_vs); several "
-         "components share one stage",
+         "components share one stage; N = 0 holds it from increment 0 (a prestressed packing is not "
+         "unloaded first) without a stage or a new reference",
      "–"},
     {"bottom right top left",
      "Mx My, each D, P or T",

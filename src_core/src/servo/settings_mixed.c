@@ -102,9 +102,9 @@ sbc_status sbc_mixed_parse_stress(sbc_settings *s, int nw, const char *const *w,
             return sbc_fail(err, SBC_ERR_INPUT, "keyword 'stress': component %s is given twice", w[0]);
     if (sbc_parse_real(w[1], "VALUE", &sp->value, NULL) != SBC_OK)
         return sbc_fail(err, SBC_ERR_INPUT, "keyword 'stress': %s value '%s' is not a number (N/m)", w[0], w[1]);
-    if (sbc_parse_int(w[2], "N", 1, 100000000L, &n, NULL) != SBC_OK)
+    if (sbc_parse_int(w[2], "N", 0, 100000000L, &n, NULL) != SBC_OK)
         return sbc_fail(err, SBC_ERR_INPUT, "keyword 'stress': increments '%s' is not valid (expected an integer >= "
-                        "1)", w[2]);
+                        "0; 0 holds the stress from increment 0, without a stress stage)", w[2]);
     if (s->nstress > 0 && n != s->stress_increments)
         return sbc_fail(err, SBC_ERR_INPUT, "keyword 'stress': %s is applied in %ld increments, the stress before "
                         "in %d (all stress components share one stress stage)", w[0], n, s->stress_increments);
