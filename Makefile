@@ -10,6 +10,7 @@
 #   make bench    benchmarks (prints figures; LAMMPS side when installed)
 #   make figures  every figure and table of docs/reproduction-*.md, regenerated (hours; FIGURES=... for some)
 #   make fe2-patch   the FE^2 patch test on GetFEM (docs/fe2.md)
+#   make fe2-demo    the FE^2 biaxial test with (D), (P), (T) points beside a DNS: out/fe2/biaxial.csv, .svg
 #   make fuzz     libFuzzer campaigns over the core's input surfaces (FUZZ_RUNS per harness; docs/reliability.md)
 
 CC      ?= cc
@@ -49,7 +50,7 @@ FUZZ_RUNS  ?= 1000000
 FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src -DSBC_PACKING_MAX=64L
 
 .PHONY: all demo compare check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
-  check-yade fe2-patch lammps liggghts fuzz figures \
+  check-yade fe2-patch fe2-demo lammps liggghts fuzz figures \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
@@ -256,9 +257,16 @@ $(B)/fe2-deps.installed:
 	@touch $@
 
 FE2_TANGENTS ?= condensed affine
-fe2-patch: $(B)/libservo_bc.so $(B)/fe2-deps.installed
+fe2-patch: $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(B)/fe2-deps.installed
 	SERVO_BC_LIB=$(B)/libservo_bc.so $(FE2_PYTHON) fe2/patch.py $(FE2_TANGENTS)
 	bash tests/fe2_mpi.sh $(B)/libservo_bc.so $(FE2_PYTHON)
+	bash tests/fe2_demo.sh $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(FE2_PYTHON)
+
+# FE2_DEMO: fe2/biaxial.py's options, e.g. '--elements 4 --n0 100' for the full size (docs/fe2.md)
+FE2_DEMO ?=
+fe2-demo: $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(B)/fe2-deps.installed
+	SERVO_BC_LIB=$(B)/libservo_bc.so $(FE2_PYTHON) fe2/biaxial.py --runner $(B)/servo-bc --plot $(B)/servo-bc-plot \
+	  --out out/fe2 $(FE2_DEMO)
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)

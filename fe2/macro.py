@@ -137,10 +137,11 @@ class Macro:
         return self._gathered(self.pool.map(lambda p: p.tangent(h), self.points))
 
     # one load step
-    def newton(self, fixed, values, tol=1e-8, max_iterations=12, step=0):
-        """Newton from the committed state to the dofs `fixed` at `values`. Returns (converged, ratio, history):
-        history the residual norms relative to the reaction norm, ratio the points' suggested step ratio when
-        one failed (else 1). The points hold the state of the last iteration (commit or revert it)."""
+    def newton(self, fixed, values, tol=1e-8, max_iterations=12, step=0, external=None):
+        """Newton from the committed state to the dofs `fixed` at `values`, under the nodal loads `external`
+        (per dof, N per unit thickness; None: none). Returns (converged, ratio, history): history the residual
+        norms relative to the reaction norm, ratio the points' suggested step ratio when one failed (else 1).
+        The points hold the state of the last iteration (commit or revert it)."""
         free = np.setdiff1d(np.arange(self.mf.nbdof()), fixed)
         U = self.U.copy()
         U[fixed] = values
@@ -151,6 +152,8 @@ class Macro:
                 self.last_message = 'step %d, iteration %d: %s' % (step, iteration, message)
                 return False, min(ratios), history
             r = self.internal_forces(P)
+            if external is not None:
+                r = r - external
             reaction = np.linalg.norm(r[fixed])
             norm = np.linalg.norm(r[free]) / (reaction if reaction > 0 else 1.0)
             history.append(norm)
@@ -174,14 +177,17 @@ class Macro:
         for p in self.points:
             p.revert()
 
-    def load(self, fixed, values_at, steps, tol=1e-8, max_iterations=12, min_fraction=1e-3, on_step=None):
-        """The load path t in [0, 1] in `steps` equal steps, the dofs `fixed` at values_at(t); a step whose points
-        fail or whose Newton does not converge is reverted and cut (by the points' ratio, else by half), down to
-        min_fraction of a step. on_step(t, macro, history) after every committed step."""
+    def load(self, fixed, values_at, steps, tol=1e-8, max_iterations=12, min_fraction=1e-3, on_step=None,
+             external_at=None):
+        """The load path t in [0, 1] in `steps` equal steps, the dofs `fixed` at values_at(t) under the nodal
+        loads external_at(t) (None: none); a step whose points fail or whose Newton does not converge is reverted
+        and cut (by the points' ratio, else by half), down to min_fraction of a step. on_step(t, macro, history)
+        after every committed step."""
         t, dt, cuts, k = 0.0, 1.0 / steps, 0, 0
         while t < 1.0 - 1e-12:
             dt = min(dt, 1.0 - t)
-            ok, ratio, history = self.newton(fixed, values_at(t + dt), tol, max_iterations, k + 1)
+            ok, ratio, history = self.newton(fixed, values_at(t + dt), tol, max_iterations, k + 1,
+                                             external_at(t + dt) if external_at else None)
             if not ok:
                 self.revert()
                 cuts += 1

@@ -1,0 +1,28 @@
+#!/bin/bash
+# make fe2-demo at its smallest (tests/, in make fe2-patch): fe2/biaxial.py with one element of four (D)
+# points of n0 20 discs and a DNS of n0 80, one step of u. The DNS holds the lateral stress P11 = -p at every
+# row (tight: 1e-6), both forces are compressive and grow with u, and the CSV has the issue's columns.
+# Prints "N passed, N failed". Usage: fe2_demo.sh LIBSERVO_BC RUNNER PLOT [PYTHON]
+lib=${1:?usage: fe2_demo.sh LIBSERVO_BC RUNNER PLOT [PYTHON]}
+runner=${2:?}; plot=${3:?}; py=${4:-python3}
+here=$(cd "$(dirname "$0")" && pwd)
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+passed=0 failed=0
+check() { if [ "$1" = 0 ]; then passed=$((passed + 1)); echo "fe2 demo: $2"; else failed=$((failed + 1)); echo "FAIL fe2 demo: $2"; fi; }
+SERVO_BC_LIB=$lib timeout 600 "$py" "$here/../fe2/biaxial.py" --n0 20 --steps 1 --only D,DNS --pressure 50 \
+  --runner "$runner" --plot "$plot" --out "$out" > "$out/log" 2>&1
+check $? "fe2/biaxial.py at its smallest runs ($(tail -1 "$out/log"))"
+[ "$(head -1 "$out/biaxial.csv" 2>/dev/null)" = "u,force_D,force_DNS" ] && [ "$(wc -l < "$out/biaxial.csv")" = 3 ]
+check $? "biaxial.csv: u,force_D,force_DNS and 2 rows"
+awk -F, 'NR == 2 { d0 = $2; n0 = $3 } NR == 3 { ok = d0 > 0 && n0 > 0 && $2 > d0 && $3 > n0 } END { exit !ok }' \
+  "$out/biaxial.csv" 2>/dev/null
+check $? "FE2 (D) and DNS forces compressive and growing with u: $(tail -2 "$out/biaxial.csv" 2>/dev/null | tr '\n' ' ')"
+awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "P11") c = i; next }
+         { n++; d = ($c + 50) / 50; if (d < 0) d = -d; if (d > worst) worst = d }
+         END { printf "%.2e\n", worst; exit !(c && n == 2 && worst <= 1e-6) }' "$out/biaxial_dns_rows.csv" > "$out/p11" 2>/dev/null
+check $? "the DNS holds P11 = -50 N/m at both rows (largest relative difference $(cat "$out/p11"))"
+[ -s "$out/biaxial.svg" ]
+check $? "the figure biaxial.svg"
+echo "$passed passed, $failed failed"
+[ "$failed" = 0 ]
