@@ -209,6 +209,7 @@ static void condensed_consistent(void)
     static const double F[9] = {0.9985, 0.0008, 0, -0.0003, 0.999, 0, 0, 0, 1};
     static const char *words[3] = {"D accuracy tight", "P accuracy tight", "T accuracy tight"};
     static const double limit[3] = {2e-5, 2e-5, 1e-4};
+    static const int mechanisms_at_most[3] = {1, 1, 2}; /* (T)'s gear mode: the dense solve counts 2 (fe2.md) */
     int k;
     for (k = 0; k < 3; ++k) {
         sbc_point_def d = lattice(words[k]);
@@ -216,7 +217,8 @@ static void condensed_consistent(void)
         sbc_point *p;
         double P[9], K[81], C[81], ratio, norm = 0.0, diff = 0.0;
         int ij, mechanisms;
-        condensed_against_perturbation(d, F, 1e-5, 1, limit[k], "consistent, F12 0.0008, F21 -0.0003");
+        condensed_against_perturbation(d, F, 1e-5, mechanisms_at_most[k], limit[k],
+                                       "consistent, F12 0.0008, F21 -0.0003");
         d.law.ks = 2e3;
         d.law.mu = 0.4;
         if (!(p = sbc_point_create(&d, &err)))
