@@ -184,6 +184,27 @@ for e in embedded lammps liggghts yade lammps_np2 liggghts_np2; do
     fail=$((fail + 1)); echo "FAIL 3D layer, irregular ($e): P33 error, |hill_mandel|, P13: ${*:-none} (limits 1e-4, 1e-4, 5 % of $ref)"
   fi
 done
+# the 3D layer on the prestressed irregular packing (inputs/compare/irregular_layer_prestressed_3d.sbc: 71
+# spheres compressed by 0.2 %, P33* = -1.5e4 N/m^2 held from increment 0 by `stress P33 -1.5e4 0`, then
+# F13 = 0.001 in 2 increments at balanced) in every host: P33 held to 1e-4 of P33* and |hill_mandel| <= 1e-4
+# on every row, P13 at F13 = 0.001 within 5 % of the embedded engine's (as the touching layer above)
+dir=$tmp/irregular_layer_prestressed_3d
+(cd "$top" && RANKS="1 2" bash scripts/compare.sh inputs/compare/irregular_layer_prestressed_3d.sbc "$dir" |
+  grep -v "^compare: report")
+prestressed_row() { awk -F, "$COLUMNS_AWK"'NR > 1 { n++; d = ($col("P33") + 1.5e4) / 1.5e4; if (d < 0) d = -d
+    if (d > m) m = d; h = $col("hill_mandel"); if (h < 0) h = -h; if (h > hm) hm = h; p13 = $col("P13") }
+  END { if (n == 3) printf "%.3g %.3g %.12g", m, hm, p13; else print "none" }' "$dir/$1.csv" 2>/dev/null; }
+set -- $(prestressed_row embedded)
+ref=${3:-0}
+for e in embedded lammps liggghts yade lammps_np2 liggghts_np2; do
+  set -- $(prestressed_row $e)
+  if [ $# = 3 ] && awk -v m="$1" -v h="$2" -v p="$3" -v r="$ref" 'BEGIN { d = (p - r) / r; if (d < 0) d = -d
+      exit !(m <= 1e-4 && h <= 1e-4 && r > 0 && d <= 0.05) }'; then
+    pass=$((pass + 1)); echo "3D layer, prestressed irregular 71 spheres ($e): P33 within $1 of P33*, |hill_mandel| <= $2, P13 = $3 N/m^2 (embedded $ref)"
+  else
+    fail=$((fail + 1)); echo "FAIL 3D layer, prestressed irregular ($e): P33 error, |hill_mandel|, P13: ${*:-none} (limits 1e-4, 1e-4, 5 % of $ref)"
+  fi
+done
 # the frame seal (seal.h) in every host: the chain on the wall of a gap in
 # the frame carries its closed-form load, sigma22 = -120 N/m (-100 N/m where a
 # host leaves the seal out and the chain falls into the gap), to 1e-6

@@ -143,6 +143,30 @@ static void layer(const char *packing, const char *moved)
            "|hill_mandel| %.1e; translated %.1e apart\n", held, L[2][P13], worst_hill_mandel(L), apart);
 }
 
+/* The 3D layer on the packing compressed by 0.2 % (tests/packings/irregular30_strain.txt, 71 spheres;
+   inputs/compare/irregular_layer_prestressed_3d.sbc) with P33* = -1.5e4 N/m^2 held from increment 0
+   (`stress P33 -1.5e4 0`), then F13 = 0.001 in 2: P33 held to 1e-3 of P33* at every row, Hill-Mandel within
+   balanced's 1e-4, P13 rising. With a stress stage from 0 (N >= 1) increment 0 unloads the prestressed packing
+   and stops at max_iterations (docs/frame3d.md). */
+static void layer_prestressed(void)
+{
+    static const char *const words = "mixed F 1 0 0.001 0 1 0 0 0 1 increments 2 stress P33 -1.5e4 0 "
+                                     "accuracy balanced";
+    double L[ROWS][WANT], held = 0.0;
+    const int n = run(words, "tests/packings/irregular30_strain.txt", "irregular3d_layer_prestressed", L);
+    int k;
+    CHECK(n == ROWS);
+    if (n != ROWS)
+        return;
+    for (k = 0; k < ROWS; ++k)
+        held = fmax(held, fabs(L[k][P33] + 1.5e4) / 1.5e4);
+    CHECK(worst_hill_mandel(L) <= 1e-4);
+    CHECK(held <= 1e-3 && fabs(L[2][F13] - 0.001) <= 1e-12 && L[2][P13] > L[1][P13] && L[1][P13] > L[0][P13]);
+    printf("  irregular3d: the 3D layer on the prestressed packing, P33* held from increment 0: P33 within %.1e of "
+           "-1.5e4 N/m^2, P13 %.6g, %.6g, %.6g N/m^2, |hill_mandel| %.1e\n", held, L[0][P13], L[1][P13], L[2][P13],
+           worst_hill_mandel(L));
+}
+
 void test_irregular_3d(void)
 {
     /* the packing of inputs/compare/irregular_layer_3d.sbc (its generate line in its header) */
@@ -161,4 +185,5 @@ void test_irregular_3d(void)
     free(r);
     triaxial(packing);
     layer(packing, moved);
+    layer_prestressed();
 }
