@@ -43,9 +43,13 @@ def run(runner, script, path):
     return done.stdout
 
 
+def packing_path(out, n0, seed):
+    return os.path.abspath(os.path.join(out, 'packing_n%d_seed%d.txt' % (n0, seed)))
+
+
 def packing(runner, out, n0, seed):
     """A generated packing (x [2n], r [n], box [4]) from the runner's write_packing text, kept in out."""
-    path = os.path.join(out, 'packing_n%d_seed%d.txt' % (n0, seed))
+    path = packing_path(out, n0, seed)
     if not os.path.exists(path):
         run(runner, 'dimension 2\ncontact frictional %s\ndensity 2e3\ntimestep 1e-6\n%s\nwrite_packing text %s\n'
             % (LAW, GENERATE % (n0, seed), path), path + '.sbc')
@@ -96,9 +100,11 @@ def dns(args, L, us):
     csv = os.path.join(args.out, 'biaxial_dns_rows.csv')
     n0 = args.n0 * 4 * args.elements ** 2
     steps = len(us) - 1
-    log = run(args.runner, 'dimension 2\ncontact frictional %s\ndensity 2e3\ntimestep 1e-4\n%s\nservo_bc mixed '
-              'bottom D D top D D left T D right T D stress P11 %.17g 0 F 1 0 0 %.17g increments %d accuracy '
-              'tight file %s\nrun\n' % (LAW, GENERATE % (n0, 1000), -args.pressure, 1.0 - us[-1] / L, steps, csv),
+    packing(args.runner, args.out, n0, 1000)
+    log = run(args.runner, 'dimension 2\ncontact frictional %s\ndensity 2e3\ntimestep 1e-4\nread_packing %s\n'
+              'servo_bc mixed bottom D D top D D left T D right T D stress P11 %.17g 0 F 1 0 0 %.17g increments %d '
+              'accuracy tight file %s\nrun\n' % (LAW, packing_path(args.out, n0, 1000), -args.pressure,
+                                                 1.0 - us[-1] / L, steps, csv),
               os.path.join(args.out, 'biaxial_dns.sbc'))
     head, *rows = [line.strip().split(',') for line in open(csv)]
     P22, F22 = head.index('P22'), head.index('F22')
@@ -106,7 +112,8 @@ def dns(args, L, us):
     got = [(1.0 - float(row[F22])) * L for row in rows]
     if len(rows) != len(us) or max(abs(a - b) for a, b in zip(got, us)) > 1e-9 * L:
         sys.exit('fe2/biaxial.py: the DNS rows (%d) are not at the platen displacements of FE^2' % len(rows))
-    discs = next((w for w in log.split('\n') if 'after the periodic reconstruction' in w), '')
+    with open(packing_path(args.out, n0, 1000)) as f:
+        discs = f.readline().strip('# \n')
     return forces, discs, time.time() - t0
 
 
