@@ -15,7 +15,8 @@ the specimen's mean lateral stretch, F11 measured). Force per unit thickness on 
 positive: FE^2 the reactions of the top's vertical dofs, DNS -P22 L.
 
 Writes OUT/biaxial.csv (u,force_D,force_P,force_T,force_DNS, m and N), one CSV per curve for the figure, and
-prints the cost of each. Usage (defaults: the demo's size, a few minutes on 2 cores):
+prints the cost of each. A path that stops (a point that fails below the smallest step cut) keeps its rows, leaves
+its later cells empty, and makes the script exit 1 after writing everything. Usage (defaults: the demo's size, a few minutes on 2 cores):
   python3 fe2/biaxial.py [--n0 100] [--elements 1] [--steps 4] [--strain 0.01] [--pressure 50] [--out out/fe2]
                          [--runner build/servo-bc] [--plot build/servo-bc-plot] [--threads 2]"""
 import argparse
@@ -85,8 +86,9 @@ def fe2(bc, args, L, us):
             cuts = model.load(fixed, values_at(u_prev, u), 1, tol=TOLERANCE, max_iterations=15,
                               on_step=lambda t, m, history: seen.append(len(history) - 1),
                               external_at=lambda t: lateral)
-        except macro.MacroFailure as e:
-            sys.exit('fe2/biaxial.py: (%s) at u = %g m: %s' % (bc, u, e))
+        except macro.MacroFailure as e:  # the path ends here; the rows before it stand
+            print('fe2/biaxial.py: (%s) stopped at u = %g m: %s' % (bc, u, e), flush=True)
+            return forces, created, time.time() - t0
         u_prev = u
         forces.append(-float(np.sum(model.trial_r[top])))
         print('fe2 (%s): u %.4e m, force %.6g N, Newton iterations %s, %d cut(s), %d uncertified points'
@@ -146,10 +148,11 @@ def main():
         curves['DNS'], discs, wall = dns(args, L, us)
         cost['DNS'] = '%s; %.1f s' % (discs.strip(), wall)
     names = [k for k in ('D', 'P', 'T', 'DNS') if k in curves]
-    with open(os.path.join(args.out, 'biaxial.csv'), 'w') as f:
+    with open(os.path.join(args.out, 'biaxial.csv'), 'w') as f:  # a path that stopped leaves its cells empty
         f.write('u,' + ','.join('force_' + k for k in names) + '\n')
         for i, u in enumerate(us):
-            f.write('%.17g,' % u + ','.join('%.17g' % curves[k][i] for k in names) + '\n')
+            f.write('%.17g,' % u + ','.join('%.17g' % curves[k][i] if i < len(curves[k]) else ''
+                                            for k in names) + '\n')
     files = []
     for k in names:
         path = os.path.join(args.out, 'biaxial_%s.csv' % k)
@@ -163,6 +166,9 @@ def main():
     for k in names:
         print('fe2 biaxial %s: %s' % (k, cost[k]))
     print('fe2 biaxial: wrote %s' % os.path.join(args.out, 'biaxial.csv'))
+    stopped = [k for k in names if len(curves[k]) < len(us)]
+    if stopped:
+        sys.exit('fe2/biaxial.py: the path of %s stopped before u = %g m (above)' % (', '.join(stopped), us[-1]))
 
 
 if __name__ == '__main__':
