@@ -29,7 +29,8 @@ import numpy as np
 
 import macro
 
-LAW = 'kn 1e4 ks 2e3 mu 0.4'
+KN, KS, MU, DENSITY, DT = 1e4, 2e3, 0.4, 2e3, 1e-4  # N/m, N/m, -, kg/m^2, s (0.09 of the critical step)
+LAW = 'contact frictional kn %g ks %g mu %g\ndensity %g\ntimestep %g' % (KN, KS, MU, DENSITY, DT)
 GENERATE = 'generate periodic n0 %d rmin 1e-3 polydispersity 2 seed %d strain 0.01'
 WORDS = {'D': 'D accuracy tight', 'P': 'P accuracy tight', 'T': 'T accuracy tight'}
 TOLERANCE = 1e-3  # the macro Newton's, of the reaction: the points' frictional equilibria are not smoother
@@ -52,19 +53,18 @@ def packing(runner, out, n0, seed):
     """A generated packing (x [2n], r [n], box [4]) from the runner's write_packing text, kept in out."""
     path = packing_path(out, n0, seed)
     if not os.path.exists(path):
-        run(runner, 'dimension 2\ncontact frictional %s\ndensity 2e3\ntimestep 1e-6\n%s\nwrite_packing text %s\n'
-            % (LAW, GENERATE % (n0, seed), path), path + '.sbc')
+        run(runner, 'dimension 2\n%s\n%s\nwrite_packing text %s\n' % (LAW, GENERATE % (n0, seed), path),
+            path + '.sbc')
     return macro.read_packing(path)
 
 
 def fe2(bc, args, L, us):
     """The top force (N, compression positive) at each u of us, and the wall time."""
     t0 = time.time()
-    kn, ks, mu = 1e4, 2e3, 0.4
 
     def make_point(k, X):
         x, r, box = packing(args.runner, args.out, args.n0, k + 1)
-        return macro.core.MaterialPoint(x, r, WORDS[bc], kn=kn, ks=ks, mu=mu, density=2e3, dt=1e-4, box=box)
+        return macro.core.MaterialPoint(x, r, WORDS[bc], kn=KN, ks=KS, mu=MU, density=DENSITY, dt=DT, box=box)
 
     n = args.elements
     model = macro.Macro(L, L, n, n, make_point, tangent='condensed', threads=args.threads)
@@ -103,11 +103,10 @@ def dns(args, L, us):
     n0 = args.n0 * 4 * args.elements ** 2
     steps = len(us) - 1
     packing(args.runner, args.out, n0, 1000)
-    log = run(args.runner, 'dimension 2\ncontact frictional %s\ndensity 2e3\ntimestep 1e-4\nread_packing %s\n'
-              'servo_bc mixed bottom D D top D D left T D right T D stress P11 %.17g 0 F 1 0 0 %.17g increments %d '
-              'accuracy tight file %s\nrun\n' % (LAW, packing_path(args.out, n0, 1000), -args.pressure,
-                                                 1.0 - us[-1] / L, steps, csv),
-              os.path.join(args.out, 'biaxial_dns.sbc'))
+    run(args.runner, 'dimension 2\n%s\nread_packing %s\n'
+        'servo_bc mixed bottom D D top D D left T D right T D stress P11 %.17g 0 F 1 0 0 %.17g increments %d '
+        'accuracy tight file %s\nrun\n' % (LAW, packing_path(args.out, n0, 1000), -args.pressure, 1.0 - us[-1] / L,
+                                           steps, csv), os.path.join(args.out, 'biaxial_dns.sbc'))
     head, *rows = [line.strip().split(',') for line in open(csv)]
     P22, F22 = head.index('P22'), head.index('F22')
     forces = [-float(row[P22]) * L for row in rows]
