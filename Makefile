@@ -126,6 +126,7 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B
 	bash tests/certify.sh $(B)
 	bash tests/replicas.sh $(B)
 	bash tests/traction_irregular.sh $(B)
+	bash tests/traction_irregular_3d.sh $(B)
 	bash tests/remap.sh $(B)
 	bash tests/newton.sh $(B)
 

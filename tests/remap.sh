@@ -11,14 +11,8 @@
 #   to the largest |P| ((D) tight 1e-6, (P) balanced 1e-4).
 # Prints "N passed, N failed". Usage: remap.sh [BUILD-DIR]
 set -u
-top=$(cd "$(dirname "$0")/.." && pwd)
-B=$(cd "${1:-$top/build}" && pwd)
-. "$top/tests/csv_columns.sh"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
-ok() { pass=$((pass + 1)); echo "remap $1"; }
-no() { fail=$((fail + 1)); echo "FAIL remap $1"; }
+CHECKS_LABEL=remap
+. "$(dirname "$0")/shell_checks.sh"
 run() {  # NAME PACKING_LINES WORDS
   printf 'dimension 2\n%s\ncontact frictional kn 1e4 ks 0 mu 0\ndensity 2e3\ntimestep 1e-5\nservo_bc %s file %s/%s.csv\nrun\n' \
     "$2" "$3" "$tmp" "$1" > "$tmp/$1.sbc"

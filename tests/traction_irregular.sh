@@ -11,11 +11,8 @@
 # stress scale (moment balance). Prints "N passed, N failed".
 # Usage: traction_irregular.sh [BUILD-DIR]
 set -u
-top=$(cd "$(dirname "$0")/.." && pwd)
-B=$(cd "${1:-$top/build}" && pwd)
-. "$top/tests/csv_columns.sh"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+CHECKS_LABEL="(T) irregular"
+. "$(dirname "$0")/shell_checks.sh"
 cat > "$tmp/T.sbc" <<EOF
 dimension 2
 generate periodic n0 200 rmin 0.67e-3 polydispersity 2 seed 1 strain 0.01
@@ -25,7 +22,6 @@ timestep 7.5e-5
 servo_bc T F 1 0.02 0 1 increments 4 seal yes file $tmp/T.csv
 run
 EOF
-pass=0 fail=0
 if (cd "$tmp" && "$B/servo-bc" T.sbc > T.log 2>&1); then
   pass=$((pass + 1)); echo "(T) irregular, 232 discs: $(grep finished "$tmp/T.log")"
 else

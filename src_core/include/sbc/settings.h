@@ -91,6 +91,9 @@ typedef struct sbc_settings {
     double predict;          /* inheritance factor n_f in [0, 1]; 0 = no prediction */
     int max_iterations;      /* servo iterations per increment; 100000 */
     int seal;                /* 1: the edges of the frame's polygon are walls for the interior (seal.h); 0 */
+    int rotation_zero;       /* T only: 1 (rotation zero): the frame's rotations held at zero, as (D) holds them;
+                                0 (rotation free): the paper's free rotation (docs/frame3d.md, "(T) and the
+                                frame's rotations") */
     int remap;               /* 1 (remap x): while the frame travels to an increment's first commands, the
                                 interior follows the affine part of the change of F (controller.h,
                                 sbc_controller_remap); 0 (remap none) */

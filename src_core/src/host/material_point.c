@@ -88,6 +88,10 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
     if (s->bc == SBC_BC_MIXED || s->nstress > 0 || s->increments != 1 || s->file[0] || s->tangent)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': mixed, stress, increments, file and tangent "
                         "are the path's, which the FE code gives and asks for; expected D, P or T and their keywords", d->words);
+    if (s->rotation_zero)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': 'rotation zero' is not linearized by the "
+                        "point's affine and condensed tangents (they take the paper's (T) with free rotations)",
+                        d->words);
     return SBC_OK;
 }
 

@@ -38,7 +38,7 @@ static void start_classic(sbc_controller *c)
             for (k = 0; k < f->dim; ++k)
                 x[k] += c->s.predict * (c->x_prev[3 * q + k] - GX[k]);
         }
-        if (c->s.bc == SBC_BC_T) {
+        if (c->s.bc == SBC_BC_T && !c->s.rotation_zero) {
             c->free_rot[q] = 1;
         } else {
             for (k = 0; k < c->rot; ++k)

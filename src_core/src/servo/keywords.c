@@ -104,6 +104,12 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
          "\"Seal\"; in 3D the triangles of the surface through them, [frame3d.md](frame3d.md) \"Seal\"); for "
          "irregular packings sheared far enough that a disc would slip out between frame discs",
      "no"},
+    {"rotation",
+     "`free` or `zero`",
+     "T only: `free` is the paper's (T), the frame's rotations free; `zero` holds them at zero as (D) does, the "
+         "alternative that carries load on irregular sphere packings, where frame spheres with fewer than three "
+         "contacts roll ([frame3d.md](frame3d.md) \"(T) and the frame's rotations\")",
+     "free"},
     {"remap",
      "`x` or `none`",
      "`x`: while the frame travels to an increment's first positions, every interior particle follows the "
