@@ -169,6 +169,14 @@ sbc_status sbc_controller_branch(sbc_controller *c, const double F[9], sbc_error
  * call, or after sbc_controller_aim before the first step. */
 int sbc_controller_remap(const sbc_controller *c, double M[9], double origin[3]);
 
+/* Mixed: the mode (SBC_MODE_D, _P or _T) of each frame particle's
+ * components, mode [3 Q], from the face modes of s (docs/servo_bc.md,
+ * "Mixed"): a particle on several faces takes those of its face normal to
+ * the last axis, then the middle, then the first; P makes it a member of
+ * its family of periodic images, except on a corner or where one of its
+ * other faces is not periodic, where it is D. */
+void sbc_mixed_modes(const sbc_frame *f, const sbc_settings *s, unsigned char *mode);
+
 /* A material point's choice (material_point.h): an increment whose
  * converged state cannot be certified at the words' accuracy (the checks of
  * docs/servo_bc.md, "Certified rows") is accepted all the same instead of

@@ -18,7 +18,8 @@
  *   if (sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED)
  *       sbc_point_commit(p);                          else: cut the step by ratio
  *
- * Mixed conditions and bonds are not in this version (docs/fe2.md). */
+ * A mixed frame is taken when its faces are D or P (every component of F
+ * given; docs/fe2.md, "Mixed points"). */
 #ifndef SBC_MATERIAL_POINT_H
 #define SBC_MATERIAL_POINT_H
 
@@ -40,7 +41,8 @@ typedef struct sbc_point_def {
     const double *box;  /* 2D: NULL, or [4] xlo xhi ylo yhi of a geometrically periodic packing's
                            square (m): its frame is the discs crossing the square's edges (packing.h) */
     const char *words;  /* servo_bc words: the BC (D, P or T) and its keywords (accuracy, ...);
-                           F, increments, stress, file and mixed are the point's and refused */
+                           F, increments, stress and file are the point's and refused; mixed takes D and P
+                           faces (a T component needs a stress) */
     sbc_frictional law; /* eq. 6 */
     double density;     /* kg/m^2 in 2D, kg/m^3 in 3D */
     double dt;          /* time step, s */

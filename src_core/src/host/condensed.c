@@ -286,7 +286,8 @@ static int number_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc
                 unk[nd * p + c] = count++;
     for (q = 0; q < f->n && bc != SBC_BC_T; ++q) {
         const int p0 = f->particle[q];
-        const int size = bc == SBC_BC_P ? sbc_frame_family(f, q, members) : -1;
+        const int periodic = bc == SBC_BC_P || (bc == SBC_BC_MIXED && net->mode[3 * q] == SBC_MODE_P);
+        const int size = periodic ? sbc_frame_family(f, q, members) : -1;
         for (kl = 0; kl < dim * dim; ++kl) /* F X_q on the translations */
             for (c = 0; c < dim; ++c)
                 z0[(long)kl * ndof + nd * p0 + c] = c == kl / dim ? f->X[3 * q + kl % dim] : 0.0;
@@ -534,8 +535,14 @@ static sbc_status system_build(const sbc_network *net, const sbc_frame *f, sbc_b
     memset(y, 0, sizeof *y);
     if (dim != f->dim || (dim != 2 && dim != 3))
         return sbc_fail(err, SBC_ERR_INPUT, "%s: a %dD network on a %dD frame", what, dim, f->dim);
-    if (bc != SBC_BC_D && bc != SBC_BC_P && bc != SBC_BC_T)
-        return sbc_fail(err, SBC_ERR_INPUT, "%s: (D), (P) or (T) only", what);
+    if (bc != SBC_BC_D && bc != SBC_BC_P && bc != SBC_BC_T && bc != SBC_BC_MIXED)
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: (D), (P), (T) or mixed only", what);
+    if (bc == SBC_BC_MIXED && !net->mode)
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: mixed without the frame's modes", what);
+    for (q = 0; bc == SBC_BC_MIXED && q < f->n * 3; ++q)
+        if (q % 3 < dim && net->mode[q] == SBC_MODE_T)
+            return sbc_fail(err, SBC_ERR_INPUT, "%s: mixed with a T component (frame particle %d) is not linearized "
+                            "here; D and P components are", what, q / 3);
     y->dim = dim, y->nd = nd, y->nb = nb, y->ndof = ndof, y->nc = nc;
     y->blocks = malloc(sizeof *y->blocks * (size_t)(net->npair > 0 ? net->npair : 1));
     y->open = calloc((size_t)(net->npair > 0 ? net->npair : 1), sizeof *y->open);

@@ -22,10 +22,12 @@ typedef struct sbc_network {
     const double *x0;   /* [dim n] 2D: the centres where the increment started (a material point's committed
                            state), or NULL; see sbc_condensed_tangent */
     int dense;          /* 1: solved densely even where the core has a sparse solver (tests compare the two) */
+    const unsigned char *mode; /* mixed: the frame particles' component modes [3Q] (sbc_mixed_modes), D or P
+                                  (T is not linearized here); NULL otherwise */
 } sbc_network;
 
 /* C_ijkl = dP_ij / dF_kl (C[9 (3i + j) + 3k + l]) of the aggregate at
- * equilibrium under bc (D, P or T) on frame f: the stiffness of the contact
+ * equilibrium under bc (D, P, T, or mixed of D and P with net->mode) on frame f: the stiffness of the contact
  * network (normal springs, tangential springs of sticking contacts, the slip
  * law of sliding ones, the terms of the forces turning with their contacts)
  * with the interior's and the free frame's degrees of freedom condensed out

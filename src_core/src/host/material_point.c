@@ -4,6 +4,7 @@
 #include "sbc/material_point.h"
 
 #include "aggregate.h"
+#include "base/words.h"
 #include "sbc/controller.h"
 #include "sbc/driver.h"
 #include "sbc/embedded/engine.h"
@@ -63,16 +64,40 @@ void sbc_point_free(sbc_point *p)
     free(p);
 }
 
-/* the words a point takes: a BC of (D), (P), (T) and its keywords; the path
-   (F, increments, stress, file) is the point's */
+/* 3D mixed words without F: the same words with the identity as F after
+   `mixed`, since the face keywords (xlo ... zhi) are 3D only after a 3D F
+   (docs/servo_bc.md, "Mixed"); NULL for any other words or out of memory */
+static char *mixed_words_3d(const char *words)
+{
+    char *copy = malloc(strlen(words) + 1), *w[256], *out = NULL;
+    int n, k, has_F = 0;
+    if (!copy)
+        return NULL;
+    strcpy(copy, words);
+    n = sbc_split_words(copy, w, 256);
+    for (k = 0; k < n && k < 256; ++k)
+        has_F |= strcmp(w[k], "F") == 0;
+    if (n >= 1 && strcmp(w[0], "mixed") == 0 && !has_F && (out = malloc(strlen(words) + 32)))
+        sprintf(out, "mixed F 1 0 0 0 1 0 0 0 1 %s", strstr(words, "mixed") + 5);
+    free(copy);
+    return out;
+}
+
+/* the words a point takes: a BC of (D), (P), (T) or mixed and its keywords;
+   the path (F, increments, stress, file) is the point's */
 static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error *err)
 {
+    char *words3 = NULL;
     double I[9];
     int k;
+    sbc_status st;
     if (d->dim != 2 && d->dim != 3)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: dimension %d (expected 2 or 3)", d->dim);
-    if (sbc_settings_parse_words(s, d->words, err) != SBC_OK ||
-        sbc_settings_check_dimension(s, d->dim, err) != SBC_OK)
+    if (d->dim == 3 && d->words)
+        words3 = mixed_words_3d(d->words);
+    st = sbc_settings_parse_words(s, words3 ? words3 : d->words, err);
+    free(words3);
+    if (st != SBC_OK || sbc_settings_check_dimension(s, d->dim, err) != SBC_OK)
         return err->status;
     sbc_tensor_identity(d->dim, I);
     for (k = 0; k < 9; ++k)
@@ -85,9 +110,10 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
     if (d->bonds && s->update == SBC_UPDATE_NEWTON)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': update newton linearizes eq. 6 alone, not "
                         "the cohesive bonds (expected update fixed or secant)", d->words);
-    if (s->bc == SBC_BC_MIXED || s->nstress > 0 || s->increments != 1 || s->file[0] || s->tangent)
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': mixed, stress, increments, file and tangent "
-                        "are the path's, which the FE code gives and asks for; expected D, P or T and their keywords", d->words);
+    if (s->nstress > 0 || s->increments != 1 || s->file[0] || s->tangent)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': stress, increments, file and tangent "
+                        "are the path's, which the FE code gives and asks for; expected D, P, T or mixed (its faces "
+                        "D or P: a T component needs a stress) and their keywords", d->words);
     if (s->rotation_zero)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': 'rotation zero' is not linearized by the "
                         "point's affine and condensed tangents (they take the paper's (T) with free rotations)",

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sbc/controller.h"
 #include "sbc/tensor.h"
 
 sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], double C[81], sbc_error *err)
@@ -59,18 +60,26 @@ sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, const double *x0, dou
 {
     int *ij = NULL, ignored;
     double *fs = NULL;
+    unsigned char *mode = NULL;
     sbc_network net;
     sbc_status st;
     if (!mechanisms)
         mechanisms = &ignored;
     memset(C, 0, sizeof(double) * 81);
     *mechanisms = 0;
+    if (a->settings->bc == SBC_BC_MIXED) { /* each frame particle's D and P components */
+        if (!(mode = malloc(3 * (size_t)a->frame->n)))
+            return sbc_fail(err, SBC_ERR_NOMEM, "condensed tangent: out of memory");
+        sbc_mixed_modes(a->frame, a->settings, mode);
+    }
     if ((st = sbc_aggregate_network(a, &net, &ij, &fs, err)) == SBC_OK) {
         net.x0 = net.dim == 2 ? x0 : NULL;
+        net.mode = mode;
         st = sbc_condensed_tangent(&net, a->frame, a->settings->bc, C, mechanisms, err);
     }
     free(ij);
     free(fs);
+    free(mode);
     return st;
 }
 

@@ -296,8 +296,10 @@ static sbc_status aim_check(const sbc_controller *c, const double F[9], double G
     const int dim = c->frame->dim;
     int i, j;
     memset(G, 0, sizeof(double) * 9);
-    if (c->s.bc == SBC_BC_MIXED)
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc mixed: a material point takes (D), (P) or (T) in this version");
+    for (i = 0; c->s.bc == SBC_BC_MIXED && i < 3 * c->frame->n; ++i)
+        if (i % 3 < dim && c->mode[i] == SBC_MODE_T)
+            return sbc_fail(err, SBC_ERR_INPUT, "servo_bc mixed: frame particle %d has a T component; a new F is "
+                            "aimed at with D and P components only (the whole of F given)", i / 3);
     for (i = 0; i < dim; ++i)
         for (j = 0; j < dim; ++j)
             G[SBC_IJ(i, j)] = F[SBC_IJ(i, j)];

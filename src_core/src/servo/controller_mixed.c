@@ -177,7 +177,8 @@ void sbc_ctl_mixed_stress_targets(sbc_controller *c)
     }
 }
 
-/* Modes of each frame position from the face modes of the settings: a
+/* Modes of each frame position from the face modes of the settings
+ * (sbc_mixed_modes, controller.h): a
  * particle on several faces takes those of its face normal to the last axis
  * (the support's and the top's: the horizontal edges in 2D, zlo and zhi in
  * 3D), then the middle, then the first. Where that face is periodic the
@@ -186,9 +187,8 @@ void sbc_ctl_mixed_stress_targets(sbc_controller *c)
  * (P) do (eq. 17). The top corners of the layer stay T in y: made D (Sect.
  * 5.1's "followed by the four corner nodes"), their reactions put 8 % into
  * eq. 23's P22 on 120 discs (docs/servo_bc.md, "Mixed"). */
-void sbc_ctl_assign_modes(sbc_controller *c)
+void sbc_mixed_modes(const sbc_frame *f, const sbc_settings *s, unsigned char *mode)
 {
-    const sbc_frame *f = c->frame;
     const int dim = f->dim;
     int q, k, a;
     for (q = 0; q < f->n; ++q) {
@@ -200,14 +200,16 @@ void sbc_ctl_assign_modes(sbc_controller *c)
         for (g = 0; g < 2 * dim; ++g)
             if (faces >> g & 1) {
                 ++nfaces;
-                all_p &= c->s.face_mode[g][0] == SBC_MODE_P;
+                all_p &= s->face_mode[g][0] == SBC_MODE_P;
             }
         for (k = 0; k < dim; ++k) {
-            unsigned char m = c->s.face_mode[face][k];
-            c->mode[3 * q + k] = m == SBC_MODE_P && (nfaces == dim || !all_p) ? SBC_MODE_D : m;
+            unsigned char m = s->face_mode[face][k];
+            mode[3 * q + k] = m == SBC_MODE_P && (nfaces == dim || !all_p) ? SBC_MODE_D : m;
         }
     }
 }
+
+void sbc_ctl_assign_modes(sbc_controller *c) { sbc_mixed_modes(c->frame, &c->s, c->mode); }
 
 /* Mixed: how far (in radii) the frame's D components and pair offsets may
  * lag behind the measured rows of F (eq. 45) at a converged increment: the
