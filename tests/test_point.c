@@ -13,7 +13,7 @@
  * - the same closed forms under the mixed layer with its top D D (the
  *   sides P, every component of F given);
  * - words that give the path (F, increments, stress, so a mixed T
- *   component) and `rotation zero` are refused by name;
+ *   component) are refused by name;
  * - the same on a prestressed frictionless 4^3 sphere lattice (3D): P11 =
  *   -N^2 kn (2R - d a) / ((N - 1)^2 d^2), C1111 = N^2 kn / ((N - 1)^2 d),
  *   C_ijij = P_jj / F_jj (i != j), the rest 0: affine to 1e-8, perturbation
@@ -250,8 +250,8 @@ static void condensed_consistent(void)
     }
 }
 
-/* the frictional 5 x 5 lattice at diag(0.999, 0.998), where nothing slides: (D), (P), (T), and the
-   mixed layer with its top D D (the sides P) */
+/* the frictional 5 x 5 lattice at diag(0.999, 0.998), where nothing slides: (D), (P), (T) with free and
+   with held frame rotations, and the mixed layer with its top D D (the sides P) */
 static void condensed_frictional(void)
 {
     double F[9];
@@ -259,6 +259,7 @@ static void condensed_frictional(void)
     condensed_against_perturbation(lattice("D accuracy tight"), F, 1e-5, 1, 1e-3, "frictional lattice");
     condensed_against_perturbation(lattice("P accuracy tight"), F, 1e-5, 1, 1e-3, "frictional lattice");
     condensed_against_perturbation(lattice("T accuracy tight"), F, 1e-5, 1, 1e-3, "frictional lattice");
+    condensed_against_perturbation(lattice("T accuracy tight rotation zero"), F, 1e-5, 1, 1e-3, "frictional lattice");
     condensed_against_perturbation(lattice("mixed top D D accuracy tight"), F, 1e-5, 1, 1e-3, "frictional lattice");
 }
 
@@ -313,7 +314,6 @@ static void refusals(void)
                {"P increments 3", "stress, increments, file and tangent are the path's"},
                {"mixed stress P22 -1 1", "the path's"},
                {"mixed", "no 'stress P22 VALUE N' prescribes its traction"}, /* the default top D T */
-               {"T rotation zero", "'rotation zero' is not linearized"},
                {"D tangent condensed C.csv", "file and tangent are the path's"},
                {"Q", "Q"}};
     sbc_point_def d = lattice("D");

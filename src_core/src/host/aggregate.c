@@ -122,6 +122,7 @@ sbc_status sbc_aggregate_network(const sbc_aggregate *a, sbc_network *net, int *
     net->j = *ij + npair;
     net->fs = *fs;
     net->law = a->law;
+    net->frame_rotation_zero = a->settings->bc == SBC_BC_T && a->settings->rotation_zero;
     return SBC_OK;
 }
 

@@ -282,8 +282,8 @@ static int number_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc
     int p, c, q, m, members[8], count = 0, kl;
     for (p = 0; p < net->n; ++p)
         if (frame_of[p] < 0 || bc == SBC_BC_T)
-            for (c = 0; c < nd; ++c)
-                unk[nd * p + c] = count++;
+            for (c = 0; c < nd; ++c) /* (T) with `rotation zero`: the frame's rotations prescribed, at 0 */
+                unk[nd * p + c] = frame_of[p] >= 0 && c >= dim && net->frame_rotation_zero ? -1 : count++;
     for (q = 0; q < f->n && bc != SBC_BC_T; ++q) {
         const int p0 = f->particle[q];
         const int periodic = bc == SBC_BC_P || (bc == SBC_BC_MIXED && net->mode[3 * q] == SBC_MODE_P);

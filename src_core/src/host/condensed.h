@@ -24,6 +24,7 @@ typedef struct sbc_network {
     int dense;          /* 1: solved densely even where the core has a sparse solver (tests compare the two) */
     const unsigned char *mode; /* mixed: the frame particles' component modes [3Q] (sbc_mixed_modes), D or P
                                   (T is not linearized here); NULL otherwise */
+    int frame_rotation_zero;   /* (T) with `rotation zero`: the frame's rotations held at zero */
 } sbc_network;
 
 /* C_ijkl = dP_ij / dF_kl (C[9 (3i + j) + 3k + l]) of the aggregate at

@@ -114,10 +114,6 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': stress, increments, file and tangent "
                         "are the path's, which the FE code gives and asks for; expected D, P, T or mixed (its faces "
                         "D or P: a T component needs a stress) and their keywords", d->words);
-    if (s->rotation_zero)
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': 'rotation zero' is not linearized by the "
-                        "point's affine and condensed tangents (they take the paper's (T) with free rotations)",
-                        d->words);
     return SBC_OK;
 }
 

@@ -343,9 +343,6 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             if (rule && rule->id == SBC_UPDATE_NEWTON && s->bc == SBC_BC_MIXED) {
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'update': newton takes (P) and (T); mixed conditions "
                               "take fixed or secant");
-            } else if (rule && rule->id == SBC_UPDATE_NEWTON && s->rotation_zero) {
-                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'update': newton linearizes the paper's (T) with free "
-                              "rotations; with 'rotation zero' take fixed or secant");
             } else if (rule) {
                 s->update = rule->id;
             } else if (w) {
@@ -367,12 +364,6 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             else if (w && s->bc != SBC_BC_T)
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'rotation': applies to T (D holds the frame's rotations "
                               "at zero, P shares them between images, mixed frames keep the paper's free rotation)");
-            else if (w && strcmp(w, "zero") == 0 && s->update == SBC_UPDATE_NEWTON)
-                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'rotation': zero is not linearized by 'update newton' "
-                              "(take fixed or secant)");
-            else if (w && strcmp(w, "zero") == 0 && s->tangent != SBC_TANGENT_NONE)
-                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'rotation': zero is not linearized by 'tangent' (the "
-                              "tangents take the paper's (T) with free rotations)");
             else if (w)
                 s->rotation_zero = strcmp(w, "zero") == 0;
         } else if (strcmp(key, "remap") == 0) {
@@ -397,9 +388,6 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             if (w && t > SBC_TANGENT_PERTURBATION)
                 st = sbc_fail(err, SBC_ERR_INPUT,
                               "keyword 'tangent': kind '%s' is not valid (expected affine, condensed or perturbation)", w);
-            else if (w && s->rotation_zero)
-                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'tangent': the tangents take the paper's (T) with free "
-                              "rotations, not 'rotation zero'");
             else if (w) {
                 s->tangent = (sbc_tangent)t;
                 st = read_name(&c, "path", s->tangent_file);
