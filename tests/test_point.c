@@ -10,6 +10,7 @@
  * - (P) gives the same P (the lattice is its own periodic image);
  * - integrate, revert, integrate: the same P bit for bit; the committed state
  *   saved as doubles and loaded into a new point continues bit for bit;
+ * - `seal yes` in a point: the seal chain's P22 = -120 N/m (-100 without);
  * - the same closed forms under the mixed layer with its top D D (the
  *   sides P, every component of F given);
  * - words that give the path (F, increments, stress, so a mixed T
@@ -261,6 +262,52 @@ static void condensed_frictional(void)
     condensed_against_perturbation(lattice("T accuracy tight"), F, 1e-5, 1, 1e-3, "frictional lattice");
     condensed_against_perturbation(lattice("T accuracy tight rotation zero"), F, 1e-5, 1, 1e-3, "frictional lattice");
     condensed_against_perturbation(lattice("mixed top D D accuracy tight"), F, 1e-5, 1, 1e-3, "frictional lattice");
+}
+
+/* `seal yes` in a point: the chain of tests/test_seal.c (a 5 x 5 lattice, spacing 2 mm, radius 1 mm, its
+   bottom middle frame disc missing, the middle column a chain standing on the seal's wall) under (D) at
+   F = diag(1, 0.99): P22 = -(4 x 0.2 + 0.16) N / 8 mm = -120 N/m with the seal, -100 N/m without, where the
+   chain falls into the gap. Before 0.3.0's fix the point ignored the keyword (-100 N/m both ways). */
+static void seal_in_point(void)
+{
+    static const double chain_y[4] = {0.52e-3, 2.52e-3, 4.52e-3, 6.27e-3};
+    double x[2 * 28], r[28], F[9], P[9], ratio;
+    sbc_point_def d = lattice("D accuracy tight seal yes");
+    sbc_error err;
+    int i, j, n = 0, sealed;
+    for (j = 0; j < 5; ++j)
+        for (i = 0; i < 5; ++i)
+            if (i != 2 || j == 4) {
+                x[2 * n] = 2e-3 * i;
+                x[2 * n + 1] = 2e-3 * j;
+                r[n++] = 1e-3;
+            }
+    for (j = 0; j < 4; ++j) {
+        x[2 * n] = 4e-3;
+        x[2 * n + 1] = chain_y[j];
+        r[n++] = j < 3 ? 1e-3 : 0.75e-3;
+    }
+    d.n = n;
+    d.x = x;
+    d.r = r;
+    d.law.ks = 2e3;
+    d.law.mu = 0.4;
+    d.dt = 1e-5;
+    diag(1.0, 0.99, F);
+    for (sealed = 0; sealed < 2; ++sealed) {
+        sbc_point *p;
+        d.words = sealed ? "D accuracy tight seal yes" : "D accuracy tight seal no";
+        p = sbc_point_create(&d, &err);
+        CHECK(p != NULL);
+        if (!p) {
+            printf("  point: %s\n", err.message);
+            continue;
+        }
+        CHECK(sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED);
+        CHECK_REL(P[4], sealed ? -(4 * 0.2 + 0.16) / 8e-3 : -0.8 / 8e-3, 1e-7);
+        printf("  point: the seal chain, %s: P22 %.9g N/m\n", d.words, P[4]);
+        sbc_point_free(p);
+    }
 }
 
 /* integrate, revert, integrate: the same bits; the state into a new point */
@@ -602,6 +649,7 @@ void test_point(void)
     tangent_at_current();
     condensed_frictional();
     condensed_consistent();
+    seal_in_point();
     commit_revert_restore("P accuracy balanced");
     commit_revert_restore("mixed top D D accuracy balanced");
 }

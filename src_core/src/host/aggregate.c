@@ -28,6 +28,7 @@ static void *discs_create(const sbc_point_def *d, const sbc_settings *s, sbc_err
 }
 static void discs_free(void *e) { sbc_engine_free(e); }
 static void discs_set_frame(void *e, const sbc_frame *f) { sbc_engine_set_frame(e, f); }
+static sbc_status discs_seal(void *e, sbc_error *err) { return sbc_engine_seal(e, err); }
 static sbc_driver_callbacks discs_callbacks(void *e) { return sbc_engine_callbacks(e); }
 static sbc_status discs_forces(void *e, sbc_error *err) { return sbc_engine_forces(e, err); }
 static void discs_move(void *e, const sbc_commands *cmd) { sbc_engine_move_frame(e, cmd); }
@@ -52,7 +53,8 @@ static void discs_pair(const void *e, int k, int ij[2], double fs[3])
 static const double *discs_centres(const void *e) { return sbc_engine_get_view(e).x; }
 static const double *discs_radii(const void *e) { return sbc_engine_get_view(e).r; }
 
-const sbc_engine_ops sbc_engine_ops_discs = {2, discs_create, discs_free, discs_set_frame, discs_callbacks, discs_forces,
+const sbc_engine_ops sbc_engine_ops_discs = {2, discs_create, discs_free, discs_set_frame, discs_seal, discs_callbacks,
+                                   discs_forces,
                                    discs_move, discs_masses, discs_dt, discs_size, discs_save, discs_load,
                                    discs_pairs, discs_pair, discs_centres, discs_radii};
 
@@ -72,6 +74,7 @@ static void *spheres_create(const sbc_point_def *d, const sbc_settings *s, sbc_e
 }
 static void spheres_free(void *e) { sbc_spheres_free(e); }
 static void spheres_set_frame(void *e, const sbc_frame *f) { sbc_spheres_set_frame(e, f); }
+static sbc_status spheres_seal(void *e, sbc_error *err) { return sbc_spheres_seal(e, err); }
 static sbc_driver_callbacks spheres_callbacks(void *e) { return sbc_spheres_callbacks(e); }
 static sbc_status spheres_forces(void *e, sbc_error *err) { return sbc_spheres_forces(e, err); }
 static void spheres_move(void *e, const sbc_commands *cmd) { sbc_spheres_move_frame(e, cmd); }
@@ -88,7 +91,8 @@ static void spheres_pair(const void *e, int k, int ij[2], double fs[3]) { sbc_sp
 static const double *spheres_centres(const void *e) { return sbc_spheres_get_view(e).x; }
 static const double *spheres_radii(const void *e) { return sbc_spheres_get_view(e).r; }
 
-const sbc_engine_ops sbc_engine_ops_spheres = {3, spheres_create, spheres_free, spheres_set_frame, spheres_callbacks,
+const sbc_engine_ops sbc_engine_ops_spheres = {3, spheres_create, spheres_free, spheres_set_frame, spheres_seal,
+                                     spheres_callbacks,
                                      spheres_forces, spheres_move, spheres_masses, spheres_dt, spheres_size,
                                      spheres_save, spheres_load, spheres_pairs, spheres_pair, spheres_centres,
                                      spheres_radii};

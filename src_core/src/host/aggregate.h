@@ -22,6 +22,8 @@ typedef struct sbc_engine_ops {
     void *(*create)(const sbc_point_def *d, const sbc_settings *s, sbc_error *err);
     void (*free)(void *e);
     void (*set_frame)(void *e, const sbc_frame *f);
+    sbc_status (*seal)(void *e, sbc_error *err); /* keyword seal yes: walls on the frame's surface (seal.h),
+                                                    after set_frame */
     sbc_driver_callbacks (*callbacks)(void *e);
     sbc_status (*forces)(void *e, sbc_error *err);
     void (*move_frame)(void *e, const sbc_commands *cmd);

@@ -308,6 +308,10 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
         return NULL;
     }
     p->a.ops->set_frame(p->a.engine, &p->frame);
+    if (p->settings.seal && p->a.ops->seal(p->a.engine, err) != SBC_OK) {
+        sbc_point_free(p);
+        return NULL;
+    }
     if (!(p->mass = malloc(sizeof(double) * (size_t)p->frame.n)) ||
         !(p->x_committed = malloc(sizeof(double) * (size_t)(p->frame.dim * d->n)))) {
         sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
