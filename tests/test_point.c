@@ -361,6 +361,7 @@ static void refusals(void)
                {"P increments 3", "stress, increments, file and tangent are the path's"},
                {"mixed stress P22 -1 1", "the path's"},
                {"mixed", "no 'stress P22 VALUE N' prescribes its traction"}, /* the default top D T */
+               {"D frame g1", "keyword 'frame' names a host's group"},
                {"D tangent condensed C.csv", "file and tangent are the path's"},
                {"Q", "Q"}};
     sbc_point_def d = lattice("D");

@@ -110,6 +110,9 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
     if (d->bonds && s->update == SBC_UPDATE_NEWTON)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': update newton linearizes eq. 6 alone, not "
                         "the cohesive bonds (expected update fixed or secant)", d->words);
+    if (s->frame_group[0])
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': keyword 'frame' names a host's group; a "
+                        "point finds its frame from the packing", d->words);
     if (s->nstress > 0 || s->increments != 1 || s->file[0] || s->tangent)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': stress, increments, file and tangent "
                         "are the path's, which the FE code gives and asks for; expected D, P, T or mixed (its faces "
