@@ -215,7 +215,7 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
     memcpy(c->x_cmd, c->frame->X, sizeof(double) * 3 * q); /* where the frame stands before increment 0 */
     set_floors(c);
     if (c->s.bc == SBC_BC_MIXED)
-        sbc_ctl_assign_modes(c);
+        sbc_mixed_modes(frame, &c->s, c->mode);
     if (c->s.bc == SBC_BC_P || c->s.bc == SBC_BC_MIXED) {
         int k, member[8];
         for (k = 0; k < frame->n; ++k) {

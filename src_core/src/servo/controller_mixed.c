@@ -178,8 +178,7 @@ void sbc_ctl_mixed_stress_targets(sbc_controller *c)
 }
 
 /* Modes of each frame position from the face modes of the settings
- * (sbc_mixed_modes, controller.h): a
- * particle on several faces takes those of its face normal to the last axis
+ * (controller.h): a particle on several faces takes those of its face normal to the last axis
  * (the support's and the top's: the horizontal edges in 2D, zlo and zhi in
  * 3D), then the middle, then the first. Where that face is periodic the
  * particle is P with its family of images, unless it is a corner or one of
@@ -208,8 +207,6 @@ void sbc_mixed_modes(const sbc_frame *f, const sbc_settings *s, unsigned char *m
         }
     }
 }
-
-void sbc_ctl_assign_modes(sbc_controller *c) { sbc_mixed_modes(c->frame, &c->s, c->mode); }
 
 /* Mixed: how far (in radii) the frame's D components and pair offsets may
  * lag behind the measured rows of F (eq. 45) at a converged increment: the

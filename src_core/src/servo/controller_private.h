@@ -76,7 +76,6 @@ int sbc_ctl_row_measured(const sbc_controller *c, int i);
 void sbc_ctl_mixed_follow_F(sbc_controller *c);
 void sbc_ctl_start_mixed(sbc_controller *c);
 void sbc_ctl_mixed_stress_targets(sbc_controller *c);
-void sbc_ctl_assign_modes(sbc_controller *c);
 double sbc_ctl_mixed_lag_tol(const sbc_controller *c);
 double sbc_ctl_mixed_lag(const sbc_controller *c, const double *x, double Fm[9]);
 double sbc_ctl_mixed_stress_miss(sbc_controller *c, double P[9], double P_hat[9]);
