@@ -46,3 +46,22 @@ void test_square_lattice(int N, double d, double R, double *xy, double *r)
             r[N * j + i] = R;
         }
 }
+
+int test_seal_chain(double *xy, double *r)
+{
+    static const double chain_y[4] = {0.52e-3, 2.52e-3, 4.52e-3, 6.27e-3};
+    int i, j, n = 0;
+    for (j = 0; j < 5; ++j)
+        for (i = 0; i < 5; ++i)
+            if (i != 2 || j == 4) {
+                xy[2 * n] = 2e-3 * i;
+                xy[2 * n + 1] = 2e-3 * j;
+                r[n++] = 1e-3;
+            }
+    for (j = 0; j < 4; ++j) {
+        xy[2 * n] = 4e-3;
+        xy[2 * n + 1] = chain_y[j];
+        r[n++] = j < 3 ? 1e-3 : 0.75e-3;
+    }
+    return n;
+}

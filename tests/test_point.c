@@ -270,24 +270,11 @@ static void condensed_frictional(void)
    chain falls into the gap. Before 0.3.0's fix the point ignored the keyword (-100 N/m both ways). */
 static void seal_in_point(void)
 {
-    static const double chain_y[4] = {0.52e-3, 2.52e-3, 4.52e-3, 6.27e-3};
     double x[2 * 28], r[28], F[9], P[9], ratio;
     sbc_point_def d = lattice("D accuracy tight seal yes");
     sbc_error err;
-    int i, j, n = 0, sealed;
-    for (j = 0; j < 5; ++j)
-        for (i = 0; i < 5; ++i)
-            if (i != 2 || j == 4) {
-                x[2 * n] = 2e-3 * i;
-                x[2 * n + 1] = 2e-3 * j;
-                r[n++] = 1e-3;
-            }
-    for (j = 0; j < 4; ++j) {
-        x[2 * n] = 4e-3;
-        x[2 * n + 1] = chain_y[j];
-        r[n++] = j < 3 ? 1e-3 : 0.75e-3;
-    }
-    d.n = n;
+    int sealed;
+    d.n = test_seal_chain(x, r);
     d.x = x;
     d.r = r;
     d.law.ks = 2e3;

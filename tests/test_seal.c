@@ -3,6 +3,7 @@
  * disc that bounces off a wall in the engine without losing energy. */
 #include "check.h"
 #include "csv_read.h"
+#include "layer.h"
 #include "tests.h"
 
 #include "sbc/embedded/engine.h"
@@ -263,17 +264,11 @@ static void chain(void)
 {
     static double rows[4][CSV_COLS];
     char csv[512], packing[512], script[2048], line[128], text[4096] = "";
+    double xy[2 * 28], r[28];
     sbc_error err;
-    int i, j, sealed;
-    static const double chain_y[4] = {0.52e-3, 2.52e-3, 4.52e-3, 6.27e-3};
-    for (j = 0; j < 5; ++j)
-        for (i = 0; i < 5; ++i)
-            if (i != 2 || j == 4) {
-                snprintf(line, sizeof line, "%.17g %.17g 1e-3\n", 2e-3 * i, 2e-3 * j);
-                strcat(text, line);
-            }
-    for (j = 0; j < 4; ++j) {
-        snprintf(line, sizeof line, "4e-3 %.17g %s\n", chain_y[j], j < 3 ? "1e-3" : "0.75e-3");
+    int k, n = test_seal_chain(xy, r), sealed;
+    for (k = 0; k < n; ++k) {
+        snprintf(line, sizeof line, "%.17g %.17g %.17g\n", xy[2 * k], xy[2 * k + 1], r[k]);
         strcat(text, line);
     }
     snprintf(packing, sizeof packing, "%s/seal_chain.txt", test_tmpdir);
