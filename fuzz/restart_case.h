@@ -1,5 +1,7 @@
 /* The (P) case behind the restart harness and its seed (restart_seed.c): a
- * 5x5 lattice of the embedded engine, loaded as the words say. */
+ * 5x5 lattice of the embedded engine, loaded as the words say (remap none:
+ * the harness moves the frame alone, and the seed's state stays that of
+ * tests/reference/restart/seed_P.bin). */
 #ifndef SBC_FUZZ_RESTART_CASE_H
 #define SBC_FUZZ_RESTART_CASE_H
 
@@ -14,7 +16,7 @@
 
 #define RESTART_CASE_WORDS                                                                                            \
     "P F 0.99 -0.02 -0.02 0.99 increments 3 relax 1e-6 20 tol_force 1e-12 tol_moment 1e-12 gain_force 1e3 "        \
-    "gain_moment 1e3"
+    "gain_moment 1e3 remap none"
 #define RESTART_CASE_DT 1e-5
 
 static inline sbc_settings restart_case_settings(void)

@@ -152,8 +152,9 @@ done
   echo
   echo "Case \`$case_file\`, $particles particles; decks written by \`servo-bc --decks\` into this folder."
   echo "Stress differences are against the embedded engine, in % of the stress scale (max |σ̄| of the"
-  echo "embedded run over the path); *before the peak* = up to the first peak of |σ̄12| of the"
-  echo "embedded run, a maximum that the next 10 increments stay below (the whole path when there is none)."
+  echo "embedded run over the path); *before the peak* = up to the first peak of |σ̄ij| of the"
+  echo "embedded run for the F̄ij the path moves farthest from I (σ̄12, in 3D σ̄13, unless another: σ̄33 on a"
+  echo "triaxial path), a maximum that the next 10 increments stay below (the whole path when there is none)."
   echo
   echo "| engine | increments | wall time (s) | DEM steps | ns per particle-step | servo iterations | max Δσ̄ before the peak | max Δσ̄, whole path |"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- |"

@@ -428,7 +428,8 @@ static int run_cubic(const char *bc, int N, double R, double kt, const double F[
     return run_words(text, N, R, kt, none, split, rows, steps);
 }
 
-/* run_cubic with the words of text, the lattice translated by shift (m) */
+/* run_cubic with the words of text, the lattice translated by shift (m);
+ * the springs host has no remap callback, so its words end in remap none */
 static int run_words(const char *text, int N, double R, double kt, const double shift[3], long split,
                      sbc_result rows[8], long *steps)
 {
@@ -446,7 +447,7 @@ static int run_words(const char *text, int N, double R, double kt, const double 
     double *r = malloc(sizeof(double) * (size_t)n), *mass;
     sbc_event ev = SBC_EVENT_RELAXING;
     int i, j, q, nrows = 0;
-    snprintf(line, sizeof line, "%s", text);
+    snprintf(line, sizeof line, "%s remap none", text);
     nwords = sbc_split_words(line, words, 40);
     memset(&h, 0, sizeof h);
     h.n = n, h.R = R, h.kn = kn, h.kt = kt, h.m = 1e-3, h.dt = 1e-5, h.alpha = 0.7;

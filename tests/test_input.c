@@ -81,7 +81,7 @@ static const bad_case cases[] = {
     {"dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.02e-3\ncontact frictional kn 1e4 ks 2e3 mu 0.4\n"
      "density 2e3\ntimestep 1e-2\nservo_bc D\nrun\n",
      {"bad:7:", "time step 0.01 s", "exceeds the critical step"}},
-    {HEAD "servo_bc D F 0.99 0 0 0.99 damping none max_relax_steps 500\nrun\n",
+    {HEAD "servo_bc D F 0.99 0 0 0.99 damping none remap none max_relax_steps 500\nrun\n",
      {"bad:7:", "increment 1", "did not reach force balance 1e-05"}},
     {"read_packing /nonexistent/packing.txt\n", {"bad:1:", "read_packing", "cannot open"}},
     /* scripts that would compute nothing, or silently use one of two servo_bc lines */
@@ -233,7 +233,7 @@ static void runner_exit(void)
     {
         char text[1024];
         snprintf(text, sizeof text,
-                 HEAD "servo_bc D F 0.99 0 0 0.99 increments 3 damping none max_relax_steps 3000 file %s\nrun\n", csv);
+                 HEAD "servo_bc D F 0.99 0 0 0.99 increments 3 damping none remap none max_relax_steps 3000 file %s\nrun\n", csv);
         write_text(script, text);
     }
     snprintf(cmd, sizeof cmd, "%s %s 2>&1 >/dev/null", test_runner, script);

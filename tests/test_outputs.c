@@ -42,17 +42,26 @@ static void thermo_vector(void)
     CHECK(sbc_thermo_value(NULL, &r, 0, 18) == 1e-5 && sbc_thermo_value(NULL, &r, 0, 19) == 2e-5 &&
           sbc_thermo_value(NULL, &r, 0, 20) == -3e-9);
     CHECK(sbc_thermo_value(NULL, &r, 0, SBC_THERMO_COUNT) == 0.0 && sbc_thermo_value(NULL, &r, 0, -1) == 0.0);
-    /* the one log line of every host (results.h) */
+    /* the one log line of every host (results.h): the component of F farthest from I */
     {
+        static const double shear[9] = {0.999, 0.02, 0.03, -0.01, 0.999, 0, 0, 0, 1};
+        static const double triaxial[9] = {1.001, 0, 0, 0, 1.001, 0, 0, 0, 0.99};
         char line[320];
+        memcpy(r.F, shear, sizeof shear);
         r.relax_steps = 1234, r.iterations = 5;
         sbc_result_line(&r, SBC_BC_P, 10, line, sizeof line);
-        CHECK(strcmp(line, "servo_bc P: increment 7/10 F12 +2.00000 sigma11 +2.000000e+01 sigma12 +2.100000e+01 N/m "
+        CHECK(strcmp(line, "servo_bc P: increment 7/10 F12 +0.02000 sigma11 +2.000000e+01 sigma12 +2.100000e+01 N/m "
                            "steps 1234 iterations 5 unbalanced 1e-05 HM -3.0e-09") == 0);
         r.dim = 3; /* stresses per area in 3D; the layer's F13, sigma33, sigma13 */
         sbc_result_line(&r, SBC_BC_D, 10, line, sizeof line);
-        CHECK(strstr(line, "increment 7/10 F13 +3.00000 sigma33 +2.800000e+01 sigma13 +2.200000e+01 N/m^2 steps 1234") !=
+        CHECK(strstr(line, "increment 7/10 F13 +0.03000 sigma33 +2.800000e+01 sigma13 +2.200000e+01 N/m^2 steps 1234") !=
               NULL);
+        memcpy(r.F, triaxial, sizeof triaxial); /* a triaxial path: F33, the lateral sigma11, sigma33 */
+        sbc_result_line(&r, SBC_BC_D, 10, line, sizeof line);
+        CHECK(strstr(line, "increment 7/10 F33 +0.99000 sigma11 +2.000000e+01 sigma33 +2.800000e+01 N/m^2") != NULL);
+        r.dim = 2, r.F[8] = 1.0; /* 2D, F11 = F22: the first, F11, with sigma22 */
+        sbc_result_line(&r, SBC_BC_D, 10, line, sizeof line);
+        CHECK(strstr(line, "increment 7/10 F11 +1.00100 sigma22 +2.400000e+01 sigma11 +2.000000e+01 N/m ") != NULL);
     }
 }
 

@@ -111,7 +111,12 @@ static void refusals(void)
     CHECK(sbc_settings_parse_words(&s, "P remap y", &err) == SBC_ERR_INPUT);
     CHECK(strstr(err.message, "keyword 'remap': value 'y' is not valid (expected x or none)") != NULL);
     CHECK(sbc_settings_parse_words(&s, "P remap x", &err) == SBC_OK && s.remap == 1);
-    CHECK(sbc_settings_parse_words(&s, "P", &err) == SBC_OK && s.remap == 0);
+    /* the presets' own: x under fast, balanced and tight, none under paper */
+    CHECK(sbc_settings_parse_words(&s, "P", &err) == SBC_OK && s.remap == 1);
+    CHECK(sbc_settings_parse_words(&s, "P accuracy fast", &err) == SBC_OK && s.remap == 1);
+    CHECK(sbc_settings_parse_words(&s, "P accuracy tight", &err) == SBC_OK && s.remap == 1);
+    CHECK(sbc_settings_parse_words(&s, "P accuracy paper", &err) == SBC_OK && s.remap == 0);
+    CHECK(sbc_settings_parse_words(&s, "P remap none", &err) == SBC_OK && s.remap == 0);
 }
 
 /* the material point aims its controller itself (sbc_driver_remap after sbc_controller_aim) */

@@ -41,8 +41,10 @@ sbc_status sbc_csv_write(sbc_csv *csv, const sbc_result *r, sbc_error *err);
  * newline), into out [cap]:
  *   servo_bc P: increment 3/10 F12 +0.00300 sigma11 -2.396300e+02 sigma12 +1.234500e+01 N/m
  *   steps 1234 iterations 5 unbalanced 3.2e-06 HM 1.1e-12
- * (N/m^2 in 3D). total: the path's increments (sbc_settings_total_increments). Returns its
- * length (as snprintf). */
+ * (N/m^2 in 3D). The F shown is the component farthest from the identity (the layer's
+ * shear, F12 or F13, unless another is strictly farther), the stresses a companion normal
+ * stress and the same component: a triaxial path shows F33, sigma11, sigma33. total: the
+ * path's increments (sbc_settings_total_increments). Returns its length (as snprintf). */
 int sbc_result_line(const sbc_result *r, sbc_bc bc, int total, char *out, size_t cap);
 
 /* Closes the file (nothing when none is open). */

@@ -96,7 +96,8 @@ typedef struct sbc_settings {
                                 frame's rotations") */
     int remap;               /* 1 (remap x): while the frame travels to an increment's first commands, the
                                 interior follows the affine part of the change of F (controller.h,
-                                sbc_controller_remap); 0 (remap none) */
+                                sbc_controller_remap), the default of the presets fast, balanced
+                                and tight; 0 (remap none), accuracy paper's */
     sbc_update update;       /* fixed (the paper's) or secant; fixed */
     char accuracy[16];       /* preset in force (keyword accuracy; balanced by default) */
     /* mixed only: face_mode[face][component] (faces as above, components 0 = x,

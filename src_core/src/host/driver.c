@@ -32,8 +32,8 @@ sbc_driver *sbc_driver_create(sbc_controller *c, const sbc_settings *s, const sb
     }
     if (s->remap && !cb->remap) {
         sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: keyword 'remap': x needs a host that moves its interior "
-                 "particles (the driver's remap callback); this one does not (expected remap none)",
-                 sbc_bc_name(s->bc));
+                 "particles (the driver's remap callback); this one does not, and x is the default under "
+                 "accuracy fast, balanced and tight (expected remap none)", sbc_bc_name(s->bc));
         return NULL;
     }
     if (s->update == SBC_UPDATE_NEWTON && s->bc != SBC_BC_D && !cb->newton) {

@@ -83,8 +83,25 @@ static char *mixed_words_3d(const char *words)
     return out;
 }
 
+/* 1 when the words name the keyword key */
+static int words_name(const char *words, const char *key)
+{
+    char *copy = malloc(strlen(words) + 1), *w[256];
+    int n, k, found = 0;
+    if (!copy)
+        return 0;
+    strcpy(copy, words);
+    n = sbc_split_words(copy, w, 256);
+    for (k = 1; k < n && k < 256; ++k)
+        found |= strcmp(w[k], key) == 0;
+    free(copy);
+    return found;
+}
+
 /* the words a point takes: a BC of (D), (P), (T) or mixed and its keywords;
-   the path (F, increments, stress, file) is the point's */
+   the path (F, increments, stress, file) is the point's. A point's remap is
+   none unless its words say x: its consistent tangent (condensed) is the
+   derivative of the path without remap (docs/fe2.md, "The consistent tangent") */
 static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error *err)
 {
     char *words3 = NULL;
@@ -99,6 +116,8 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
     free(words3);
     if (st != SBC_OK || sbc_settings_check_dimension(s, d->dim, err) != SBC_OK)
         return err->status;
+    if (!d->words || !words_name(d->words, "remap"))
+        s->remap = 0;
     sbc_tensor_identity(d->dim, I);
     for (k = 0; k < 9; ++k)
         if (s->F[k] != I[k])

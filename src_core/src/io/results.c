@@ -133,15 +133,27 @@ void sbc_csv_close(sbc_csv *csv)
 
 int sbc_result_line(const sbc_result *r, sbc_bc bc, int total, char *out, size_t cap)
 {
-    /* 2D: F12, sigma11, sigma12; 3D: F13, sigma33, sigma13 (the shear and the
-       normal stress of a layer normal to the last axis) */
-    const int n = r->dim == 3 ? 2 : 0, t = r->dim == 3 ? 2 : 1;
+    /* the component ij of F farthest from the identity, the layer's shear
+       (2D F12, 3D F13) unless another is strictly farther; then sigma_ij
+       after a companion: the layer's normal stress (2D sigma11, 3D sigma33)
+       for a shear, the first other axis' normal stress for a stretch (a
+       triaxial path: F33, sigma11, sigma33) */
+    const int n = r->dim == 3 ? 2 : 0;
+    int i = 0, j = r->dim == 3 ? 2 : 1, a, b, c;
+    double far = fabs(r->F[SBC_IJ(i, j)]);
     char F[8], s1[8], s2[8];
+    for (a = 0; a < r->dim; ++a)
+        for (b = 0; b < r->dim; ++b)
+            if (fabs(r->F[SBC_IJ(a, b)] - (a == b ? 1.0 : 0.0)) > far) {
+                far = fabs(r->F[SBC_IJ(a, b)] - (a == b ? 1.0 : 0.0));
+                i = a, j = b;
+            }
+    c = i != j ? n : i == 0 ? 1 : 0;
     return snprintf(out, cap,
                     "servo_bc %s: increment %d/%d %s %+.5f %s %+.6e %s %+.6e %s steps %ld iterations %d "
                     "unbalanced %.2g HM %.1e",
-                    sbc_bc_name(bc), r->increment, total, sbc_tensor_component_name("F", 0, t, F), r->F[SBC_IJ(0, t)],
-                    sbc_tensor_component_name("sigma", n, n, s1), r->sigma[SBC_IJ(n, n)],
-                    sbc_tensor_component_name("sigma", 0, t, s2), r->sigma[SBC_IJ(0, t)],
+                    sbc_bc_name(bc), r->increment, total, sbc_tensor_component_name("F", i, j, F), r->F[SBC_IJ(i, j)],
+                    sbc_tensor_component_name("sigma", c, c, s1), r->sigma[SBC_IJ(c, c)],
+                    sbc_tensor_component_name("sigma", i, j, s2), r->sigma[SBC_IJ(i, j)],
                     r->dim == 3 ? "N/m^2" : "N/m", r->relax_steps, r->iterations, r->unbalanced, r->hill_mandel);
 }

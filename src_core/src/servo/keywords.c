@@ -114,8 +114,9 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
      "`x` or `none`",
      "`x`: while the frame travels to an increment's first positions, every interior particle follows the "
          "affine part of the change of F̄ (as `fix deform … remap x` in LAMMPS), so that the relaxation starts "
-         "near its answer instead of from a wave at the frame (see \"Remap\")",
-     "none"},
+         "near its answer instead of from a wave at the frame (see \"Remap\"); the host must move its "
+         "interior (every engine here does)",
+     "x; none with `accuracy paper` and in a material point"},
     {"frame",
      "group-ID",
      "boundary particles given by a host group; the embedded runner detects the frame itself and refuses "

@@ -41,7 +41,9 @@ sbc_settings sbc_settings_default(void)
  * to the frame's own forces below tol_relative, the secant update, and the
  * frame moved at `speed` radii per critical step, FIRE on the interior
  * instead of eq. 10 (fire_damping.h; fewer DEM steps on every case of
- * docs/speed-accuracy.md); each guarantees the
+ * docs/speed-accuracy.md), and remap x (the interior follows the affine
+ * part of the frame's move: steps per increment that do not grow with a
+ * lattice, docs/servo_bc.md "Remap"); each guarantees the
  * relative stress error `accuracy` at a converged increment, measured on
  * the closed-form lattices and the sweep cases (docs/servo_bc.md). */
 typedef struct preset {
@@ -53,13 +55,14 @@ typedef struct preset {
     double tol_relative, tol_deformation, speed;
     sbc_update update;
     sbc_damping damping;
+    int remap;
 } preset;
 
 static const preset presets[] = {
-    {"paper", 0.0, SBC_CRITERION_ENERGY, 1.0e-3, 20, 0.0, 1.0e-2, 0.0, SBC_UPDATE_FIXED, SBC_DAMPING_LOCAL},
-    {"fast", 1.0e-2, SBC_CRITERION_FORCE, 1.0e-3, 20, 1.0e-2, 1.0e-2, 0.1, SBC_UPDATE_SECANT, SBC_DAMPING_FIRE},
-    {"balanced", 1.0e-4, SBC_CRITERION_FORCE, 1.0e-5, 20, 1.0e-4, 1.0e-2, 0.01, SBC_UPDATE_SECANT, SBC_DAMPING_FIRE},
-    {"tight", 1.0e-6, SBC_CRITERION_FORCE, 1.0e-8, 20, 1.0e-7, 1.0e-2, 0.001, SBC_UPDATE_SECANT, SBC_DAMPING_FIRE},
+    {"paper", 0.0, SBC_CRITERION_ENERGY, 1.0e-3, 20, 0.0, 1.0e-2, 0.0, SBC_UPDATE_FIXED, SBC_DAMPING_LOCAL, 0},
+    {"fast", 1.0e-2, SBC_CRITERION_FORCE, 1.0e-3, 20, 1.0e-2, 1.0e-2, 0.1, SBC_UPDATE_SECANT, SBC_DAMPING_FIRE, 1},
+    {"balanced", 1.0e-4, SBC_CRITERION_FORCE, 1.0e-5, 20, 1.0e-4, 1.0e-2, 0.01, SBC_UPDATE_SECANT, SBC_DAMPING_FIRE, 1},
+    {"tight", 1.0e-6, SBC_CRITERION_FORCE, 1.0e-8, 20, 1.0e-7, 1.0e-2, 0.001, SBC_UPDATE_SECANT, SBC_DAMPING_FIRE, 1},
 };
 
 static const preset *find_preset(const char *name)
@@ -101,6 +104,7 @@ int sbc_settings_preset(sbc_settings *s, const char *name)
     s->update = p->update;
     s->speed = p->speed;
     s->damping = p->damping;
+    s->remap = p->remap;
     s->alpha = s->beta = 0.7; /* eq. 10: the interior under `paper`, free frame rotations under every preset */
     snprintf(s->accuracy, sizeof s->accuracy, "%s", p->name);
     return 1;
