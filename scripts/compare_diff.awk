@@ -36,5 +36,5 @@ END {
   }
   missing = 0; for (k = 1; k <= n; k++) missing += !have[k]
   if (missing) printf "| %s | (%d of %d increments missing) | | | | |\n", e, missing, n
-  printf "| %s | (first peak of σ̄%s at increment %d) | | | | |\n", e, substr(nm[along], 6), peak - 1
+  printf "| %s | (first peak of sigma%s at increment %d) | | | | |\n", e, substr(nm[along], 6), peak - 1
 }
