@@ -64,38 +64,32 @@ void sbc_point_free(sbc_point *p)
     free(p);
 }
 
+/* the position of the word key among the words (0: the first), -1 when
+   they do not hold it or out of memory */
+static int word_at(const char *words, const char *key)
+{
+    char *copy = malloc(strlen(words) + 1), *w[256];
+    int n, k, at = -1;
+    if (!copy)
+        return -1;
+    strcpy(copy, words);
+    n = sbc_split_words(copy, w, 256);
+    for (k = 0; k < n && k < 256 && at < 0; ++k)
+        if (strcmp(w[k], key) == 0)
+            at = k;
+    free(copy);
+    return at;
+}
+
 /* 3D mixed words without F: the same words with the identity as F after
    `mixed`, since the face keywords (xlo ... zhi) are 3D only after a 3D F
    (docs/servo_bc.md, "Mixed"); NULL for any other words or out of memory */
 static char *mixed_words_3d(const char *words)
 {
-    char *copy = malloc(strlen(words) + 1), *w[256], *out = NULL;
-    int n, k, has_F = 0;
-    if (!copy)
-        return NULL;
-    strcpy(copy, words);
-    n = sbc_split_words(copy, w, 256);
-    for (k = 0; k < n && k < 256; ++k)
-        has_F |= strcmp(w[k], "F") == 0;
-    if (n >= 1 && strcmp(w[0], "mixed") == 0 && !has_F && (out = malloc(strlen(words) + 32)))
+    char *out = NULL;
+    if (word_at(words, "mixed") == 0 && word_at(words, "F") < 0 && (out = malloc(strlen(words) + 32)))
         sprintf(out, "mixed F 1 0 0 0 1 0 0 0 1 %s", strstr(words, "mixed") + 5);
-    free(copy);
     return out;
-}
-
-/* 1 when the words name the keyword key */
-static int words_name(const char *words, const char *key)
-{
-    char *copy = malloc(strlen(words) + 1), *w[256];
-    int n, k, found = 0;
-    if (!copy)
-        return 0;
-    strcpy(copy, words);
-    n = sbc_split_words(copy, w, 256);
-    for (k = 1; k < n && k < 256; ++k)
-        found |= strcmp(w[k], key) == 0;
-    free(copy);
-    return found;
 }
 
 /* the words a point takes: a BC of (D), (P), (T) or mixed and its keywords;
@@ -116,7 +110,7 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
     free(words3);
     if (st != SBC_OK || sbc_settings_check_dimension(s, d->dim, err) != SBC_OK)
         return err->status;
-    if (!d->words || !words_name(d->words, "remap"))
+    if (!d->words || word_at(d->words, "remap") <= 0)
         s->remap = 0;
     sbc_tensor_identity(d->dim, I);
     for (k = 0; k < 9; ++k)
