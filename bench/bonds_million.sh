@@ -12,6 +12,7 @@
 #   bash bench/bonds_million.sh [OUT]     NX=250 NY=64 NZ=64 STEPS=100 HOSTS="lammps liggghts"
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
+. "$top/bench/rank_run.sh"
 B=${B:-$top/build}
 out=${1:-$top/out/bench-bonds-million}
 nx=${NX:-250} ny=${NY:-64} nz=${NZ:-64} steps=${STEPS:-100}
@@ -57,23 +58,12 @@ deck() {  # HOST
   printf 'thermo_style custom step f_bonds[1]\nrun 0\nvariable dtc equal 0.6*f_bonds[2]\nvariable dt equal ${dtc}\ntimestep ${dt}\n'
   printf 'thermo 0\nrun %s\nvariable s equal xcm(right,x)-xcm(left,x)\nprint "stretch ${s}"\n' "$steps"
 }
-for host in $hosts; do
-  bin=$B/lmp_servo
-  [ "$host" = liggghts ] && bin=$B/liggghts_servo
-  [ -x "$bin" ] || { echo "| $host | | not built ($bin) |"; continue; }
-  deck "$host" > "$out/$host.in"
-  t1=
-  for np in 1 2; do
-    (cd "$out" && mpirun --allow-run-as-root --oversubscribe -np $np /usr/bin/time -f 'maxrss %M' "$bin" \
-      -in "$host.in" -log "${host}_np$np.log" -screen none) > "$out/${host}_np$np.out" 2>&1
-    set -- $(awk '/^Loop time of/ { t = $4 } $1 == "maxrss" && $2 > kb { kb = $2 } END { print t + 0, kb + 0 }' \
-      "$out/${host}_np$np.log" "$out/${host}_np$np.out")
-    t=$1 kb=$2
-    stretch=$(awk '$1 == "stretch" { print $2 }' "$out/${host}_np$np.log")
-    [ "$np" = 1 ] && t1=$t
-    awk -v h="$host" -v np="$np" -v t="$t" -v t1="$t1" -v kb="$kb" -v nb="$bonds" -v n="$spheres" -v st="$steps" \
-      -v s="${stretch:-none}" 'BEGIN {
-        eff = np == 2 && t > 0 ? sprintf("%.0f %%", 100 * t1 / (2 * t)) : ""
-        printf "| %s | %d | %.2f | %.1f | %s | %.0f | %.0f | %s |\n", h, np, t, t / st / nb * 1e9, eff, kb / 1024, kb * 1024 * np / n, s }'
-  done
-done
+row() {  # HOST NP T T1 KB
+  local stretch
+  stretch=$(awk '$1 == "stretch" { print $2 }' "$out/${1}_np$2.log")
+  awk -v h="$1" -v np="$2" -v t="$3" -v t1="$4" -v kb="$5" -v nb="$bonds" -v n="$spheres" -v st="$steps" \
+    -v s="${stretch:-none}" 'BEGIN {
+      eff = np == 2 && t > 0 ? sprintf("%.0f %%", 100 * t1 / (2 * t)) : ""
+      printf "| %s | %d | %.2f | %.1f | %s | %.0f | %.0f | %s |\n", h, np, t, t / st / nb * 1e9, eff, kb / 1024, kb * 1024 * np / n, s }'
+}
+hosts_ranks "$out" $hosts

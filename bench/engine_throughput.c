@@ -5,7 +5,9 @@
  *
  *   bench_engine SIDE STEPS          prints "engine N STEPS ns_per_particle_step"
  *   bench_engine SIDE STEPS servo    the same, with the outer ring as a (D) frame
- *                                    driven through the controller each step */
+ *                                    driven through the controller each step
+ *   bench_engine SIDE STEPS cohesive every touching pair bonded by Table 6's
+ *                                    cohesive law (eqs. 7-8; bench/cohesive_million.sh) */
 #define _POSIX_C_SOURCE 200809L
 #include "sbc/controller.h"
 #include "sbc/embedded/engine.h"
@@ -27,7 +29,8 @@ int main(int argc, char **argv)
 {
     int side = argc > 1 ? atoi(argv[1]) : 100;
     long steps = argc > 2 ? atol(argv[2]) : 2000, k;
-    int servo = argc > 3 && strcmp(argv[3], "servo") == 0;
+    int servo = argc > 3 && strcmp(argv[3], "servo") == 0, cohesive = argc > 3 && strcmp(argv[3], "cohesive") == 0;
+    sbc_cohesive law = sbc_cohesive_default();
     sbc_packing p;
     sbc_frame frame;
     sbc_error err;
@@ -38,7 +41,7 @@ int main(int argc, char **argv)
     double t0, t1, *mass = NULL;
 
     if (side < 3 || steps < 1) {
-        fprintf(stderr, "usage: bench_engine SIDE(>=3) STEPS [servo]\n");
+        fprintf(stderr, "usage: bench_engine SIDE(>=3) STEPS [servo | cohesive]\n");
         return 2;
     }
     if (sbc_packing_lattice_square(&p, side, side, 2e-3, 1.02e-3, &err) != SBC_OK) {
@@ -50,6 +53,10 @@ int main(int argc, char **argv)
     def.r = p.r;
     def.alpha = def.beta = 0.0;
     def.skin = 0.25 * 1.02e-3;
+    if (cohesive) {
+        def.bonds = &law;
+        def.law.kn = law.kn;
+    }
     e = sbc_engine_create(&def, &err);
     if (!e) {
         fprintf(stderr, "%s\n", err.message);
@@ -77,7 +84,13 @@ int main(int argc, char **argv)
         }
     }
     t1 = now();
-    printf("engine%s %d %ld %.2f\n", servo ? "+servo" : "", p.n, steps, (t1 - t0) / ((double)p.n * steps) * 1e9);
+    if (cohesive) {
+        sbc_snapshot snap;
+        sbc_engine_snapshot(e, &snap);
+        printf("engine+cohesive %d %ld %.2f Ep %.12g J\n", p.n, steps, (t1 - t0) / ((double)p.n * steps) * 1e9,
+               snap.potential_energy);
+    } else
+        printf("engine%s %d %ld %.2f\n", servo ? "+servo" : "", p.n, steps, (t1 - t0) / ((double)p.n * steps) * 1e9);
     sbc_controller_free(ctl);
     if (servo)
         sbc_frame_free(&frame);

@@ -536,9 +536,8 @@ void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2
    on both ranks, and the lower tag counts it. */
 void FixServoBC::contact_pass(double out[4])
 {
-  if (contacts) {    // the core's sums over every contact, the same on every rank: rank 0 gives them
-    if (comm->me == 0) contacts->contact_sums(out);
-    else std::fill(out, out + 4, 0.0);
+  if (contacts) {    // the core's sums over this rank's pairs, each pair on the rank of its end A
+    contacts->contact_sums(out);
     out[0] += seal_energy;
     return;
   }

@@ -6,8 +6,9 @@
    (parallel bonds, k^n = E / 2 r_min, k^s = k^n / 4.2); bond radius
    alpha r_min; with a strength a bond breaks when eq. 8 in 3D reaches 1
    (bpm_bond.h) and becomes a frictional contact (friction MU). cohesive: the paper's eqs. 7-8 with Table 6's quantities
-   (N/m, N/m, N m/rad, N, N, N m, -), eq. 6 after failure. Bonds join the
-   group's particles that touch at the first run. breaks FILE writes a row
+   (N/m, N/m, N m/rad, N, N, N m, -), eq. 6 after failure and between
+   discs that were apart. Bonds join the group's particles that touch at the
+   first run. breaks FILE writes a row
    per broken bond (step,id_a,id_b,x,y,z: the midpoint of its centres, m).
    Outputs: f_ID (scalar) the bonds' strain energy (J, eq. 50 or the beams'
    1/2 u K u; cohesive: eq. 12's Ep of every contact, bonds included);
@@ -48,7 +49,8 @@ using namespace FixConst;
 
 FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), E(0.0), nu(0.0), alpha(0.0), strength{0.0, 0.0, 0.0, 0.0, 0.0}, failure(false), kn(0.0),
-    bonds(nullptr), contacts(nullptr), n(0), dim(3), reported(-1), last_step(-1), rmin(0.0), maxb(0), per(0),
+    bonds(nullptr), n(0), dim(3), reported(-1), pairs_counted(0), have_contacts(false), contact_mine{0.0, 0.0, 0.0, 0.0}, intact_mine(0),
+    rmin(0.0), maxb(0), per(0),
     width(0), critical_dt(0.0), formed(0), slot(nullptr), carry(nullptr), step_load(nullptr), step_motion(nullptr), partner_at(nullptr), partner_slot(nullptr), slot_load(nullptr),
     nmax_slots(0), have_prev(false), restarted(false), copies_stale(false), longest(0.0), reduced_at(-1), sums{0.0, 0.0, 0.0, 0.0, 0.0},
     kinetic_mine(0.0), breaks_fp(nullptr)
@@ -57,8 +59,6 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 4) fail("expected a model after the style (beam, parallel or cohesive)");
   model = arg[3];
   if (model == "cohesive") {
-    // the words are checked by the core (sbc_cohesive_parse) when the fix is created
-    for (int k = 4; k < narg; k++) words += std::string(k > 4 ? " " : "") + arg[k];
     dim = 2;
     sbc_error err;
     if (sbc_cohesive_parse(narg - 4, arg + 4, "cohesive", &law, &err) != SBC_OK) fail(err.message);
@@ -116,17 +116,16 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
     fail(dim == 3 ? "requires a 3d box (the bond models are 3D)"
                   : "cohesive requires a 2d box (the paper's cohesive bonds are 2D: dimension 2)");
   restart_global = 1;
-  if (dim == 3) {    // the bonds' per-atom slots
-    restart_peratom = 1;
-    comm_forward = 6;
+  // the pairs' per-atom slots
+  restart_peratom = 1;
+  comm_forward = 6;
 #ifndef SERVO_BC_LIGGGHTS
-    maxexchange = 9;            // the 8 carried values and a count of 0 until the bonds form (size_slots)
-    maxexchange_dynamic = 1;
+  maxexchange = 9;            // the 8 carried values and a count of 0 until the bonds form (size_slots)
+  maxexchange_dynamic = 1;
 #endif
-    grow_arrays(atom->nmax);
-    atom->add_callback(0);    // Atom::GROW
-    atom->add_callback(1);    // Atom::RESTART
-  }
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);    // Atom::GROW
+  atom->add_callback(1);    // Atom::RESTART
   scalar_flag = 1;
   vector_flag = 1;
   size_vector = dim == 3 ? 6 : 2;
@@ -137,10 +136,8 @@ FixServoBCBonds::FixServoBCBonds(LAMMPS *lmp, int narg, char **arg) :
 
 FixServoBCBonds::~FixServoBCBonds()
 {
-  if (dim == 3) {
-    atom->delete_callback(id, 0);
-    atom->delete_callback(id, 1);
-  }
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
   memory->destroy(slot);
   memory->destroy(carry);
   memory->destroy(step_load);
@@ -150,30 +147,25 @@ FixServoBCBonds::~FixServoBCBonds()
   memory->destroy(slot_load);
   if (breaks_fp) fclose(breaks_fp);
   sbc_bpm_free(bonds);
-  sbc_cohesive_host_free(contacts);
 }
 
 int FixServoBCBonds::setmask() { return PRE_EXCHANGE | POST_FORCE | POST_RUN | END_OF_STEP; }
 
-/* atoms are about to migrate: each bond's copies alike first */
+/* atoms are about to migrate: each pair's copies alike first */
 void FixServoBCBonds::pre_exchange()
 {
   if (bonds) sync_copies();
+  if (have_contacts) sync_contacts();
 }
 
 /* how many bonds are left, at the end of a run where some broke */
 void FixServoBCBonds::post_run()
 {
   if (bonds) sync_copies();    // any command after the run may move the atoms
-  if (!contacts && !(bonds && failure)) return;
-  int intact, initial = formed;
-  if (contacts) {
-    intact = sbc_cohesive_host_bond_count(contacts);
-    initial = sbc_cohesive_host_bonds_initial(contacts);
-  } else {
-    reduce_outputs();
-    intact = (int) sums[1];
-  }
+  if (have_contacts) sync_contacts();
+  if (!have_contacts && !(bonds && failure)) return;
+  reduce_outputs();
+  const int intact = (int) sums[1], initial = formed;
   if (intact == reported) return;
   reported = intact;
   char line[128];
@@ -241,13 +233,14 @@ void FixServoBCBonds::init()
     if (std::strcmp(modify->fix[f]->style, "balance") == 0)
       fail(std::string("fix ") + modify->fix[f]->id + " (balance) comes before this fix; define fix " + id +
            " first (bonds whose atoms a rank owns keep one copy current until atoms migrate, in pre_exchange)");
-  if (model == "cohesive" && !contacts) create_bonds();    // also from a restart file, at the present centres
 }
 
 namespace {
 // marks fix servo_bc/bonds' restart block (bump on any change of its layout);
-// the bonds' states moved into per-atom data with the layout after BONDS_GATHERED
+// the bonds' states moved into per-atom data with the layout after BONDS_GATHERED;
+// the cohesive contacts' states, with model COHESIVE after COHESIVE_GATHERED
 const double BONDS_MAGIC = 8.020006e7, BONDS_GATHERED = 8.020005e7;
+const int COHESIVE_GATHERED = 3, COHESIVE = 4;
 }
 
 /* rank 0: the marker, the block's length, then
@@ -255,20 +248,17 @@ const double BONDS_MAGIC = 8.020006e7, BONDS_GATHERED = 8.020005e7;
    slots per atom, doubles per bond state, eq. 48's step, the bonds formed,
    the spheres, the longest bond at creation (the bonds' states are per-atom
    data: pack_restart);
-   cohesive: model 3, the law (kn ks kr fn fs mr mu), n, the atom IDs, the
-   pair state's length and the pair state (cohesive_host.h) */
+   cohesive: model 4, the law (kn ks kr fn fs mr mu), r_min, slots per
+   atom, the bonds formed, the discs (the pairs' states are per-atom data) */
 void FixServoBCBonds::write_restart(FILE *fp)
 {
   if (bonds) sync_copies();    // every rank, before its per-atom data are packed
-  if (comm->me != 0 || (!bonds && !contacts)) return;
+  if (have_contacts) sync_contacts();
+  if (comm->me != 0 || (!bonds && !have_contacts)) return;
   std::vector<double> list;
-  if (contacts) {
-    list = {BONDS_MAGIC, 0.0, 3.0, law.kn, law.ks, law.kr, law.fn_u, law.fs_u, law.m_u, law.mu, (double) n};
-    for (int k = 0; k < n; k++) list.push_back((double) tags[k]);
-    std::vector<double> state(sbc_cohesive_host_state_size(contacts));
-    sbc_cohesive_host_state_get(contacts, state.data());
-    list.push_back((double) state.size());
-    list.insert(list.end(), state.begin(), state.end());
+  if (have_contacts) {
+    list = {BONDS_MAGIC, 0.0, (double) COHESIVE, law.kn, law.ks, law.kr, law.fn_u, law.fs_u, law.m_u, law.mu,
+            rmin, (double) maxb, (double) formed, (double) n};
   } else {
     list = {BONDS_MAGIC, 0.0, model == "beam" ? 1.0 : 2.0, E, nu, alpha, failure ? 1.0 : 0.0};
     list.insert(list.end(), strength, strength + 5);
@@ -299,8 +289,12 @@ void FixServoBCBonds::restart(char *raw)
   const long total = sbc_saved_int(&rd, "length", 4, 1000000000L);
   if (rd.st != SBC_OK) fail(err.message);
   sbc_saved_start(&rd, list + 2, (size_t) total - 2, "restart data", &err);
-  const int code = (int) sbc_saved_int(&rd, "model", 1, 3);
+  const int code = (int) sbc_saved_int(&rd, "model", 1, COHESIVE);
   if (rd.st != SBC_OK) fail(err.message);
+  if (code == COHESIVE_GATHERED)
+    fail("restart: this file's fix servo_bc/bonds cohesive block is from a version that kept every contact on "
+         "every rank; this version keeps each contact with its atoms and cannot read it (run the loading again "
+         "from its data file, or read the file with the version that wrote it)");
   const std::string saved_model = code == 1 ? "beam" : code == 2 ? "parallel" : "cohesive";
   if (saved_model != model && (saved_model == "cohesive" || model == "cohesive"))
     fail("restart: the file's bonds are " + saved_model + "; this fix asks for " + model);
@@ -318,17 +312,17 @@ void FixServoBCBonds::restart(char *raw)
     if (rd.st != SBC_OK) fail(err.message);
     if (!differ.empty())
       fail("restart: the file's cohesive law differs: " + differ + "; define the fix with the saved law");
-    const long count = sbc_saved_int(&rd, "particle count", 1, total);
-    if (rd.st != SBC_OK) fail(err.message);
-    saved_tags.assign(count, 0);
-    for (long k = 0; k < count; k++) saved_tags[k] = (tagint) sbc_saved_int(&rd, "atom ID", 1, MAXTAGINT);
-    const long size = sbc_saved_int(&rd, "pair state length", 0, total - 2 - (long) rd.at - 1);
-    if (rd.st != SBC_OK) fail(err.message);
-    saved.assign((size_t) size, 0.0);
-    for (long k = 0; k < size; k++) saved[k] = sbc_saved_real(&rd, "pair state value");
+    rmin = sbc_saved_positive(&rd, "smallest radius");
+    maxb = (int) sbc_saved_int(&rd, "slots per atom", 1, 1000);
+    formed = (int) sbc_saved_int(&rd, "bonds formed", 1, 2000000000L);
+    n = (int) sbc_saved_int(&rd, "disc count", 2, 2000000000L);
     if (rd.st != SBC_OK) fail(err.message);
     if ((long) rd.at != total - 2)
       fail("restart: the block holds " + std::to_string(total) + " values, its contents " + std::to_string(rd.at + 2));
+    per = SBC_COHESIVE_PAIR_STATE;
+    size_slots();
+    have_contacts = true;
+    restarted = true;
     return;
   }
   double saved_params[3], saved_strength[5];
@@ -365,91 +359,16 @@ void FixServoBCBonds::restart(char *raw)
   restarted = true;
 }
 
-/* cohesive: the group's atoms in ID order on every rank; the core bonds those that touch */
-void FixServoBCBonds::create_bonds()
-{
-  const int nlocal = atom->nlocal;
-  std::vector<double> pack;    // per atom: tag, x, y, radius
-  for (int i = 0; i < nlocal; i++)
-    if (atom->mask[i] & groupbit)
-      pack.insert(pack.end(), {(double) atom->tag[i], atom->x[i][0], atom->x[i][1], atom->radius[i]});
-  int count = (int) pack.size(), nprocs = comm->nprocs;
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<double> every(displs[nprocs - 1] + counts[nprocs - 1]);
-  MPI_Allgatherv(pack.data(), count, MPI_DOUBLE, every.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
-  n = (int) every.size() / 4;
-  std::vector<int> order(n);
-  for (int k = 0; k < n; k++) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return every[4 * a] < every[4 * b]; });
-  ref_x.assign(2 * n, 0.0);
-  ref_r.assign(n, 0.0);
-  tags.assign(n, 0);
-  for (int k = 0; k < n; k++) {
-    const double *p = &every[4 * order[k]];
-    tags[k] = (tagint) p[0];
-    ref_x[2 * k] = p[1];
-    ref_x[2 * k + 1] = p[2];
-    ref_r[k] = p[3];
-  }
-  bond_discs();
-}
-
-/* cohesive: the core's contacts on the group's discs at their present
-   centres; from a restart file, its pair state replaces the new bonds */
-void FixServoBCBonds::bond_discs()
-{
-  index.clear();
-  for (int k = 0; k < n; k++) index[tags[k]] = k;
-  char msg[512] = "";
-  contacts = sbc_cohesive_host_create(words.c_str(), n, ref_x.data(), ref_r.data(), msg, sizeof msg);
-  if (!contacts) fail(std::string(msg) + " (group " + group->names[igroup] + ")");
-  if (!saved.empty()) {
-    if (saved_tags != tags)
-      fail("restart: the group's atoms (" + std::to_string(n) + ") are not the " + std::to_string(saved_tags.size()) +
-           " atoms of the restart file's pair state");
-    if (sbc_cohesive_host_state_set(contacts, saved.data(), saved.size()))
-      fail(std::string("restart: ") + sbc_cohesive_host_message(contacts));
-    saved.clear();
-  }
-  mine.assign(5 * n, 0.0);
-  all.assign(5 * n, 0.0);
-  load.assign(3 * n, 0.0);
-  char line[256];
-  std::snprintf(line, sizeof line, "fix servo_bc/bonds: %d cohesive bonds (%d formed) between %d discs\n",
-                sbc_cohesive_host_bond_count(contacts), sbc_cohesive_host_bonds_initial(contacts), n);
-  say(line);
-}
-
-/* cohesive: x, v of the group in ID order and the spins about z, as three
-   blocks x | v | omega (2n, 2n, n), summed over ranks (each atom is owned once) */
-void FixServoBCBonds::gather()
-{
-  std::fill(mine.begin(), mine.end(), 0.0);
-  double **x = atom->x, **v = atom->v, **omega = atom->omega;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    auto it = index.find(atom->tag[i]);
-    if (it == index.end()) fail("atom " + std::to_string((long) atom->tag[i]) + " joined the group after set-up");
-    const int k = it->second;
-    for (int c = 0; c < 2; c++) {
-      mine[2 * k + c] = x[i][c];
-      mine[2 * (n + k) + c] = v[i][c];
-    }
-    mine[4 * n + k] = omega[i][2];
-  }
-  MPI_Allreduce(mine.data(), all.data(), (int) mine.size(), MPI_DOUBLE, MPI_SUM, world);
-}
-
 void FixServoBCBonds::setup(int)
 {
-  if (model == "cohesive") {
-    post_force(0);
+  if (dim == 2) {
+    if (!have_contacts) create_contacts();    // the first run: the group's touching discs
+    else build_contacts(false);
+    step_contacts(false);    // the last configuration again: no motion, the same loads
     return;
   }
   if (!bonds) create_slots();    // the first run: the group's touching spheres
-  map_images();
+  map_partners();
   step_slots(false);             // the last configuration again: no motion, the same loads
 }
 
@@ -457,53 +376,31 @@ void FixServoBCBonds::setup(int)
    (velocity Verlet: v is at the half step here) */
 void FixServoBCBonds::post_force(int)
 {
-  if (model != "cohesive") {
-    if (neighbor->ago == 0) map_images();
-    step_slots(true);
+  if (dim == 2) {
+    if (neighbor->ago == 0) build_contacts(false);
+    step_contacts(true);
     return;
   }
-  // cohesive: the setup of a run sees the last configuration again, whose loads are added once more, unchanged
-  if (update->ntimestep != last_step) {
-    gather();
-    // the first evaluation (no step taken yet) builds no increment
-    if (last_step < 0) std::fill(all.begin() + 2 * n, all.end(), 0.0);
-    const double *x = &all[0], *v = &all[2 * n], *w = &all[4 * n];
-    if (sbc_cohesive_host_loads(contacts, x, v, w, update->dt, load.data()))
-      fail("step " + std::to_string((long) update->ntimestep) + ": " + sbc_cohesive_host_message(contacts));
-    last_step = update->ntimestep;
-  }
-  double **f = atom->f, **torque = atom->torque;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    const double *l = &load[3 * index[atom->tag[i]]];
-    f[i][0] += l[0];
-    f[i][1] += l[1];
-    torque[i][2] += l[2];
-  }
+  if (neighbor->ago == 0) map_partners();
+  step_slots(true);
 }
 
-void FixServoBCBonds::contact_sums(double out[4]) const
-{
-  if (contacts) sbc_cohesive_host_sums(contacts, out);
-  else std::fill(out, out + 4, 0.0);
-}
+void FixServoBCBonds::contact_sums(double out[4]) const { std::copy(contact_mine, contact_mine + 4, out); }
 
 double FixServoBCBonds::compute_scalar()
 {
-  if (contacts) {
-    double sums4[4];
-    sbc_cohesive_host_sums(contacts, sums4);
-    return sums4[0];
-  }
-  if (!bonds) return 0.0;
+  if (!bonds && !have_contacts) return 0.0;
   reduce_outputs();
   return sums[0];
 }
 
 double FixServoBCBonds::compute_vector(int k)
 {
-  if (contacts) return k == 0 ? sbc_cohesive_host_bond_count(contacts) : sbc_cohesive_host_bonds_initial(contacts);
-  if (!bonds) return 0.0;
+  if (!bonds && !have_contacts) return 0.0;
+  if (have_contacts) {
+    reduce_outputs();
+    return k == 0 ? sums[1] : formed;
+  }
   if (k == 1) return critical_dt;
   reduce_outputs();
   const double u = sums[0], kinetic = sums[2], d = sums[3], external_work = sums[4];

@@ -8,17 +8,16 @@
      contact of the group (cohesive_host.h, the embedded 2D engine's pair
      loop); the pair style must leave the group alone (pair_style zero or
      none), and fix servo_bc takes its contact sums from this fix.
-   beam | parallel keep each bond with its atoms (fix_servo_bc_bonds_slots.cpp):
-   both atoms of a bond hold a copy of its state in per-atom slots that
-   migrate between ranks and go into restart files; each rank computes the
-   bonds of the atoms it owns, the partner a ghost when another rank owns it
-   (its velocity and spin by this fix's forward communication), with the
-   smaller atom ID as end A, so both owners advance their copies alike and
-   agree when a bond breaks.
-   cohesive gathers the group's centres and velocities in atom-ID order on
-   every rank each step and runs the same loop (its contacts between every
-   pair of the group are not distributed); each rank adds the loads to the
-   atoms it owns.
+   Every model keeps each pair's state with its atoms: both atoms of a bond
+   (cohesive: of a bond or a contact with a tangential spring) hold a copy of
+   its state in per-atom slots that migrate between ranks and go into restart
+   files; each rank computes the pairs of the atoms it owns, the partner a
+   ghost when another rank owns it (its velocity and spin by this fix's
+   forward communication), with the smaller atom ID as end A, so both owners
+   advance their copies alike and agree when a bond breaks. Beam and parallel
+   (fix_servo_bc_bonds_slots.cpp) keep the bonds formed at the first run;
+   cohesive (fix_servo_bc_bonds_contacts.cpp) also finds the group's new
+   contacts at each neighbour build, within the neighbour skin.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -36,7 +35,6 @@ FixStyle(servo_bc/bonds,FixServoBCBonds);
 
 #include "sbc/bpm_host.h"
 #include "sbc/cohesive_host.h"
-#include "sbc/contact.h"
 #include "sbc/saved.h"
 
 namespace LAMMPS_NS {
@@ -74,31 +72,33 @@ class FixServoBCBonds : public Fix {
 #endif
 
   // cohesive: every contact of the group is this fix's (fix servo_bc asks)
-  bool owns_contacts() const { return model == "cohesive"; }
+  bool owns_contacts() const { return dim == 2; }
   double contact_kn() const { return kn; }    // N/m
-  void contact_sums(double out[4]) const;    // relax.h's sums of the last step, the same on every rank
+  void contact_sums(double out[4]) const;    // relax.h's sums of the last step over this rank's pairs (end A owned)
 
  private:
   std::string model;
   double E, nu, alpha;                     // beam, parallel
   double strength[5];                      // optional failure: FT FS MB MT (N, N, N m, N m), friction MU
   bool failure;                            // a strength was given
-  std::string words;                       // cohesive: the law's words (cohesive_host.h)
   double kn;                               // cohesive: the law's kn, N/m
   sbc_cohesive law;                        // cohesive: the law (eqs. 6-8), saved in restart files
   sbc_bpm *bonds;                          // beam | parallel: the law (no spheres; bpm_host.h)
-  sbc_cohesive_host *contacts;
   int n;                                   // particles of the group
-  int dim;                                 // 3 (beam, parallel) or 2 (cohesive): components gathered per vector
-  // cohesive: the gathered path
-  std::vector<tagint> tags;                // atom IDs in order (the core's disc order)
-  std::vector<double> ref_x, ref_r;        // the discs at bond creation
-  std::vector<double> saved;               // the pair state from a restart file, set in init()
-  std::vector<tagint> saved_tags;          // the atom IDs of the restart file's pair state
-  std::unordered_map<tagint, int> index;   // atom ID -> disc
-  std::vector<double> mine, all, load;     // gather buffers: x | v | omega; loads (3 per disc)
+  int dim;                                 // 3 (beam, parallel) or 2 (cohesive)
   int reported;                            // the intact bonds post_run last printed
-  bigint last_step;                        // the step whose loads are in `load`
+  // cohesive: the pairs of the owned atoms since the last neighbour build
+  // (fix_servo_bc_bonds_contacts.cpp), each once on this rank: its ends as
+  // owned or ghost indices, end A (the smaller ID) first; the pairs whose end
+  // A is owned come first (relax.h's sums count them, each pair on one rank)
+  std::vector<int> pair_ends;              // 2 per pair
+  std::vector<double> pair_state;          // SBC_COHESIVE_PAIR_STATE per pair
+  long pairs_counted;                      // pairs with end A owned
+  std::vector<double> contact_load;        // this step's loads of each pair: on end A (3), on end B (3)
+  std::vector<int> load_start, load_at;    // per owned atom, its pairs' loads in contact_load in partner ID order
+  bool have_contacts;                      // the bonds formed (first run or restart file)
+  double contact_mine[4];                  // relax.h's sums of the last step over the pairs whose end A is owned
+  int intact_mine;                         // intact bonds whose end A is owned
   // beam | parallel: per atom, slot[i] = count, then per bond the partner's
   // ID and the bond's state (per doubles); carry[i] = the other loads of the
   // last end of step (6), the external work of eq. 52 on this atom (J) and
@@ -127,9 +127,11 @@ class FixServoBCBonds : public Fix {
   std::string breaks_file;                 // keyword breaks: a row per broken bond
   FILE *breaks_fp;
   std::vector<double> break_rows;          // this step's breaks on this rank: step, ID A, ID B, x, y, z
+  void survey_group(double &rmax, double &mmin);
   void create_slots();
   void size_slots();
   void map_images();
+  void map_partners();
   int partner(tagint tag, const double *near) const;
   void step_slots(bool motion);
   void sync_copies();
@@ -137,9 +139,11 @@ class FixServoBCBonds : public Fix {
   void write_breaks();
   void reduce_outputs();
   std::string last_error;
-  void create_bonds();
-  void bond_discs();
-  void gather();
+  double ghost_cutoff() const;
+  void create_contacts();
+  void build_contacts(bool fresh);
+  void step_contacts(bool motion);
+  void sync_contacts();
   void fail(const std::string &message);
   void fail_here(const std::string &message);
   void say(const char *line);

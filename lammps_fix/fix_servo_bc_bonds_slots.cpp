@@ -1,5 +1,6 @@
 /* ----------------------------------------------------------------------
-   fix servo_bc/bonds, beam | parallel: each bond kept with its atoms
+   fix servo_bc/bonds: the per-atom slots (also cohesive's, whose pairs are
+   in fix_servo_bc_bonds_contacts.cpp) and beam | parallel: each bond kept with its atoms
    (fix_servo_bc_bonds.h). Per atom, slot[i] = [count, (partner ID, state)
    x count], partners in ascending ID; both atoms of a bond hold a copy of
    its state and advance it alike (end A is the smaller ID), so the two
@@ -36,23 +37,21 @@ constexpr int CARRY = 8, WORK = 6, FRACTURE = 7;
 constexpr int SKIP = -2;
 }    // namespace
 
-/* the group's touching spheres, owned and ghost, bonded at the first run */
-void FixServoBCBonds::create_slots()
+/* the group's size over every rank: n, r_min (kept) and r_max (m), m_min (kg);
+   a radius or mass that is not positive stops the run naming the atom */
+void FixServoBCBonds::survey_group(double &rmax, double &mmin)
 {
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  double **x = atom->x, *radius = atom->radius, *rmass = atom->rmass;
-  int *mask = atom->mask;
-  tagint *tag = atom->tag;
   double lo[3] = {1e300, 0.0, 1e300}, hi[3];
   int count = 0;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    if (!(radius[i] > 0.0) || !(rmass[i] > 0.0))
-      fail_here("atom " + std::to_string((long) tag[i]) + ": radius " + std::to_string(radius[i]) + " m, mass " +
-                std::to_string(rmass[i]) + " kg (expected > 0)");
-    lo[0] = std::min(lo[0], radius[i]);    // r_min
-    lo[1] = std::max(lo[1], radius[i]);    // r_max (negated below)
-    lo[2] = std::min(lo[2], rmass[i]);     // m_min
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double r = atom->radius[i], m = atom->rmass[i];
+    if (!(r > 0.0) || !std::isfinite(r) || !(m > 0.0))
+      fail_here("atom " + std::to_string((long) atom->tag[i]) + ": radius " + std::to_string(r) + " m, mass " +
+                std::to_string(m) + " kg (expected > 0)");
+    lo[0] = std::min(lo[0], r);    // r_min
+    lo[1] = std::max(lo[1], r);    // r_max (negated below)
+    lo[2] = std::min(lo[2], m);    // m_min
     count++;
   }
   lo[1] = -lo[1];
@@ -60,7 +59,19 @@ void FixServoBCBonds::create_slots()
   MPI_Allreduce(&count, &n, 1, MPI_INT, MPI_SUM, world);
   if (n < 2) fail("group " + std::string(group->names[igroup]) + " has " + std::to_string(n) + " atoms (bonds need 2)");
   rmin = hi[0];
-  const double rmax = -hi[1], mmin = hi[2];
+  rmax = -hi[1];
+  mmin = hi[2];
+}
+
+/* the group's touching spheres, owned and ghost, bonded at the first run */
+void FixServoBCBonds::create_slots()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  double **x = atom->x, *radius = atom->radius;
+  int *mask = atom->mask;
+  tagint *tag = atom->tag;
+  double rmax, mmin;
+  survey_group(rmax, mmin);
   char msg[512] = "";
   bonds = sbc_bpm_host_law(model.c_str(), E, nu, alpha, failure ? strength : nullptr, rmin, msg, sizeof msg);
   if (!bonds) fail(std::string(msg) + " (group " + group->names[igroup] + ")");
@@ -155,17 +166,11 @@ void FixServoBCBonds::size_slots()
   grow_arrays(atom->nmax);
 }
 
-/* the partner of every slot of the owned atoms: an owned or ghost index, the
-   image closest to the atom (periodic boxes), once per neighbour build */
+/* atom ID -> its owned and ghost indices among the group (partner), once
+   per neighbour build */
 void FixServoBCBonds::map_images()
 {
-  if (comm->me == 0 && !breaks_file.empty() && !breaks_fp) {
-    breaks_fp = std::fopen(breaks_file.c_str(), restarted ? "a" : "w");
-    if (!breaks_fp) fail_here("keyword breaks: cannot open '" + breaks_file + "' for writing");
-    if (!restarted) std::fputs("step,id_a,id_b,x,y,z\n", breaks_fp);
-  }
-  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  double **x = atom->x;
+  const int nall = atom->nlocal + atom->nghost;
   tagint *tag = atom->tag;
   image_first.clear();
   image_next.assign(nall, -1);
@@ -177,6 +182,21 @@ void FixServoBCBonds::map_images()
       in.first->second = i;
     }
   }
+}
+
+/* the partner of every slot of the owned atoms: an owned or ghost index, the
+   image closest to the atom (periodic boxes), once per neighbour build */
+void FixServoBCBonds::map_partners()
+{
+  if (comm->me == 0 && !breaks_file.empty() && !breaks_fp) {
+    breaks_fp = std::fopen(breaks_file.c_str(), restarted ? "a" : "w");
+    if (!breaks_fp) fail_here("keyword breaks: cannot open '" + breaks_file + "' for writing");
+    if (!restarted) std::fputs("step,id_a,id_b,x,y,z\n", breaks_fp);
+  }
+  const int nlocal = atom->nlocal;
+  double **x = atom->x;
+  tagint *tag = atom->tag;
+  map_images();
   for (int i = 0; i < nlocal; i++) {
     const int count = (int) slot[i][0];
     for (int s = 0; s < count; s++) {
@@ -367,6 +387,12 @@ void FixServoBCBonds::energy_slots()
 void FixServoBCBonds::reduce_outputs()
 {
   if (reduced_at == update->ntimestep) return;
+  if (dim == 2) {    // cohesive: eq. 12's Ep and the intact bonds of the pairs whose end A is owned
+    const double mine[2] = {contact_mine[0], (double) intact_mine};
+    MPI_Allreduce(mine, sums, 2, MPI_DOUBLE, MPI_SUM, world);
+    reduced_at = update->ntimestep;
+    return;
+  }
   double mine[5] = {0.0, 0.0, kinetic_mine, 0.0, 0.0};
   double **x = atom->x, *radius = atom->radius;
   tagint *tag = atom->tag;
@@ -420,15 +446,17 @@ void FixServoBCBonds::write_breaks()
 void FixServoBCBonds::grow_arrays(int nmax)
 {
   const bool fresh = width > 0 && !slot;
-  if (width > 0) {
-    memory->grow(slot, nmax, width, "servo_bc/bonds:slot");
+  if (width > 0) memory->grow(slot, nmax, width, "servo_bc/bonds:slot");
+  if (width > 0 && dim == 3) {
     memory->grow(partner_at, nmax, maxb, "servo_bc/bonds:partner_at");
     memory->grow(partner_slot, nmax, maxb, "servo_bc/bonds:partner_slot");
     memory->grow(slot_load, nmax, 6 * maxb, "servo_bc/bonds:slot_load");
   }
   memory->grow(carry, nmax, CARRY, "servo_bc/bonds:carry");
-  memory->grow(step_load, nmax, 6, "servo_bc/bonds:step_load");
-  memory->grow(step_motion, nmax, 6, "servo_bc/bonds:step_motion");
+  if (dim == 3) {    // beam | parallel: eqs. 49-52's per-step loads and motion
+    memory->grow(step_load, nmax, 6, "servo_bc/bonds:step_load");
+    memory->grow(step_motion, nmax, 6, "servo_bc/bonds:step_motion");
+  }
   if (width > 0)
     for (int i = fresh ? 0 : nmax_slots; i < nmax; i++) slot[i][0] = 0.0;
   for (int i = nmax_slots; i < nmax; i++)
@@ -498,6 +526,9 @@ void FixServoBCBonds::unpack_restart(int nlocal, int nth)
   for (long s = 0; s < count && rd.st == SBC_OK; s++) {
     slot[nlocal][1 + s * (1 + per)] = (double) sbc_saved_int(&rd, "partner ID", 1, MAXTAGINT);
     for (int q = 0; q < per; q++) slot[nlocal][2 + s * (1 + per) + q] = sbc_saved_real(&rd, "bond state value");
+    if (dim == 2 && rd.st == SBC_OK && (slot[nlocal][2 + s * (1 + per)] != 0.0 && slot[nlocal][2 + s * (1 + per)] != 1.0))
+      fail_here(who + ": pair " + std::to_string(s) + "'s intact flag " +
+                std::to_string(slot[nlocal][2 + s * (1 + per)]) + " (expected 0 or 1)");
   }
   if (rd.st != SBC_OK) fail_here(err.message);
   if (!(fracture >= 0.0)) fail_here(who + ": the fracture energy " + std::to_string(fracture) + " J < 0");

@@ -83,6 +83,21 @@ static void one_bond(void)
  * engine integrating it. The largest centre difference after STEPS steps, m. */
 #define SIDE 6
 #define NDISC (SIDE * SIDE)
+
+/* one step of the embedded engine's update with the loads [3 NDISC]: its
+ * masses (rho pi R^2) and its multiplications by their inverses */
+static void advance(double *xy, double *v, double *w, const double *load, double rho, double dt)
+{
+    const double M = rho * 3.14159265358979323846 * R * R, inv_m = 1.0 / M, inv_I = 1.0 / (0.5 * M * R * R);
+    int k;
+    for (k = 0; k < NDISC; ++k) {
+        v[2 * k] += dt * load[3 * k] * inv_m;
+        v[2 * k + 1] += dt * load[3 * k + 1] * inv_m;
+        w[k] += dt * load[3 * k + 2] * inv_I;
+        xy[2 * k] += dt * v[2 * k];
+        xy[2 * k + 1] += dt * v[2 * k + 1];
+    }
+}
 static double against_engine(int steps, int restart_at)
 {
     double x0[2 * NDISC], r[NDISC], xy[2 * NDISC], v[2 * NDISC] = {0}, w[NDISC] = {0}, load[3 * NDISC];
@@ -94,8 +109,12 @@ static double against_engine(int steps, int restart_at)
     sbc_error err;
     char msg[256];
     double worst = 0.0;
+    /* the distributed path of fix servo_bc/bonds cohesive: the same packing
+     * pair by pair (sbc_cohesive_pairs_step), each pair's state kept here */
+    static double state[NDISC][NDISC][SBC_COHESIVE_PAIR_STATE];
+    double xp[2 * NDISC], vp[2 * NDISC] = {0}, wp[NDISC] = {0}, lp[3 * NDISC], sums_p[4], sums_h[4];
     unsigned seed = 12345u;
-    int k, s;
+    int k, s, i, j, intact_p = 0;
     for (k = 0; k < NDISC; ++k) {
         seed = seed * 1103515245u + 12345u;
         x0[2 * k] = 2 * R * (k % SIDE) + 2e-3 * R * ((double)(seed >> 8 & 0xffff) / 65535.0 - 0.5);
@@ -121,6 +140,11 @@ static double against_engine(int steps, int restart_at)
     }
     CHECK(sbc_cohesive_host_bond_count(h) == sbc_engine_get_view(e).bond_count);
     memcpy(xy, x0, sizeof xy);
+    memcpy(xp, x0, sizeof xp);
+    for (i = 0; i < NDISC; ++i)
+        for (j = i + 1; j < NDISC; ++j)
+            intact_p += sbc_cohesive_pair_start(&x0[2 * i], r[i], &x0[2 * j], r[j], R, state[i][j]);
+    CHECK(intact_p == sbc_engine_get_view(e).bond_count);
     for (s = 0; s < steps; ++s) {
         if (s == restart_at) { /* a restart: a new host at the present centres, given the saved state */
             size_t size = sbc_cohesive_host_state_size(h);
@@ -144,15 +168,32 @@ static double against_engine(int steps, int restart_at)
             CHECK(0);
             break;
         }
-        for (k = 0; k < NDISC; ++k) {
-            /* the engine's masses and its multiplications by their inverses */
-            const double M = rho * 3.14159265358979323846 * R * R, inv_m = 1.0 / M, inv_I = 1.0 / (0.5 * M * R * R);
-            v[2 * k] += dt * load[3 * k] * inv_m;
-            v[2 * k + 1] += dt * load[3 * k + 1] * inv_m;
-            w[k] += dt * load[3 * k + 2] * inv_I;
-            xy[2 * k] += dt * v[2 * k];
-            xy[2 * k + 1] += dt * v[2 * k + 1];
+        /* pair by pair, each disc's loads summed in the engine's order (pairs (i, j > i) by j) */
+        memset(lp, 0, sizeof lp);
+        sums_p[0] = sums_p[1] = sums_p[2] = sums_p[3] = 0.0;
+        intact_p = 0;
+        for (i = 0; i < NDISC; ++i) {
+            double acc[3] = {0.0, 0.0, 0.0}, ld[6];
+            for (j = i + 1; j < NDISC; ++j) {
+                const int ends[2] = {i, j};
+                intact_p += (int)sbc_cohesive_pairs_step(&law, 1, ends, xp, vp, 2, wp, 1, r, dt, state[i][j], ld,
+                                                         sums_p);
+                if (state[i][j][0] == 0.0 && state[i][j][1] == 0.0 && state[i][j][2] == 0.0 && ld[0] == 0.0 &&
+                    ld[1] == 0.0 && ld[2] == 0.0)
+                    continue; /* no load: the engine's loop skips the pair */
+                acc[0] += ld[0];
+                acc[1] += ld[1];
+                acc[2] += ld[2];
+                lp[3 * j] += ld[3];
+                lp[3 * j + 1] += ld[4];
+                lp[3 * j + 2] += ld[5];
+            }
+            lp[3 * i] += acc[0];
+            lp[3 * i + 1] += acc[1];
+            lp[3 * i + 2] += acc[2];
         }
+        advance(xp, vp, wp, lp, rho, dt);
+        advance(xy, v, w, load, rho, dt);
     }
     {
         sbc_engine_view view = sbc_engine_get_view(e);
@@ -166,10 +207,47 @@ static double against_engine(int steps, int restart_at)
         /* and some bonds broke (measured: 25 of 29 intact after 4000 steps) */
         CHECK(view.bond_count < view.bonds_initial && view.bond_count > 0);
         CHECK(sbc_cohesive_host_bond_count(h) == view.bond_count);
+        /* the pair path: the same pairs in the same order, so the same bits */
+        CHECK(intact_p == view.bond_count);
+        for (k = 0; k < 2 * NDISC; ++k)
+            worst = fmax(worst, fabs(view.x[k] - xp[k]));
+        sbc_cohesive_host_sums(h, sums_h);
+        for (k = 0; k < 4; ++k)
+            CHECK_ABS(sums_p[k], sums_h[k], 1e-12 * fabs(sums_h[k]));
     }
     sbc_engine_free(e);
     sbc_cohesive_host_free(h);
     return worst;
+}
+
+/* the candidate pairs of the distributed path against every pair by hand */
+static void candidates(void)
+{
+    double x[2 * NDISC], r[NDISC];
+    const double reach = 0.3 * R;
+    int *pairs = NULL, k, i, j, by_hand = 0, ordered = 1;
+    char msg[256];
+    long count;
+    for (k = 0; k < NDISC; ++k) { /* a lattice whose rows are 2.2 R apart and columns 2 R: some pairs within reach */
+        x[2 * k] = 2.0 * R * (k % SIDE) + 0.05 * R * (k % 3);
+        x[2 * k + 1] = 2.2 * R * (k / SIDE);
+        r[k] = R * (1.0 + 0.01 * (k % 5));
+    }
+    for (i = 0; i < NDISC; ++i)
+        for (j = i + 1; j < NDISC; ++j) {
+            const double dx = x[2 * j] - x[2 * i], dy = x[2 * j + 1] - x[2 * i + 1], cut = r[i] + r[j] + reach;
+            by_hand += dx * dx + dy * dy < cut * cut;
+        }
+    count = sbc_cohesive_host_pairs(NDISC, x, r, reach, &pairs, msg, sizeof msg);
+    CHECK(count == by_hand && by_hand > 0);
+    for (k = 0; k < count && pairs; ++k)
+        ordered &= pairs[2 * k] < pairs[2 * k + 1];
+    CHECK(ordered);
+    sbc_cohesive_host_pairs_free(pairs);
+    printf("cohesive-host: %ld candidate pairs within R_a + R_b + 0.3 R of %d discs (by hand %d)\n", count, NDISC,
+           by_hand);
+    r[3] = -R;
+    CHECK(sbc_cohesive_host_pairs(NDISC, x, r, reach, &pairs, msg, sizeof msg) == -1 && strstr(msg, "disc 3"));
 }
 
 static void refusals(void)
@@ -206,8 +284,9 @@ void test_cohesive_host(void)
     /* the same update in the same order: the two paths agree to round-off */
     d = against_engine(4000, -1);
     CHECK_ABS(d, 0.0, 1e-12 * R);
-    printf("cohesive-host: host path against the embedded engine after 4000 steps: %.3g m\n", d);
+    printf("cohesive-host: host path and pair path against the embedded engine after 4000 steps: %.3g m\n", d);
     d = against_engine(4000, 1500);
     CHECK_ABS(d, 0.0, 1e-12 * R);
+    candidates();
     refusals();
 }

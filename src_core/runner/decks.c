@@ -129,6 +129,14 @@ static sbc_status write_embedded(const script *s, const case_material *c, const 
     return close_file(fp, path, err);
 }
 
+/* The ghost cutoff of a cohesive case (m): a contact within the skin, an
+ * intact bond up to eq. 8's stretch fn / kn, with 0.1 % to spare. */
+static double cohesive_reach(const script *s, double skin, double rmax)
+{
+    const double stretch = s->bond_law.fn_u / s->bond_law.kn;
+    return 1.001 * (2.0 * rmax + (stretch > skin ? stretch : skin));
+}
+
 static sbc_status write_lammps(const script *s, const case_material *c, const char *dir, double skin, double rmax,
                                sbc_error *err)
 {
@@ -146,9 +154,12 @@ static sbc_status write_lammps(const script *s, const case_material *c, const ch
     else
         fprintf(fp, "pair_style      gran/hooke/history %s %s 0 0 %s 0\npair_coeff      * *\n", num(s->law.kn).s,
                 num(s->law.ks).s, num(s->law.mu).s);
-    fprintf(fp, "comm_modify     vel yes\nneighbor        %s bin\nneigh_modify    delay 0 every 1 check yes\n"
-                "timestep        %s\n",
-            num(skin).s, num(c->dt).s);
+    if (s->cohesive) /* the pairs of a rank's discs with ghosts: fix servo_bc/bonds cohesive checks the reach */
+        fprintf(fp, "comm_modify     vel yes cutoff %s\n", num(cohesive_reach(s, skin, rmax)).s);
+    else
+        fprintf(fp, "comm_modify     vel yes\n");
+    fprintf(fp, "neighbor        %s bin\nneigh_modify    delay 0 every 1 check yes\ntimestep        %s\n", num(skin).s,
+            num(c->dt).s);
     if (s->cohesive)
         fprintf(fp, "fix             bonds all servo_bc/bonds cohesive %s\n", cohesive_words(&s->bond_law).s);
     fprintf(fp, "fix             servo all servo_bc %s%s file lammps.csv\n", s->servo_words, frame_words(s, "lammps"));
@@ -162,7 +173,7 @@ static sbc_status write_lammps(const script *s, const case_material *c, const ch
 }
 
 static sbc_status write_liggghts(const script *s, const case_material *c, const char *dir, double skin,
-                                 sbc_error *err)
+                                 double rmax, sbc_error *err)
 {
     static const char *property[5] = {"kn", "kt", "gamman_abs", "gammat_abs", "coefficientFriction"};
     const double value[5] = {s->law.kn, s->law.ks, 0.0, 0.0, s->law.mu};
@@ -178,8 +189,12 @@ static sbc_status write_liggghts(const script *s, const case_material *c, const 
             c->dim == 3 ? "m" : "p");
     if (s->cohesive) /* no pair style, so no neighbour bins to sort atoms by */
         fprintf(fp, "atom_modify     sort 0 0.0\n");
-    fprintf(fp, "newton          off\ncommunicate     single vel yes\nread_data       packing.liggghts.data\n"
-                "group           frame_atoms type 2\n");
+    fprintf(fp, "newton          off\n");
+    if (s->cohesive)
+        fprintf(fp, "communicate     single cutoff %s vel yes\n", num(cohesive_reach(s, skin, rmax)).s);
+    else
+        fprintf(fp, "communicate     single vel yes\n");
+    fprintf(fp, "read_data       packing.liggghts.data\ngroup           frame_atoms type 2\n");
     if (s->cohesive) {
         fprintf(fp, "pair_style      none    # the core owns every contact\nneighbor        %s bin\n"
                     "neigh_modify    delay 0\ntimestep        %s\n"
@@ -278,7 +293,7 @@ sbc_status sbc_runner_write_decks(sbc_script_case *s, const char *dir, sbc_error
     /* neighbour skin R_min / 4, as the hand-written decks */
     if (st == SBC_OK) st = write_embedded(s, &c, dir, err);
     if (st == SBC_OK) st = write_lammps(s, &c, dir, 0.25 * rmin, rmax, err);
-    if (st == SBC_OK) st = write_liggghts(s, &c, dir, 0.25 * rmin, err);
+    if (st == SBC_OK) st = write_liggghts(s, &c, dir, 0.25 * rmin, rmax, err);
     if (st == SBC_OK) st = write_yade(s, &c, dir, err);
     return st;
 }

@@ -227,6 +227,83 @@ if [ "${2:-x}" = "$n1" ] && cmp -s "$tmp/breaks1.csv" "$tmp/breaks.csv" &&
 else
   bad "the flight split by a restart (2 -> 4 ranks): ${1:-none} against $z1 m, intact ${2:-none} against $n1, $(cmp "$tmp/breaks1.csv" "$tmp/breaks.csv" 2>&1 | head -1): $(grep -m1 ERROR "$tmp/flight.log")"
 fi
+# cohesive contacts that travel with their discs: a 2D bar of 11 x 2 discs
+# (eqs. 6-8, every neighbour bonded) flies 2.4 m along x through the rank
+# boundaries (LAMMPS balances the ranks for its second half), stretched at its
+# ends and kicked at its middle so that some of its 31 bonds break (25 intact in
+# LAMMPS, 27 in LIGGGHTS: each host is compared with itself): on 1, 2 and 4
+# ranks the middle's deflection and the intact bonds alike (each disc sums its
+# pairs' loads in its partners' ID order, whichever rank computes them); then
+# split by a restart written on 2 ranks and read on 4
+{
+  printf 'units si\ndimension 2\nboundary f f p\natom_style sphere\natom_modify map array%s\n' \
+    "$([ "$host" = liggghts ] && echo ' sort 0 0.0')"
+  printf 'region box block -0.5 6.5 -1 1 -0.5 0.5\ncreate_box 1 box\n'
+  for j in 0 1; do for i in 0 1 2 3 4 5 6 7 8 9 10; do
+    echo "create_atoms 1 single $(awk -v i=$i 'BEGIN { print 0.2 * i }') 0.$((2 * j)) 0 units box"
+  done; done
+  printf 'set type 1 diameter 0.2\nset type 1 density 925\n%s\nneighbor 0.02 bin\n' \
+    "$([ "$host" = liggghts ] && echo 'communicate single cutoff 0.5 vel yes' || echo 'comm_modify cutoff 0.5 vel yes')"
+  printf 'fix bonds all servo_bc/bonds cohesive kn 1e7 ks 4e6 kr 2e3 fn 2e3 fs 1e3 mr 50 mu 0.5\n'
+  printf 'fix integrate all nve/sphere%s\nfix plane all enforce2d\n' "$([ "$host" = lammps ] && echo ' disc')"
+  printf 'region left block INF 0.05 INF INF INF INF units box\nregion right block 1.95 INF INF INF INF INF units box\n'
+  printf 'region middle block 0.95 1.05 INF INF INF INF units box\n'
+  printf 'group left region left\ngroup right region right\ngroup middle region middle\n'
+  printf 'velocity all set 2 0 0 units box\nvelocity left set 1.95 0 0 units box\n'
+  printf 'velocity right set 2.05 0 0 units box\nvelocity middle set 2 0.5 0 units box\n'
+  printf 'timestep 1e-4\nrun 6000\n%s\nrun 6000\n' \
+    "$([ "$host" = liggghts ] && echo '# balance: LIGGGHTS 3.8 has no balance command' || echo 'balance 1.0 shift x 10 1.0')"
+  printf 'variable ym equal xcm(middle,y)-0.5*(xcm(left,y)+xcm(right,y))\nvariable xm equal xcm(all,x)\n'
+  printf 'variable intact equal f_bonds[1]\nprint "flight ${ym} ${intact} ${xm}" file cflight.txt\n'
+} > "$tmp/cflight.in"
+for np in 1 2 4; do
+  (cd "$tmp" && rm -f cflight.txt && if [ $np = 1 ]; then timeout 300 "$bin" -in cflight.in -log none -screen none
+   else timeout 300 mpirun --allow-run-as-root --oversubscribe -np $np "$bin" -in cflight.in -log none -screen none; fi) \
+    > "$tmp/cflight.log" 2>&1
+  set -- $(awk '$1 == "flight" { print $2, $3, $4 }' "$tmp/cflight.txt" 2>/dev/null)
+  if [ $np = 1 ]; then
+    y1=${1:-none} c1=${2:-none}
+    if [ -n "${3:-}" ] && awk -v x="$3" -v n="$c1" 'BEGIN { exit !(x > 3.3 && n > 0 && n < 31) }'; then
+      ok "cohesive bar in flight on 1 rank: moved to x = $3 m, $c1 of 31 bonds intact, deflection $1 m"
+    else
+      bad "cohesive bar in flight on 1 rank: x ${3:-none} m, intact ${c1}: $(grep -m1 ERROR "$tmp/cflight.log")"
+    fi
+  elif [ "${2:-x}" = "$c1" ] && awk -v a="$y1" -v b="${1:-none}" 'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a
+         exit !(a == a + 0 && b == b + 0 && s > 1e-3 && d <= 1e-10 * s) }'; then
+    ok "cohesive bar in flight on $np ranks: deflection $1 m (1 rank $y1), $2 intact"
+  else
+    bad "cohesive bar in flight on $np ranks: deflection ${1:-none} against $y1 m, intact ${2:-none} against $c1: $(grep -m1 ERROR "$tmp/cflight.log")"
+  fi
+done
+sed '/^balance\|^# balance/,$d' "$tmp/cflight.in" > "$tmp/cflight1.in"
+echo 'write_restart cflight.restart' >> "$tmp/cflight1.in"
+{
+  printf 'read_restart cflight.restart\n'
+  [ "$host" = liggghts ] && printf 'atom_modify sort 0 0.0\n'
+  sed -n '/^comm_modify\|^communicate\|^neighbor/p; /^fix /p' "$tmp/cflight.in"
+  printf 'timestep 1e-4\n'
+  sed -n '/^balance\|^# balance/,$p' "$tmp/cflight.in"
+} > "$tmp/cflight2.in"
+(cd "$tmp" && rm -f cflight.txt &&
+  timeout 300 mpirun --allow-run-as-root --oversubscribe -np 2 "$bin" -in cflight1.in -log none -screen none &&
+  timeout 300 mpirun --allow-run-as-root --oversubscribe -np 4 "$bin" -in cflight2.in -log none -screen none) \
+  > "$tmp/cflight.log" 2>&1
+set -- $(awk '$1 == "flight" { print $2, $3 }' "$tmp/cflight.txt" 2>/dev/null)
+if [ "${2:-x}" = "$c1" ] && awk -v a="$y1" -v b="${1:-none}" 'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a
+     exit !(a == a + 0 && b == b + 0 && s > 1e-3 && d <= 1e-10 * s) }'; then
+  ok "the cohesive flight split by a restart, written on 2 ranks, read on 4: deflection $1 m, $2 intact"
+else
+  bad "the cohesive flight split by a restart (2 -> 4 ranks): ${1:-none} against $y1 m, intact ${2:-none} against $c1: $(grep -m1 ERROR "$tmp/cflight.log")"
+fi
+# a ghost cutoff shorter than a cohesive pair's reach, on 2 ranks: refused naming both
+sed 's/cutoff 0.5 vel yes/cutoff 0.1 vel yes/' "$tmp/cflight.in" > "$tmp/ccut.in"
+(cd "$tmp" && timeout 120 mpirun --allow-run-as-root --oversubscribe -np 2 "$bin" -in ccut.in -log none) > "$tmp/ccut.log" 2>&1
+status=$?
+if [ $status -ne 0 ] && grep -qF "the ghost cutoff 0.100000 m is shorter than a pair's reach 0.220000 m" "$tmp/ccut.log"; then
+  ok "cohesive on 2 ranks, refuses a ghost cutoff shorter than a pair's reach (exit $status)"
+else
+  bad "cohesive on 2 ranks, a ghost cutoff of 0.1 m (exit $status): $(grep -m1 -E 'ERROR|signal' "$tmp/ccut.log")"
+fi
 # the ghost cutoff against the bonds, on 2 ranks: shorter than a bond at
 # creation is refused naming both lengths; a bond pulled (setforce, velocity
 # set) past the cutoff stops the run naming its atoms
@@ -451,9 +528,24 @@ if "$servo_bc" --decks "$tmp/coh" "$here/../../inputs/compare/cohesive_layer_sho
     fi
   fi
   # the cohesive block: the law defined again with another kn, corrupted counts and values
-  coh_refused() {  # LABEL OFFSET VALUE EXPECTED [SED]
+  # a disc's pairs in the per-atom data: size 4 + 4 count, 0, 0, count, then per pair its partner's ID, the
+  # intact flag, fs, m; the first disc with a bond
+  corrupt_pair() {
+    perl -e '
+      my ($file, $k, $value) = @ARGV;
+      open(my $f, "+<", $file) or exit 1; binmode $f; local $/; my $d = <$f>;
+      for (my $at = 0; $at + 64 <= length($d); $at++) {
+        my ($size, $w, $e, $count, $id, $intact) = unpack("d6", substr($d, $at, 48));
+        next unless $count >= 1 && $count <= 12 && $count == int($count) && $size == 4 + 4 * $count && $w == 0 &&
+          $e == 0 && $id >= 1 && $id == int($id) && $intact == 1;
+        substr($d, $at + 8 * $k, 8) = pack("d", $value eq "nan" ? 9**9**9 / 9**9**9 : $value);
+        seek($f, 0, 0); print $f $d; close $f; exit 0;
+      }
+      exit 1;' "$1" "$2" "$3"
+  }
+  coh_refused() {  # LABEL OFFSET VALUE EXPECTED [SED [CORRUPTER]]
     cp "$tmp/coh/half.restart" "$tmp/coh/bad.restart"
-    [ "$2" = - ] || corrupt_bonds "$tmp/coh/bad.restart" "$2" "$3" || { bad "cohesive restart: no block"; return; }
+    [ "$2" = - ] || ${6:-corrupt_bonds} "$tmp/coh/bad.restart" "$2" "$3" || { bad "cohesive restart: no block"; return; }
     sed "s/read_restart half.restart/read_restart bad.restart/; ${5:-}" "$tmp/coh/part2.in" > "$tmp/coh/bad.in"
     (cd "$tmp/coh" && timeout 60 "$bin" -in bad.in -log none > bad.log 2>&1)
     local status=$?
@@ -465,9 +557,12 @@ if "$servo_bc" --decks "$tmp/coh" "$here/../../inputs/compare/cohesive_layer_sho
   }
   coh_refused "another law after read_restart" - - "the file's cohesive law differs: kn" \
     's/servo_bc\/bonds cohesive kn \([0-9.e+]*\)/servo_bc\/bonds cohesive kn 2\1/'
-  coh_refused "1e9 particles" 10 1e9 "'particle count'"
-  coh_refused "an atom ID 0" 11 0 "'atom ID'"
-  coh_refused "a NaN pair state" last nan "'pair state value'"
+  coh_refused "a smallest radius 0" 10 0 "'smallest radius'"
+  coh_refused "1e4 slots per atom" 11 1e4 "'slots per atom'"
+  coh_refused "a disc count of 1" 13 1 "'disc count'"
+  coh_refused "the gathered layout of 0.2.0 (model 3)" 2 3 "kept every contact on every rank"
+  coh_refused "an intact flag 0.5" 5 0.5 "intact flag 0.5" "" corrupt_pair
+  coh_refused "a NaN tangential spring" 6 nan "'bond state value'" "" corrupt_pair
   res=$(paste -d, "$tmp/coh/$host.csv" "$tmp/coh/split.csv" 2>/dev/null | awk -F, -f "$here/../sigma_diff.awk")
   set -- $res
   if [ "${1:-0}" = 6 ] && awk -v m="${2:-100}" 'BEGIN { exit !(m <= 1e-7) }'; then

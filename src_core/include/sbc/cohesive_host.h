@@ -19,6 +19,8 @@
 
 #include <stddef.h>
 
+#include "sbc/contact.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -62,6 +64,41 @@ void sbc_cohesive_host_sums(const sbc_cohesive_host *h, double *sums);
 size_t sbc_cohesive_host_state_size(const sbc_cohesive_host *h);
 void sbc_cohesive_host_state_get(const sbc_cohesive_host *h, double *state);
 int sbc_cohesive_host_state_set(sbc_cohesive_host *h, const double *state, size_t size);
+
+/* The distributed path (fix servo_bc/bonds cohesive on MPI ranks): the host
+ * keeps each pair's state with its atoms and calls these per pair, end A the
+ * disc of smaller ID (the gathered path's order, so both give the same
+ * pairs). A pair's state is SBC_COHESIVE_PAIR_STATE doubles: 1 while its bond
+ * is intact (else 0), the tangential spring fs (N), the bond moment m on end
+ * A (N m); all 0 for a pair the host need not keep. */
+#define SBC_COHESIVE_PAIR_STATE 3
+
+/* The candidate pairs among n discs (centres xy [2n] m, radii r [n] m):
+ * those closer than ra + rb + reach (m), by the core's grid, as index pairs
+ * (a < b) in *pairs (2 ints each; free with sbc_cohesive_host_pairs_free).
+ * Returns the count, or -1 with the message in msg (cap bytes). */
+long sbc_cohesive_host_pairs(int n, const double *xy, const double *r, double reach, int **pairs, char *msg,
+                             size_t cap);
+void sbc_cohesive_host_pairs_free(int *pairs);
+
+/* A pair at the first run: writes its state, bonded when the discs touch
+ * (gap |xb - xa| - ra - rb below 1e-6 rmin, rmin the smallest radius of the
+ * discs, m; the gathered path's rule); returns 1 when bonded. */
+int sbc_cohesive_pair_start(const double xa[2], double ra, const double xb[2], double rb, double rmin, double *state);
+
+/* One host step dt (s) of count pairs under law (eqs. 6-8), the rank's
+ * loop in one call: pair k joins the discs ends [2k] (end A) and ends
+ * [2k + 1]; disc i's centre (m) is at x [stride i], its velocity (m/s) at
+ * v [stride i], its spin about e3 (rad/s) at w [wstride i] (v and w NULL:
+ * at rest, as at a run's set-up), its radius (m) r [i]. Advances each
+ * pair's state [3 count] and writes its loads [6 count]: on end A (fx, fy
+ * N, moment N m), then on end B; a pair that carries no load (apart and
+ * unbonded) gets its state and loads all 0. sums [4] (may be NULL) gains the
+ * pairs' share of sbc_cohesive_host_sums. Returns the pairs' intact bonds
+ * after the step. */
+long sbc_cohesive_pairs_step(const sbc_cohesive *law, long count, const int *ends, const double *x, const double *v,
+                             int stride, const double *w, int wstride, const double *r, double dt, double *state,
+                             double *loads, double sums[4]);
 
 #ifdef __cplusplus
 }

@@ -6,6 +6,7 @@
 #include "sbc/seal.h"
 
 #include "neighbor.h"
+#include "pair_contact.h"
 
 #include <float.h>
 #include <math.h>
@@ -176,7 +177,7 @@ sbc_engine *sbc_engine_create(const sbc_engine_def *d, sbc_error *err)
         return NULL;
     }
     if (e->bonded) /* "two particles in contact at the start are bonded" (Sect. 2.2.2) */
-        e->bond_count = e->bonds_initial = sbc_pairs_bond_touching(&e->pairs, e->x, e->r, 1e-6 * e->rmin);
+        e->bond_count = e->bonds_initial = sbc_pairs_bond_touching(&e->pairs, e->x, e->r, SBC_BOND_TOUCH * e->rmin);
     return e;
 }
 
@@ -231,103 +232,54 @@ static sbc_status seal_step(sbc_engine *e, sbc_error *err)
     return st;
 }
 
-/* Velocities below 1e-120 (m/s, rad/s) and spring forces below 1e-120 N
- * carry no physics, and their squares must stay above the subnormal range.
- * In a packing held in exact equilibrium, round-off seeds decay geometrically
- * towards that range, where x86 arithmetic is about 2x slower (measured: 48
- * against 25 ns per particle-step at 1e5 particles). Flushing them here keeps
- * the library free of global floating-point state (no FTZ/DAZ flags). */
-static inline double flush(double a) { return fabs(a) < 1e-120 ? 0.0 : a; }
-
 /* Pair loop: eq. 6 forces and moments (eqs. 7-8 for intact bonds), eq. 12
- * energy, eq. 39 overlap sum. HISTORY and BONDS are compile-time constants
- * in each instance, so that frictionless scenes run without the tangential
- * spring and unbonded scenes without the bond test. */
+ * energy, eq. 39 overlap sum, one pair at a time by pair_contact.h. HISTORY
+ * and BONDS are compile-time constants in each instance, so that
+ * frictionless scenes run without the tangential spring and unbonded scenes
+ * without the bond test. */
 static inline void pair_loop(sbc_engine *e, const int history, const int bonds)
 {
-    const sbc_frictional law = e->law;
-    const double dt = e->dt, kn = law.kn, inv_ks = law.ks > 0.0 ? 1.0 / law.ks : 0.0;
+    sbc_pair_laws L;
     const double *restrict x = e->x, *restrict v = e->v, *restrict om = e->omega, *restrict r = e->r;
     const int *restrict start = e->pairs.start, *restrict pj = e->pairs.j;
     double *restrict f = e->f, *restrict tq = e->tq, *restrict fsv = e->pairs.fs, *restrict mv = e->pairs.m;
     unsigned char *restrict bond = e->pairs.bond;
-    double ep = 0.0, ov = 0.0, fc = 0.0;
-    long nc = 0;
-    int broken = 0;
+    sbc_pair_sums s = {0.0, 0.0, 0.0, 0, 0};
     int i, k, n = e->n;
+    L.law = e->law;
+    L.inv_ks = e->law.ks > 0.0 ? 1.0 / e->law.ks : 0.0;
+    L.bond = e->bond_law;
     for (i = 0; i < n; ++i) {
         /* pairs (i, j > i) are contiguous: particle i's sums stay in registers */
         const double xi = x[2 * i], yi = x[2 * i + 1], ri = r[i];
-        const double vxi = v[2 * i], vyi = v[2 * i + 1], wri = ri * om[i];
+        const double vxi = v[2 * i], vyi = v[2 * i + 1], wi = om[i], wri = ri * wi;
         double fxi = 0.0, fyi = 0.0, tqi = 0.0;
         const int end = start[i + 1];
         for (k = start[i]; k < end; ++k) {
             const int j = pj[k];
-            const double dx = x[2 * j] - xi, dy = x[2 * j + 1] - yi;
-            const double rs = ri + r[j], d2 = dx * dx + dy * dy;
-            double d, inv_d, nx, ny, dn, fn, fs = 0.0, fx, fy, dus;
-            const int bonded = bonds && bond[k];
-            if (!bonded && d2 >= rs * rs) {
-                if (history)
-                    fsv[k] = 0.0; /* contact lost: history cleared */
+            double out[4];
+            if (!sbc_pair_contact(&L, history, bonds, x[2 * j] - xi, x[2 * j + 1] - yi, ri, r[j], vxi, vyi, wi, wri,
+                                  v[2 * j], v[2 * j + 1], om[j], e->dt, history ? &fsv[k] : NULL,
+                                  bonds ? &mv[k] : NULL, bonds ? &bond[k] : NULL, &s, out))
                 continue;
+            if (history) {
+                tqi += out[2];
+                tq[j] += out[3];
             }
-            d = sqrt(d2);
-            inv_d = 1.0 / d;
-            nx = dx * inv_d;
-            ny = dy * inv_d;
-            dn = rs - d;
-            fn = kn * dn;
-            /* t = (-ny, nx); dus = ((v_j - v_i).t - (R_i w_i + R_j w_j)) dt (bonds imply history) */
-            dus = history ? ((v[2 * j + 1] - vyi) * nx - (v[2 * j] - vxi) * ny - (wri + r[j] * om[j])) * dt : 0.0;
-            if (bonded) {
-                /* eqs. 7-8, dtheta = (w_j - w_i) dt; moment +m on i, -m on j */
-                sbc_bond b;
-                int broke;
-                b.fs = fsv[k];
-                b.m = mv[k];
-                b.broken = 0;
-                fn = sbc_cohesive_force(&e->bond_law, dn, dus, (om[j] - om[i]) * dt, &b, &broke);
-                fs = flush(b.fs);
-                fsv[k] = fs;
-                mv[k] = b.m;
-                if (broke) {
-                    bond[k] = 0;
-                    ++broken;
-                }
-                tqi += ri * fs + b.m;
-                tq[j] += r[j] * fs - b.m;
-                ep += sbc_cohesive_energy(&e->bond_law, dn, &b) - 0.5 * fn * dn; /* normal part added below */
-            } else if (history) { /* eq. 6 */
-                fs = fsv[k];
-                sbc_frictional_force(&law, dn, dus, &fs, NULL);
-                fs = flush(fs);
-                fsv[k] = fs;
-                tqi += ri * fs;
-                tq[j] += r[j] * fs;
-                ep += 0.5 * fs * fs * inv_ks; /* eq. 12, tangential part (sbc_frictional_energy) */
-            }
-            /* force on i: -fn n + fs t */
-            fx = -fn * nx - fs * ny;
-            fy = -fn * ny + fs * nx;
-            fxi += fx;
-            fyi += fy;
-            f[2 * j] -= fx;
-            f[2 * j + 1] -= fy;
-            ep += 0.5 * fn * dn; /* eq. 12, normal part */
-            fc += sqrt(fn * fn + fs * fs);
-            ov += dn / rs;       /* eq. 39 sums dn / Rbar_c = 2 dn / rs: the 2 is applied below */
-            ++nc;
+            fxi += out[0];
+            fyi += out[1];
+            f[2 * j] -= out[0];
+            f[2 * j + 1] -= out[1];
         }
         f[2 * i] += fxi;
         f[2 * i + 1] += fyi;
         tq[i] += tqi;
     }
-    e->ep = ep;
-    e->contact_force_sum = fc;
-    e->overlap_sum = 2.0 * ov;
-    e->contact_count = nc;
-    e->bond_count -= broken;
+    e->ep = s.ep;
+    e->contact_force_sum = s.fc;
+    e->overlap_sum = 2.0 * s.ov; /* eq. 39 sums dn / Rbar_c = 2 dn / (R_i + R_j) */
+    e->contact_count = s.nc;
+    e->bond_count -= s.broken;
 }
 
 /* FIRE's sums (fire_damping.h) of the interior's contact forces and the
@@ -380,9 +332,9 @@ static inline void integrate_interior(sbc_engine *e, const int damped, const sbc
             fy = sbc_damp_local(fy, vy, a);
             m = sbc_damp_local(m, w, b);
         }
-        vx = flush(vx + dt * fx * inv_m[k]);
-        vy = flush(vy + dt * fy * inv_m[k]);
-        w = flush(w + dt * m * inv_I[k]);
+        vx = sbc_flush(vx + dt * fx * inv_m[k]);
+        vy = sbc_flush(vy + dt * fy * inv_m[k]);
+        w = sbc_flush(w + dt * m * inv_I[k]);
         v[2 * k] = vx;
         v[2 * k + 1] = vy;
         om[k] = w;
@@ -515,7 +467,7 @@ void sbc_engine_move_frame(sbc_engine *e, const sbc_commands *cmd)
             if (cmd->free_rotation[q]) {
                 /* free rotation (T): integrated with the rotational damping of eq. 10 */
                 const double m = sbc_damp_local(e->tq[p], om[p], e->beta);
-                om[p] = flush(om[p] + dt * m * e->inv_I[p]);
+                om[p] = sbc_flush(om[p] + dt * m * e->inv_I[p]);
                 th[p] += dt * om[p];
             } else {
                 om[p] = (cmd->theta[q] - th[p]) / dt;

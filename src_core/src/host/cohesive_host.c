@@ -5,6 +5,8 @@
 #include "sbc/contact.h"
 #include "sbc/embedded/engine.h"
 #include "base/words.h"
+#include "engines/neighbor.h"
+#include "engines/pair_contact.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -151,4 +153,105 @@ int sbc_cohesive_host_state_set(sbc_cohesive_host *h, const double *state, size_
         return 1;
     }
     return 0;
+}
+
+long sbc_cohesive_host_pairs(int n, const double *xy, const double *r, double reach, int **pairs, char *msg,
+                             size_t cap)
+{
+    sbc_pairs p;
+    sbc_error err;
+    double rmax = 0.0;
+    int k;
+    long count;
+    *pairs = NULL;
+    if (n < 0 || (n > 0 && (!xy || !r)) || !(reach >= 0.0) || !isfinite(reach)) {
+        snprintf(msg, cap, "cohesive: %d discs without centres or radii, or a reach of %g m (expected >= 0)", n,
+                 reach);
+        return -1;
+    }
+    if (n < 2)
+        return 0;
+    for (k = 0; k < n; ++k) {
+        if (!(r[k] > 0.0) || !isfinite(r[k]) || !isfinite(xy[2 * k]) || !isfinite(xy[2 * k + 1])) {
+            snprintf(msg, cap, "cohesive: disc %d has radius %g m (expected > 0) or a non-finite centre (%g, %g)", k,
+                     r[k], xy[2 * k], xy[2 * k + 1]);
+            return -1;
+        }
+        if (r[k] > rmax)
+            rmax = r[k];
+    }
+    if (sbc_pairs_init(&p, n, reach, 0, 0, &err) != SBC_OK || sbc_pairs_build(&p, xy, r, rmax, &err) != SBC_OK) {
+        sbc_pairs_free(&p);
+        snprintf(msg, cap, "%s", err.message);
+        return -1;
+    }
+    count = p.count;
+    *pairs = malloc(sizeof(int) * 2 * (size_t)(count > 0 ? count : 1));
+    if (!*pairs) {
+        sbc_pairs_free(&p);
+        snprintf(msg, cap, "cohesive: out of memory for %ld pairs", count);
+        return -1;
+    }
+    for (k = 0; k < p.count; ++k) {
+        (*pairs)[2 * k] = p.i[k];
+        (*pairs)[2 * k + 1] = p.j[k];
+    }
+    sbc_pairs_free(&p);
+    return count;
+}
+
+void sbc_cohesive_host_pairs_free(int *pairs) { free(pairs); }
+
+int sbc_cohesive_pair_start(const double xa[2], double ra, const double xb[2], double rb, double rmin, double *state)
+{
+    const double dx = xb[0] - xa[0], dy = xb[1] - xa[1];
+    const double d = sqrt(dx * dx + dy * dy); /* as sbc_pairs_bond_touching */
+    state[0] = d - ra - rb < SBC_BOND_TOUCH * rmin;
+    state[1] = state[2] = 0.0;
+    return state[0] != 0.0;
+}
+
+long sbc_cohesive_pairs_step(const sbc_cohesive *law, long count, const int *ends, const double *x, const double *v,
+                             int stride, const double *w, int wstride, const double *r, double dt, double *state,
+                             double *loads, double sums[4])
+{
+    sbc_pair_laws L;
+    sbc_pair_sums s = {0.0, 0.0, 0.0, 0, 0};
+    long k, intact = 0;
+    int c;
+    L.bond = *law;
+    L.law.kn = law->kn; /* broken bonds and new contacts: eq. 6 with the bond's kn, ks, mu (engine.c) */
+    L.law.ks = law->ks;
+    L.law.mu = law->mu;
+    L.inv_ks = law->ks > 0.0 ? 1.0 / law->ks : 0.0;
+    for (k = 0; k < count; ++k) {
+        const size_t a = (size_t)ends[2 * k], b = (size_t)ends[2 * k + 1];
+        const double *xa = &x[stride * a], *xb = &x[stride * b], ra = r[a];
+        const double wa = w ? w[wstride * a] : 0.0, wb = w ? w[wstride * b] : 0.0;
+        double *st = &state[3 * k], *la = &loads[6 * k], *lb = la + 3, out[4];
+        unsigned char bond = st[0] != 0.0;
+        if (!sbc_pair_contact(&L, 1, 1, xb[0] - xa[0], xb[1] - xa[1], ra, r[b], v ? v[stride * a] : 0.0,
+                              v ? v[stride * a + 1] : 0.0, wa, ra * wa, v ? v[stride * b] : 0.0,
+                              v ? v[stride * b + 1] : 0.0, wb, dt, &st[1], &st[2], &bond, &s, out)) {
+            st[0] = st[2] = 0.0; /* apart and unbonded: a broken bond's moment is 0 already */
+            for (c = 0; c < 6; ++c)
+                la[c] = 0.0;
+            continue;
+        }
+        st[0] = bond;
+        intact += bond;
+        la[0] = out[0];
+        la[1] = out[1];
+        la[2] = out[2];
+        lb[0] = -out[0];
+        lb[1] = -out[1];
+        lb[2] = out[3];
+    }
+    if (sums) {
+        sums[0] += s.ep;
+        sums[1] += 2.0 * s.ov; /* eq. 39: dn / Rbar_c = 2 dn / (R_a + R_b) */
+        sums[2] += (double)s.nc;
+        sums[3] += s.fc;
+    }
+    return intact;
 }
