@@ -302,7 +302,8 @@ bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangent
 	  bash bench/lammps_overhead.sh $(B)/lmp_servo && \
 	  bash bench/liggghts_overhead.sh $(B)/liggghts_servo $(B)/servo-bc $(B)/lmp_servo $(B)/bench_engine && \
 	  bash bench/million.sh $(B)/lmp_servo $(B)/liggghts_servo $(B)/servo-bc && \
-	  bash bench/bonds_million.sh
+	  bash bench/bonds_million.sh && \
+	  bash bench/cohesive_million.sh
 
 clean:
 	rm -rf $(B) out
