@@ -470,12 +470,20 @@ void FixServoBC::remap_pass(const double *M, const double *origin, int sign)
 /* damping fire: the interior's sums of fire_damping.h on this rank */
 void FixServoBC::fire_pass(double *local)
 {
-  const int nlocal = atom->nlocal, *mask = atom->mask;
   for (int k = 0; k < SBC_FIRE_SUMS; k++) local[k] = 0.0;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & interior_bit)) continue;
-    sbc_fire_add(local, dim, atom->f[i], atom->v[i], &atom->torque[i][zrot], &atom->omega[i][zrot]);
-  }
+  if (atom->nlocal == 0) return;    // the per-atom arrays may not exist yet
+  if (dim == 3) fire_loop<3>(local);
+  else fire_loop<2>(local);
+}
+
+/* fire_pass with the dimension a compile-time constant (the loops unroll) */
+template <int DIM> void FixServoBC::fire_loop(double *local)
+{
+  constexpr int Z = DIM == 3 ? 0 : 2;    // rotations: z alone in 2d
+  const int nlocal = atom->nlocal, *mask = atom->mask, bit = interior_bit;
+  const double *v = &atom->v[0][0], *omega = &atom->omega[0][0], *f = &atom->f[0][0], *torque = &atom->torque[0][0];
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & bit) sbc_fire_add(local, DIM, &f[3 * i], &v[3 * i], &torque[3 * i + Z], &omega[3 * i + Z]);
 }
 
 /* local damping (eq. 10) on the interior's forces, or FIRE's mix (mix not
@@ -486,44 +494,55 @@ void FixServoBC::fire_pass(double *local)
    counted and whose mix is applied */
 void FixServoBC::interior_pass(bool again, const sbc_fire_mix *mix, double out[2])
 {
-  const int nlocal = atom->nlocal, *mask = atom->mask;
+  out[0] = out[1] = 0.0;
+  if (atom->nlocal == 0) return;    // the per-atom arrays may not exist yet
+  const bool local = settings.damping == SBC_DAMPING_LOCAL;
+  if (dim == 3) local ? interior_loop<3, true>(again, mix, out) : interior_loop<3, false>(again, mix, out);
+  else local ? interior_loop<2, true>(again, mix, out) : interior_loop<2, false>(again, mix, out);
+}
+
+/* interior_pass with the dimension and eq. 10 as compile-time constants: the
+   loops over components unroll, and without local damping (FIRE, none) eq.
+   10 is not evaluated (with alpha = 0 it leaves every force as it is) */
+template <int DIM, bool LOCAL> void FixServoBC::interior_loop(bool again, const sbc_fire_mix *mix, double out[2])
+{
+  constexpr int NROT = DIM == 3 ? 3 : 1, Z = DIM == 3 ? 0 : 2;    // rotations: z alone in 2d
+  const int nlocal = atom->nlocal, *mask = atom->mask, bit = interior_bit;
   // flat views of the contiguous per-atom arrays
   double *v = &atom->v[0][0], *omega = &atom->omega[0][0];
-  double *f = &atom->f[0][0], *torque = &atom->torque[0][0];
+  // per_atom: rows of 1 + NROT (a contiguous LAMMPS array), the rotations after the flag
+  double *f = &atom->f[0][0], *torque = &atom->torque[0][0], *turned = &per_atom[0][1];
   const double *radius = atom->radius, *rmass = atom->rmass, dt = update->dt;
-  const bool local = settings.damping == SBC_DAMPING_LOCAL;
-  const double alpha = local ? settings.alpha : 0.0, beta = local ? settings.beta : 0.0;
+  const double alpha = settings.alpha, beta = settings.beta;
   // I = inertia m r^2: the integrator's disc (2d) or sphere (3d, 2/5)
-  const double inertia = dim == 3 ? 0.4 : servo_bc_host::inertia, turn = again ? 0.0 : dt;
-  const int z = zrot;
+  const double inertia = DIM == 3 ? 0.4 : servo_bc_host::inertia, turn = again ? 0.0 : dt;
   double ek = 0.0, net = 0.0;
-  out[0] = out[1] = 0.0;
-  if (nlocal == 0) return;    // the per-atom arrays may not exist yet
   for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & interior_bit)) continue;
-    double *fi = &f[3 * i], *ti = &torque[3 * i + z], *vi = &v[3 * i], *wi = &omega[3 * i + z];
+    if (!(mask[i] & bit)) continue;
+    double *fi = &f[3 * i], *ti = &torque[3 * i + Z], *vi = &v[3 * i], *wi = &omega[3 * i + Z];
     const double m = rmass[i], I = inertia * m * radius[i] * radius[i], inv = dt / (m * I);
-    double v0[3], w0[3], vk[3], wk[3], f2 = 0.0;
+    double v0[DIM], w0[NROT], vk[DIM], wk[NROT], f2 = 0.0;
     int loaded = 0;
     if (mix) {
       const double push = sbc_fire_factor(mix->push, mix, dt / m), spin = sbc_fire_factor(mix->spin, mix, dt / I);
-      for (int c = 0; c < dim; c++) vi[c] = sbc_fire_velocity(mix, push, vi[c], fi[c]);
-      for (int c = 0; c < nrot; c++) wi[c] = sbc_fire_velocity(mix, spin, wi[c], ti[c]);
+      for (int c = 0; c < DIM; c++) vi[c] = sbc_fire_velocity(mix, push, vi[c], fi[c]);
+      for (int c = 0; c < NROT; c++) wi[c] = sbc_fire_velocity(mix, spin, wi[c], ti[c]);
     }
-    for (int c = 0; c < dim; c++) v0[c] = vi[c], f2 += fi[c] * fi[c];
-    for (int c = 0; c < nrot; c++) w0[c] = wi[c];
+    for (int c = 0; c < DIM; c++) v0[c] = vi[c], f2 += fi[c] * fi[c];
+    for (int c = 0; c < NROT; c++) w0[c] = wi[c];
     net = std::max(net, f2);
-    // eq. 10, with the half-step velocities (no damping at v = 0)
-    for (int c = 0; c < dim; c++) fi[c] = sbc_damp_local(fi[c], v0[c], alpha);
-    for (int c = 0; c < nrot; c++) ti[c] = sbc_damp_local(ti[c], w0[c], beta);
+    if (LOCAL) {    // eq. 10, with the half-step velocities (no damping at v = 0)
+      for (int c = 0; c < DIM; c++) fi[c] = sbc_damp_local(fi[c], v0[c], alpha);
+      for (int c = 0; c < NROT; c++) ti[c] = sbc_damp_local(ti[c], w0[c], beta);
+    }
     // Ek and the rotation with the velocities after this step's kick
     // (v^(n+1/2) = v^(n-1/2) + dt f/m), as the embedded engine measures them;
     // one division: 1/m = I/(m I), 1/I = m/(m I)
-    for (int c = 0; c < dim; c++) vk[c] = v0[c] + fi[c] * I * inv, loaded |= fi[c] != 0.0;
-    for (int c = 0; c < nrot; c++) wk[c] = w0[c] + ti[c] * m * inv, loaded |= ti[c] != 0.0;
-    for (int c = 0; c < nrot; c++) per_atom[i][1 + c] += turn * wk[c];
+    for (int c = 0; c < DIM; c++) vk[c] = v0[c] + fi[c] * I * inv, loaded |= fi[c] != 0.0;
+    for (int c = 0; c < NROT; c++) wk[c] = w0[c] + ti[c] * m * inv, loaded |= ti[c] != 0.0;
+    for (int c = 0; c < NROT; c++) turned[(1 + NROT) * i + c] += turn * wk[c];
     // a contact-free atom (a rattler) is left out of Ek, as in the core (relax.h)
-    if (loaded) ek += sbc_kinetic_energy(dim, m, I, vk, wk);
+    if (loaded) ek += sbc_kinetic_energy(DIM, m, I, vk, wk);
   }
   out[0] = ek;
   out[1] = std::sqrt(net);

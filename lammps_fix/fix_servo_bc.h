@@ -109,8 +109,10 @@ class FixServoBC : public Fix {
   static int seal_slot(const void *self, int i);
   // this rank's share of each measure the driver asks for (driver.h)
   void fire_pass(double *sums);
+  template <int DIM> void fire_loop(double *sums);
   void remap_pass(const double *M, const double *origin, int sign);
   void interior_pass(bool again, const sbc_fire_mix *mix, double out[2]);
+  template <int DIM, bool LOCAL> void interior_loop(bool again, const sbc_fire_mix *mix, double out[2]);
   void contact_pass(double out[4]);
   void frame_pass(double *buf);
   int confined(const double *fx, int increment, char *message, size_t cap);
