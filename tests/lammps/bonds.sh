@@ -256,6 +256,16 @@ fi
   printf 'variable ym equal xcm(middle,y)-0.5*(xcm(left,y)+xcm(right,y))\nvariable xm equal xcm(all,x)\n'
   printf 'variable intact equal f_bonds[1]\nprint "flight ${ym} ${intact} ${xm}" file cflight.txt\n'
 } > "$tmp/cflight.in"
+# same_flight LABEL LOG: cflight.txt's deflection against the first run's ($y1, to 1e-10) and its intact bonds ($c1)
+same_flight() {
+  set -- "$1" "$2" $(awk '$1 == "flight" { print $2, $3 }' "$tmp/cflight.txt" 2>/dev/null)
+  if [ "${4:-x}" = "$c1" ] && awk -v a="$y1" -v b="${3:-none}" 'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a
+       exit !(a == a + 0 && b == b + 0 && s > 1e-3 && d <= 1e-10 * s) }'; then
+    ok "$1: deflection $3 m (the first run's $y1), $4 intact"
+  else
+    bad "$1: deflection ${3:-none} against $y1 m, intact ${4:-none} against $c1: $(grep -m1 ERROR "$2")"
+  fi
+}
 for np in 1 2 4; do
   (cd "$tmp" && rm -f cflight.txt && if [ $np = 1 ]; then timeout 300 "$bin" -in cflight.in -log none -screen none
    else timeout 300 mpirun --allow-run-as-root --oversubscribe -np $np "$bin" -in cflight.in -log none -screen none; fi) \
@@ -268,11 +278,8 @@ for np in 1 2 4; do
     else
       bad "cohesive bar in flight on 1 rank: x ${3:-none} m, intact ${c1}: $(grep -m1 ERROR "$tmp/cflight.log")"
     fi
-  elif [ "${2:-x}" = "$c1" ] && awk -v a="$y1" -v b="${1:-none}" 'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a
-         exit !(a == a + 0 && b == b + 0 && s > 1e-3 && d <= 1e-10 * s) }'; then
-    ok "cohesive bar in flight on $np ranks: deflection $1 m (1 rank $y1), $2 intact"
   else
-    bad "cohesive bar in flight on $np ranks: deflection ${1:-none} against $y1 m, intact ${2:-none} against $c1: $(grep -m1 ERROR "$tmp/cflight.log")"
+    same_flight "cohesive bar in flight on $np ranks" "$tmp/cflight.log"
   fi
 done
 sed '/^balance\|^# balance/,$d' "$tmp/cflight.in" > "$tmp/cflight1.in"
@@ -288,13 +295,7 @@ echo 'write_restart cflight.restart' >> "$tmp/cflight1.in"
   timeout 300 mpirun --allow-run-as-root --oversubscribe -np 2 "$bin" -in cflight1.in -log none -screen none &&
   timeout 300 mpirun --allow-run-as-root --oversubscribe -np 4 "$bin" -in cflight2.in -log none -screen none) \
   > "$tmp/cflight.log" 2>&1
-set -- $(awk '$1 == "flight" { print $2, $3 }' "$tmp/cflight.txt" 2>/dev/null)
-if [ "${2:-x}" = "$c1" ] && awk -v a="$y1" -v b="${1:-none}" 'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a
-     exit !(a == a + 0 && b == b + 0 && s > 1e-3 && d <= 1e-10 * s) }'; then
-  ok "the cohesive flight split by a restart, written on 2 ranks, read on 4: deflection $1 m, $2 intact"
-else
-  bad "the cohesive flight split by a restart (2 -> 4 ranks): ${1:-none} against $y1 m, intact ${2:-none} against $c1: $(grep -m1 ERROR "$tmp/cflight.log")"
-fi
+same_flight "the cohesive flight split by a restart, written on 2 ranks, read on 4" "$tmp/cflight.log"
 # the same bar in a box periodic in x, short enough (3.5 m) that it crosses the
 # boundary: its pairs across it join an owned disc and a ghost image; on 1 and
 # 2 ranks the deflection of the open box to 1e-10 (wrapped centres round off
@@ -304,13 +305,7 @@ sed 's/^boundary f f p$/boundary p f p/; s/^region box block -0.5 6.5 -1 1 -0.5 
 for np in 1 2; do
   (cd "$tmp" && rm -f cflight.txt && timeout 300 mpirun --allow-run-as-root --oversubscribe -np $np "$bin" \
     -in cperiodic.in -log none -screen none) > "$tmp/cperiodic.log" 2>&1
-  set -- $(awk '$1 == "flight" { print $2, $3 }' "$tmp/cflight.txt" 2>/dev/null)
-  if [ "${2:-x}" = "$c1" ] && awk -v a="$y1" -v b="${1:-none}" 'BEGIN { d = a - b; if (d < 0) d = -d; s = a < 0 ? -a : a
-       exit !(a == a + 0 && b == b + 0 && s > 1e-3 && d <= 1e-10 * s) }'; then
-    ok "cohesive bar across a periodic boundary on $np rank(s): deflection $1 m (open box $y1), $2 intact"
-  else
-    bad "cohesive bar across a periodic boundary on $np rank(s): deflection ${1:-none} against $y1 m, intact ${2:-none} against $c1: $(grep -m1 ERROR "$tmp/cperiodic.log")"
-  fi
+  same_flight "cohesive bar across a periodic boundary on $np rank(s)" "$tmp/cperiodic.log"
 done
 # a ghost cutoff shorter than a cohesive pair's reach, on 2 ranks: refused naming both
 sed 's/cutoff 0.5 vel yes/cutoff 0.1 vel yes/' "$tmp/cflight.in" > "$tmp/ccut.in"
