@@ -90,9 +90,13 @@ demo: all
 	@mkdir -p out/demo
 	$(B)/servo-bc inputs/demo_D_25.sbc
 
+# each part's wall time is printed after it (CI's budget is 30 minutes for all of them)
+CHECK_PARTS = check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host check-yade fe2-patch
 check: deps
-	@$(MAKE) --no-print-directory check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
-	  check-yade fe2-patch
+	@start=$$(date +%s); for part in $(CHECK_PARTS); do begun=$$(date +%s); \
+	  $(MAKE) --no-print-directory $$part || exit 1; \
+	  echo "make check: $$part took $$(( $$(date +%s) - begun )) s"; done; \
+	  echo "make check: all parts took $$(( $$(date +%s) - start )) s"
 
 deps:
 	@bash scripts/install-deps.sh core
