@@ -482,8 +482,10 @@ template <int DIM> void FixServoBC::fire_loop(double *local)
   constexpr int Z = DIM == 3 ? 0 : 2;    // rotations: z alone in 2d
   const int nlocal = atom->nlocal, *mask = atom->mask, bit = interior_bit;
   const double *v = &atom->v[0][0], *omega = &atom->omega[0][0], *f = &atom->f[0][0], *torque = &atom->torque[0][0];
+  double sums[SBC_FIRE_SUMS] = {};    // in registers: local might alias the atoms' arrays
   for (int i = 0; i < nlocal; i++)
-    if (mask[i] & bit) sbc_fire_add(local, DIM, &f[3 * i], &v[3 * i], &torque[3 * i + Z], &omega[3 * i + Z]);
+    if (mask[i] & bit) sbc_fire_add(sums, DIM, &f[3 * i], &v[3 * i], &torque[3 * i + Z], &omega[3 * i + Z]);
+  for (int k = 0; k < SBC_FIRE_SUMS; k++) local[k] += sums[k];
 }
 
 /* local damping (eq. 10) on the interior's forces, or FIRE's mix (mix not
@@ -516,6 +518,7 @@ template <int DIM, bool LOCAL> void FixServoBC::interior_loop(bool again, const 
   const double alpha = settings.alpha, beta = settings.beta;
   // I = inertia m r^2: the integrator's disc (2d) or sphere (3d, 2/5)
   const double inertia = DIM == 3 ? 0.4 : servo_bc_host::inertia, turn = again ? 0.0 : dt;
+  const bool stopping = mix && mix->stop != 0.0;
   double ek = 0.0, net = 0.0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & bit)) continue;
@@ -523,8 +526,9 @@ template <int DIM, bool LOCAL> void FixServoBC::interior_loop(bool again, const 
     const double m = rmass[i], I = inertia * m * radius[i] * radius[i], inv = dt / (m * I);
     double v0[DIM], w0[NROT], vk[DIM], wk[NROT], f2 = 0.0;
     int loaded = 0;
-    if (mix) {
-      const double push = sbc_fire_factor(mix->push, mix, dt / m), spin = sbc_fire_factor(mix->spin, mix, dt / I);
+    if (mix) {    // the stop's half kicks (two divisions) only on the step that stops: otherwise push, spin as mixed
+      const double push = stopping ? sbc_fire_factor(mix->push, mix, dt / m) : mix->push;
+      const double spin = stopping ? sbc_fire_factor(mix->spin, mix, dt / I) : mix->spin;
       for (int c = 0; c < DIM; c++) vi[c] = sbc_fire_velocity(mix, push, vi[c], fi[c]);
       for (int c = 0; c < NROT; c++) wi[c] = sbc_fire_velocity(mix, spin, wi[c], ti[c]);
     }

@@ -158,9 +158,9 @@ void FixServoBCBonds::build_contacts(bool fresh)
     states[side].insert(states[side].end(), state, state + PER);
   }
   pairs_counted = (long) ends[0].size() / 2;
-  pair_ends = ends[0];
+  pair_ends.swap(ends[0]);    // the counted pairs stay where they were built, the others follow
   pair_ends.insert(pair_ends.end(), ends[1].begin(), ends[1].end());
-  pair_state = states[0];
+  pair_state.swap(states[0]);
   pair_state.insert(pair_state.end(), states[1].begin(), states[1].end());
   const long npairs = (long) pair_ends.size() / 2;
   // each owned atom's loads summed in its partners' ID order, so that the sums, and so the results, do not
