@@ -93,10 +93,12 @@ demo: all
 # each part's wall time is printed after it (CI's budget is 30 minutes for all of them)
 CHECK_PARTS = check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host check-yade fe2-patch
 check: deps
-	@start=$$(date +%s); for part in $(CHECK_PARTS); do begun=$$(date +%s); \
-	  $(MAKE) --no-print-directory $$part || exit 1; \
+	@start=$$(date +%s); failed=; for part in $(CHECK_PARTS); do begun=$$(date +%s); \
+	  $(MAKE) --no-print-directory $$part || { failed="$$failed $$part"; [ -n "$(findstring k,$(firstword -$(MAKEFLAGS)))" ] || \
+	    { echo "make check: $$part failed"; exit 1; }; }; \
 	  echo "make check: $$part took $$(( $$(date +%s) - begun )) s"; done; \
-	  echo "make check: all parts took $$(( $$(date +%s) - start )) s"
+	  echo "make check: all parts took $$(( $$(date +%s) - start )) s"; \
+	  [ -z "$$failed" ] || { echo "make check: failed:$$failed"; exit 1; }
 
 deps:
 	@bash scripts/install-deps.sh core
