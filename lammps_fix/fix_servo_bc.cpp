@@ -690,7 +690,7 @@ void FixServoBC::post_force(int)
   if (ev == SBC_EVENT_INCREMENT || ev == SBC_EVENT_FINISHED) {
     last = *sbc_controller_result(ctl);
     clock_reported = MPI_Wtime();
-  } else if (comm->me == 0 && update->ntimestep % 1000 == 0) {
+  } else if (comm->me == 0) {    // the clock on every step: 1000 steps of 10^6 discs take 110 s
     progress();
   }
   if (ev == SBC_EVENT_FINISHED) {
