@@ -29,7 +29,8 @@ run() {
   awk -F, -v t="$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", b - a }')" \
     'NR == 1 { for (c = 1; c <= NF; c++) if ($c == "relax_steps") s = c } END { printf "%s %s", $s, t }' "$tmp/$1.csv"
 }
-particles() { awk '/^ *[0-9]/ { n++ } END { print n }' "$1"; }
+# the particle lines of a text packing (x y r): neither the header nor the box, a centre's coordinate may be negative
+particles() { awk '!/^#/ && $1 != "box" && NF >= 3 { n++ } END { print n }' "$1"; }
 # exponent: least squares of log(steps) on log(particles) over "n s" lines
 exponent() { awk '{ x = log($1); y = log($2); n++; sx += x; sy += y; sxx += x * x; sxy += x * y }
   END { if (n > 1) printf "%.2f", (n * sxy - sx * sy) / (n * sxx - sx * sx); else print "-" }'; }
