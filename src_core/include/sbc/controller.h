@@ -200,6 +200,12 @@ typedef int (*sbc_newton_fn)(void *user_data, const double *a, const double *m, 
  * naming the keyword). */
 void sbc_controller_set_newton(sbc_controller *c, sbc_newton_fn fn, void *user_data);
 
+/* interior newton: a static solve has put the frame at x [3Q] (m) and
+ * theta [rQ] (rad; read where the rotation is not free), which become the
+ * commands in force, the frame's travel ended (the host's frame stands
+ * there already). */
+void sbc_controller_adopt(sbc_controller *c, const double *x, const double *theta);
+
 /* Increment now being relaxed, 0 .. i_tot. */
 int sbc_controller_increment(const sbc_controller *c);
 

@@ -96,6 +96,11 @@ typedef struct sbc_driver_callbacks {
        (controller.h, sbc_newton_fn), with newton_data (NULL: user_data) */
     sbc_newton_fn newton;
     void *newton_data;
+    /* keyword interior newton (required with it): 1 when the host solves its
+       interior's static equilibrium at each new position of the frame before
+       its next contact forces (the embedded 2D runner and material point:
+       host/statics.h); 0: the host relaxes the interior with its own dynamics */
+    int solves_interior;
 } sbc_driver_callbacks;
 
 typedef struct sbc_driver sbc_driver;

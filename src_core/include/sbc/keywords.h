@@ -20,7 +20,7 @@ typedef struct sbc_keyword {
     const char *fallback; /* the default (Markdown) */
 } sbc_keyword;
 
-#define SBC_KEYWORDS 23
+#define SBC_KEYWORDS 24
 extern const sbc_keyword sbc_keywords[SBC_KEYWORDS];
 
 /* Every keyword name, "F, increments, ... or file", into out [cap]; returns

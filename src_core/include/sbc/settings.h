@@ -39,6 +39,12 @@ typedef enum sbc_damping { SBC_DAMPING_NONE = 0, SBC_DAMPING_LOCAL, SBC_DAMPING_
 
 typedef enum sbc_mode { SBC_MODE_D = 0, SBC_MODE_P, SBC_MODE_T } sbc_mode;
 
+/* How the interior reaches each new position of the frame: dynamic
+ * relaxation (the host's own dynamics with damping), or a static
+ * equilibrium solved by Newton on the contact network (docs/servo_bc.md,
+ * "Interior"; the embedded 2D runner). */
+typedef enum sbc_interior { SBC_INTERIOR_DYNAMIC = 0, SBC_INTERIOR_NEWTON } sbc_interior;
+
 /* The tangent C = dP/dF the runner writes per converged increment (keyword
  * tangent; material_point.h gives the three). */
 typedef enum sbc_tangent {
@@ -99,6 +105,8 @@ typedef struct sbc_settings {
                                 sbc_controller_remap), the default of the presets fast, balanced
                                 and tight; 0 (remap none), accuracy paper's */
     sbc_update update;       /* fixed (the paper's) or secant; fixed */
+    sbc_interior interior;   /* keyword interior: dynamic (every host) or newton (the embedded 2D runner; the
+                                frame then jumps to its commands, speed 0 and remap none); dynamic */
     char accuracy[16];       /* preset in force (keyword accuracy; balanced by default) */
     /* mixed only: face_mode[face][component] (faces as above, components 0 = x,
        1 = y, 2 = z); the default is the paper's layer: 2D bottom D D, right P P,

@@ -555,6 +555,16 @@ int sbc_engine_pair_records(const sbc_engine *e, double *out)
     return count;
 }
 
+void sbc_engine_place(sbc_engine *e, const double *x, const double *theta)
+{
+    const size_t n = (size_t)e->n;
+    memcpy(e->x, x, sizeof(double) * 2 * n);
+    memcpy(e->theta, theta, sizeof(double) * n);
+    memset(e->v, 0, sizeof(double) * 2 * n);
+    memset(e->omega, 0, sizeof(double) * n);
+    e->stale = 1;
+}
+
 sbc_status sbc_engine_set_pair_records(sbc_engine *e, const double *rec, int count, int bonds_initial,
                                        sbc_error *err)
 {

@@ -2,6 +2,7 @@
  * host steps of one increment. */
 #include "aggregate.h"
 #include "condensed.h"
+#include "statics.h"
 
 #include "sbc/embedded/engine.h"
 #include "sbc/embedded/spheres.h"
@@ -52,11 +53,19 @@ static void discs_pair(const void *e, int k, int ij[2], double fs[3])
 }
 static const double *discs_centres(const void *e) { return sbc_engine_get_view(e).x; }
 static const double *discs_radii(const void *e) { return sbc_engine_get_view(e).r; }
+static const double *discs_rotations(const void *e) { return sbc_engine_get_view(e).theta; }
+static sbc_status discs_place(void *e, const double *x, const double *theta, const double *records, int count,
+                              sbc_error *err)
+{
+    sbc_engine_place(e, x, theta);
+    return sbc_engine_set_pair_records(e, records, count, sbc_engine_get_view(e).bonds_initial, err);
+}
 
 const sbc_engine_ops sbc_engine_ops_discs = {2, discs_create, discs_free, discs_set_frame, discs_seal, discs_callbacks,
                                    discs_forces,
                                    discs_move, discs_masses, discs_dt, discs_size, discs_save, discs_load,
-                                   discs_pairs, discs_pair, discs_centres, discs_radii};
+                                   discs_pairs, discs_pair, discs_centres, discs_radii, discs_rotations,
+                                   discs_place};
 
 static void *spheres_create(const sbc_point_def *d, const sbc_settings *s, sbc_error *err)
 {
@@ -90,12 +99,13 @@ static int spheres_pairs(const void *e) { return sbc_spheres_get_view(e).pair_co
 static void spheres_pair(const void *e, int k, int ij[2], double fs[3]) { sbc_spheres_pair(e, k, ij, fs); }
 static const double *spheres_centres(const void *e) { return sbc_spheres_get_view(e).x; }
 static const double *spheres_radii(const void *e) { return sbc_spheres_get_view(e).r; }
+static const double *spheres_rotations(const void *e) { return sbc_spheres_get_view(e).theta; }
 
 const sbc_engine_ops sbc_engine_ops_spheres = {3, spheres_create, spheres_free, spheres_set_frame, spheres_seal,
                                      spheres_callbacks,
                                      spheres_forces, spheres_move, spheres_masses, spheres_dt, spheres_size,
                                      spheres_save, spheres_load, spheres_pairs, spheres_pair, spheres_centres,
-                                     spheres_radii};
+                                     spheres_radii, spheres_rotations, NULL};
 
 sbc_status sbc_aggregate_network(const sbc_aggregate *a, sbc_network *net, int **ij, double **fs, sbc_error *err)
 {
@@ -155,7 +165,130 @@ sbc_driver_callbacks sbc_aggregate_callbacks(const sbc_aggregate *a)
     sbc_driver_callbacks cb = a->ops->callbacks(a->engine);
     cb.newton = sbc_aggregate_newton;
     cb.newton_data = (void *)a; /* read only: the callback takes a const aggregate */
+    cb.solves_interior = a->ops->place && !a->bonded && a->tally;
     return cb;
+}
+
+/* 1 when the commands move a frame particle or turn a held rotation */
+static int frame_moves(const sbc_aggregate *a, const sbc_commands *cmd)
+{
+    const sbc_frame *f = a->frame;
+    const double *x = a->ops->centres(a->engine), *theta = a->ops->rotations(a->engine);
+    int q, k;
+    for (q = 0; q < f->n; ++q) {
+        const int p = f->particle[q];
+        for (k = 0; k < f->dim; ++k)
+            if (cmd->x[3 * q + k] != x[f->dim * p + k])
+                return 1;
+        if (!cmd->free_rotation[q] && cmd->theta[q] != theta[p])
+            return 1;
+    }
+    return 0;
+}
+
+/* interior newton: the frame moved by cmd from the committed state (x0, theta0, the engine's pairs), the
+   interior solved there and the engine placed at the solution (statics.h) */
+static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, const sbc_commands *cmd,
+                                 sbc_error *err)
+{
+    const int n = a->n, npair = a->ops->pair_count(a->engine), history = sbc_frictional_has_history(&a->law);
+    const sbc_frame *f = a->frame;
+    double *x0 = malloc(sizeof(double) * 2 * (size_t)n), *th0 = malloc(sizeof(double) * (size_t)n);
+    double *x = malloc(sizeof(double) * 2 * (size_t)n), *th = malloc(sizeof(double) * (size_t)n);
+    double *fs0 = malloc(sizeof(double) * (size_t)(npair > 0 ? npair : 1));
+    int *ij0 = malloc(sizeof(int) * 2 * (size_t)(npair > 0 ? npair : 1)); /* i0 [npair], then j0 */
+    sbc_statics_problem p;
+    sbc_statics_result res;
+    sbc_status st = SBC_OK;
+    int k, q;
+    memset(&res, 0, sizeof res);
+    if (!x0 || !th0 || !x || !th || !fs0 || !ij0) {
+        st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d discs", n);
+        goto done;
+    }
+    memcpy(x0, a->ops->centres(a->engine), sizeof(double) * 2 * (size_t)n);
+    memcpy(th0, a->ops->rotations(a->engine), sizeof(double) * (size_t)n);
+    for (k = 0; k < npair; ++k) { /* the spring along t = (-l_y, l_x) / |l| of the committed branch */
+        double fv[3];
+        int ij[2];
+        a->ops->pair(a->engine, k, ij, fv);
+        ij0[k] = ij[0];
+        ij0[npair + k] = ij[1];
+        {
+            const double *xa = &x0[2 * ij[0]], *xb = &x0[2 * ij[1]];
+            const double lx = xb[0] - xa[0], ly = xb[1] - xa[1], d = sqrt(lx * lx + ly * ly);
+            fs0[k] = d > 0.0 ? (-fv[0] * ly + fv[1] * lx) / d : 0.0;
+        }
+    }
+    a->ops->move_frame(a->engine, cmd);
+    memcpy(x, a->ops->centres(a->engine), sizeof(double) * 2 * (size_t)n);
+    memcpy(th, a->ops->rotations(a->engine), sizeof(double) * (size_t)n);
+    memset(&p, 0, sizeof p);
+    p.n = n;
+    p.r = a->ops->radii(a->engine);
+    p.law = a->law;
+    p.frame = f;
+    p.x0 = x0;
+    p.theta0 = th0;
+    p.npair0 = npair;
+    p.bc = a->settings->bc;
+    p.rotation_zero = a->settings->rotation_zero;
+    p.tol = SBC_STATICS_TOL;
+    p.max_iterations = SBC_STATICS_ITERATIONS;
+    p.fs0 = history ? fs0 : NULL;
+    p.i0 = ij0;
+    p.j0 = ij0 + npair;
+    st = sbc_statics_solve(&p, x, th, &res, err);
+    if (st == SBC_OK)
+        st = a->ops->place(a->engine, x, th, res.records, res.contacts, err);
+    if (st == SBC_OK && a->settings->bc != SBC_BC_D) { /* the frame where the solve put it: the controller's commands */
+        double *xq = calloc(3 * (size_t)f->n, sizeof *xq), *tq = calloc((size_t)f->n, sizeof *tq);
+        if (!xq || !tq)
+            st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for a frame of %d", f->n);
+        for (q = 0; st == SBC_OK && q < f->n; ++q) {
+            xq[3 * q] = x[2 * f->particle[q]];
+            xq[3 * q + 1] = x[2 * f->particle[q] + 1];
+            tq[q] = th[f->particle[q]];
+        }
+        if (st == SBC_OK)
+            sbc_controller_adopt(ctl, xq, tq);
+        free(xq);
+        free(tq);
+    }
+    if (st == SBC_OK) {
+        sbc_statics_tally *t = a->tally;
+        t->iterations += res.iterations;
+        t->solves++;
+        t->mechanisms = res.mechanisms;
+        t->residual = res.residual;
+        if (!res.converged) {
+            t->unconverged++;
+            t->fallback = 1;
+            snprintf(t->why, sizeof t->why, "%s", res.why);
+        }
+    }
+done:
+    sbc_statics_result_free(&res);
+    free(x0);
+    free(th0);
+    free(x);
+    free(th);
+    free(fs0);
+    free(ij0);
+    return st;
+}
+
+sbc_status sbc_aggregate_advance(const sbc_aggregate *a, sbc_controller *ctl, int settle, sbc_error *err)
+{
+    sbc_commands cmd = sbc_controller_commands(ctl);
+    sbc_status st;
+    if (a->tally && !a->tally->fallback && (settle || frame_moves(a, &cmd)))
+        st = solve_interior(a, ctl, &cmd, err);
+    else {
+        a->ops->move_frame(a->engine, &cmd);
+        st = SBC_OK;
+    }
+    return st == SBC_OK ? a->ops->forces(a->engine, err) : st;
 }
 
 sbc_event sbc_aggregate_run_increment(const sbc_aggregate *a, sbc_controller *ctl, sbc_driver *driver, int first,
@@ -163,12 +296,8 @@ sbc_event sbc_aggregate_run_increment(const sbc_aggregate *a, sbc_controller *ct
 {
     for (;;) {
         sbc_event ev;
-        if (!first) {
-            sbc_commands cmd = sbc_controller_commands(ctl);
-            a->ops->move_frame(a->engine, &cmd);
-            if (a->ops->forces(a->engine, err) != SBC_OK)
-                return SBC_EVENT_FAILED;
-        }
+        if (!first && sbc_aggregate_advance(a, ctl, 0, err) != SBC_OK)
+            return SBC_EVENT_FAILED;
         first = 0;
         ev = sbc_driver_step(driver, 0, err);
         if (ev == SBC_EVENT_FAILED || ev == SBC_EVENT_FINISHED || ev == SBC_EVENT_INCREMENT)

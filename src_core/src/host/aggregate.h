@@ -38,6 +38,11 @@ typedef struct sbc_engine_ops {
     void (*pair)(const void *e, int k, int ij[2], double fs[3]);
     const double *(*centres)(const void *e);
     const double *(*radii)(const void *e);
+    const double *(*rotations)(const void *e); /* [n] rad (2D) */
+    /* interior newton (statics.h): every particle put at x, theta at rest, with the contacts' pair records
+       (engine.h); NULL where the engine has no static solver (spheres) */
+    sbc_status (*place)(void *e, const double *x, const double *theta, const double *records, int count,
+                        sbc_error *err);
 } sbc_engine_ops;
 
 extern const sbc_engine_ops sbc_engine_ops_discs;   /* sbc_engine (embedded/engine.h) */
@@ -53,7 +58,31 @@ typedef struct sbc_aggregate {
     double dt;                    /* s */
     sbc_frictional law;           /* eq. 6 */
     int bonded;                   /* the engine has cohesive bonds (eqs. 7-8), which no linearization here holds */
+    struct sbc_statics_tally *tally; /* interior newton: the solves' counts, NULL with interior dynamic */
 } sbc_aggregate;
+
+/* interior newton: what the static solves of an increment did (the row's
+   newton_iterations, the log's notes) */
+typedef struct sbc_statics_tally {
+    long iterations;   /* Newton iterations since the last row */
+    int solves;        /* static solves since the last row */
+    int unconverged;   /* ... that stopped short of the tolerance (the dynamic relaxation finished them) */
+    int mechanisms;    /* dofs held for want of stiffness at the last solve */
+    double residual;   /* the last solve's relative residual */
+    int fallback;      /* an unconverged solve: the increment is finished by the dynamic relaxation and the
+                          servo, without further solves */
+    char why[200];     /* the last unconverged solve: why */
+} sbc_statics_tally;
+
+/* One host step's frame move and forces: the frame to ctl's commands;
+ * with interior newton (a->tally), where the frame moved (or always, with
+ * settle), the static equilibrium from the state before the move with the
+ * frame at its new place under the condition's own unknowns (statics.h),
+ * the engine placed there at rest and, under (P) and (T), the frame's
+ * place made ctl's commands (sbc_controller_adopt); then the contact
+ * forces. After an unconverged solve (tally->fallback) the increment goes
+ * on by the dynamic relaxation and the servo alone. */
+sbc_status sbc_aggregate_advance(const sbc_aggregate *a, sbc_controller *ctl, int settle, sbc_error *err);
 
 /* Host steps (move the frame, forces, sbc_driver_step) until ctl accepts an
  * increment (SBC_EVENT_INCREMENT or SBC_EVENT_FINISHED) or fails; first: the

@@ -17,15 +17,15 @@
 
 #define MAXB 12 /* the largest contact block: 2 spheres x 6 dofs */
 
-/* 2D: the gradient over the branch l of the slip the increment gave a
- * sticking contact, I(l) = integral of t . dl along the straight path from
- * the branch l0 at the increment's start (t = J l / |l|, J l = (-l_y, l_x),
- * the engine's dus summed over its steps): with J l0 . l0 = 0,
+/* 2D: the slip the increment gave a sticking contact, I(l) = integral of
+ * t . dl along the straight path from the branch l0 at the increment's
+ * start (t = J l / |l|, J l = (-l_y, l_x), the engine's dus summed over its
+ * steps), and its gradient over l: with J l0 . l0 = 0,
  *   I(l) = (J l0 . l) G(l),  G(l) = int_0^1 ds / |l0 + s (l - l0)|,
  *   grad I = G J l0 + (J l0 . l) grad G,  grad G = -int_0^1 s l(s) / |l(s)|^3 ds,
  * by 4-point Gauss-Legendre on [0, 1] (|l(s)| changes by the increment's
- * strain: the rule is exact to round-off there). At l = l0 it is t. */
-static void path_slip_gradient(const double x0a[2], const double x0b[2], double lx, double ly, double grad[2])
+ * strain: the rule is exact to round-off there). At l = l0 it is 0 and t. */
+double sbc_path_slip(const double x0a[2], const double x0b[2], double lx, double ly, double grad[2])
 {
     static const double node[4] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
                                    0.9305681557970263};
@@ -44,6 +44,7 @@ static void path_slip_gradient(const double x0a[2], const double x0b[2], double 
     }
     grad[0] = G * jx + jl * gx;
     grad[1] = G * jy + jl * gy;
+    return jl * G;
 }
 
 /* 2D: d(loads)/d(dofs) of one contact, loads (f_i, tau_i, f_j, tau_j) over
@@ -80,7 +81,7 @@ static int block_2d(const sbc_network *net, int k, double B[MAXB][MAXB])
             M[p][q] = -law->kn * n[p] * n[q] + fn / d * t[p] * t[q] + fs / d * n[p] * t[q];
     if (stick) { /* dfs = g . dl + gr . (dtheta_i, dtheta_j) */
         if (net->x0)
-            path_slip_gradient(&net->x0[2 * a], &net->x0[2 * b], lx, ly, g);
+            sbc_path_slip(&net->x0[2 * a], &net->x0[2 * b], lx, ly, g);
         else {
             g[0] = t[0];
             g[1] = t[1];
@@ -561,7 +562,10 @@ static sbc_status system_build(const sbc_network *net, const sbc_frame *f, sbc_b
         y->open[k] = !contact_block(net, k, y->blocks[k]);
     y->nu = number_unknowns(net, f, bc, frame_of, y->unk, y->z0) + extra;
     y->L = y->nu - extra;
-    cap = (long)net->npair * nb * nb + (bc == SBC_BC_T ? (long)f->n * dim * (2 * dim + 2) : 0);
+    if (net->border > 0.0)
+        y->scale = net->border; /* the multipliers' scale, fixed by the caller */
+    cap = (long)net->npair * nb * nb + (bc == SBC_BC_T ? (long)f->n * dim * (2 * dim + 2) : 0) +
+          (net->shift > 0.0 ? ndof : 0);
     y->ti = malloc(sizeof *y->ti * (size_t)(cap > 0 ? cap : 1));
     y->tj = malloc(sizeof *y->tj * (size_t)(cap > 0 ? cap : 1));
     y->tv = malloc(sizeof *y->tv * (size_t)(cap > 0 ? cap : 1));
@@ -579,7 +583,8 @@ static sbc_status system_build(const sbc_network *net, const sbc_frame *f, sbc_b
                 continue;
             for (v = 0; v < nb; ++v) {
                 const double kab = y->blocks[k][s][v];
-                y->scale = fmax(y->scale, fabs(kab));
+                if (!(net->border > 0.0))
+                    y->scale = fmax(y->scale, fabs(kab));
                 if (kab != 0.0 && y->unk[slot_dof(net, k, v)] >= 0)
                     PUSH(u, y->unk[slot_dof(net, k, v)], kab);
             }
@@ -598,6 +603,21 @@ static sbc_status system_build(const sbc_network *net, const sbc_frame *f, sbc_b
                 PUSH(y->L + nc + k, row, y->scale);
             }
         }
+    if (net->shift > 0.0) { /* interior newton's pseudo-time term: -shift on a translation, -shift R^2 on a
+                               rotation (the loads' derivative is negative where the network is stable), once per
+                               unknown (at its first dof) */
+        unsigned char *done = calloc((size_t)(y->nu > 0 ? y->nu : 1), 1);
+        if (!done) {
+            st = sbc_fail(err, SBC_ERR_NOMEM, "%s: out of memory (%d unknowns)", what, y->nu);
+            goto done;
+        }
+        for (p = 0; p < ndof; ++p)
+            if ((u = y->unk[p]) >= 0 && !done[u]) {
+                done[u] = 1;
+                PUSH(u, u, p % nd < dim ? -net->shift : -net->shift * net->r[p / nd] * net->r[p / nd]);
+            }
+        free(done);
+    }
 #undef PUSH
 done:
     free(frame_of);
@@ -713,5 +733,40 @@ sbc_status sbc_condensed_correction(const sbc_network *net, const sbc_frame *f, 
             }
     system_free(&y);
     free(rhs);
+    return st;
+}
+
+int sbc_condensed_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc, int *unk, sbc_error *err)
+{
+    const int nd = dofs_of(net->dim), ndof = nd * net->n, nc = net->dim * net->dim;
+    int *frame_of = malloc(sizeof *frame_of * (size_t)(net->n > 0 ? net->n : 1)), q, count = -1;
+    double *z0 = calloc((size_t)ndof * (size_t)nc, sizeof *z0);
+    if (!frame_of || !z0)
+        sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory (%d particles)", net->n);
+    else {
+        for (q = 0; q < net->n; ++q)
+            frame_of[q] = -1;
+        for (q = 0; q < f->n; ++q)
+            frame_of[f->particle[q]] = q;
+        count = number_unknowns(net, f, bc, frame_of, unk, z0);
+    }
+    free(frame_of);
+    free(z0);
+    return count;
+}
+
+sbc_status sbc_condensed_newton_step(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const double *residual,
+                                     double *dy, int *mechanisms, sbc_error *err)
+{
+    linear_system y;
+    int u;
+    sbc_status st;
+    *mechanisms = 0;
+    if ((st = system_build(net, f, bc, "interior newton", &y, err)) != SBC_OK)
+        return st;
+    for (u = 0; u < y.nu; ++u)
+        dy[u] = -residual[u];
+    st = solve_unknowns(y.nu, y.nt, y.ti, y.tj, y.tv, 1, dy, 1e-12 * y.scale, net->dense, mechanisms, err);
+    system_free(&y);
     return st;
 }

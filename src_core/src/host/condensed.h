@@ -25,6 +25,10 @@ typedef struct sbc_network {
     const unsigned char *mode; /* mixed: the frame particles' component modes [3Q] (sbc_mixed_modes), D or P
                                   (T is not linearized here); NULL otherwise */
     int frame_rotation_zero;   /* (T) with `rotation zero`: the frame's rotations held at zero */
+    double border;             /* (T): the scale of the multipliers' rows and columns, N/m; 0: the largest
+                                  contact stiffness entry (interior newton fixes it over its iterations) */
+    double shift;              /* interior newton's pseudo-time term (statics.h), N/m: taken from the diagonal of
+                                  each translation's unknown, times R^2 from each rotation's; 0 otherwise */
 } sbc_network;
 
 /* C_ijkl = dP_ij / dF_kl (C[9 (3i + j) + 3k + l]) of the aggregate at
@@ -53,5 +57,28 @@ sbc_status sbc_condensed_tangent(const sbc_network *net, const sbc_frame *f, sbc
  * zero; (D) nothing (all zero). */
 sbc_status sbc_condensed_correction(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const double *reaction,
                                     const double *moment, double *du, double *dtheta, int *mechanisms, sbc_error *err);
+
+/* 2D: the slip a sticking contact's tangential spring takes over an
+ * increment whose branch goes from x0b - x0a to l = (lx, ly) (m), the
+ * integral of t . dl along the straight path (condensed.c), and its
+ * gradient over l, grad [2]. */
+double sbc_path_slip(const double x0a[2], const double x0b[2], double lx, double ly, double grad[2]);
+
+/* interior newton (statics.h): the unknowns of the network's dofs under bc
+ * on frame f, unk [dofs n] (-1 where the frame's condition prescribes the
+ * dof; a (P) family's members share theirs), as the condensed tangent
+ * numbers them; returns their count L; under (T) the multipliers of
+ * a_q = P A_q + m (dim^2, then dim) follow as unknowns L .. L + dim^2 + dim - 1.
+ * -1 on failure (err). */
+int sbc_condensed_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc, int *unk, sbc_error *err);
+
+/* interior newton: the Newton correction dy [nu] of the unknowns
+ * (sbc_condensed_unknowns, nu = L plus the multipliers), K dy = -residual,
+ * residual [nu] the net loads summed over each unknown's dofs (N, N m) and
+ * under (T) the rows of the multipliers, K their derivative (the contact
+ * blocks of the condensed tangent, bordered by net->border under (T)).
+ * *mechanisms: the unknowns found to carry no stiffness, held (dy 0). */
+sbc_status sbc_condensed_newton_step(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const double *residual,
+                                     double *dy, int *mechanisms, sbc_error *err);
 
 #endif

@@ -42,6 +42,12 @@ sbc_driver *sbc_driver_create(sbc_controller *c, const sbc_settings *s, const sb
                  "and this host does not (expected fixed or secant)", sbc_bc_name(s->bc));
         return NULL;
     }
+    if (s->interior == SBC_INTERIOR_NEWTON && !cb->solves_interior) {
+        sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: keyword 'interior': newton solves the interior's static "
+                 "equilibrium on the embedded engine's contact network (servo-bc and the material point, discs); "
+                 "this host relaxes its interior with its own dynamics (expected dynamic)", sbc_bc_name(s->bc));
+        return NULL;
+    }
     if (!(d = calloc(1, sizeof *d))) {
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
         return NULL;

@@ -152,6 +152,7 @@ typedef struct run_state {
     const script *s;
     sbc_aggregate aggregate;    /* the engine as the tangents see it (keyword tangent) */
     sbc_script_tangent tangent; /* ... and its file */
+    sbc_statics_tally tally;    /* interior newton: the static solves of the increment under way */
 } run_state;
 
 static double seconds_between(const struct timespec *a, const struct timespec *b)
@@ -278,6 +279,13 @@ static int engine_row(void *user_data, const sbc_result *row, const char *line, 
         fprintf(s->log, "%s\n", line);
         if (s->cohesive)
             fprintf(s->log, "  bonds intact %d\n", sbc_engine_get_view(r->engine).bond_count);
+        if (r->aggregate.tally) {
+            fprintf(s->log, "  interior newton: %d solves, %ld iterations, last residual %.2e, %d dofs held%s%s\n",
+                    r->tally.solves, r->tally.iterations, r->tally.residual, r->tally.mechanisms,
+                    r->tally.unconverged ? "; the dynamic relaxation finished an unconverged solve: " : "",
+                    r->tally.unconverged ? r->tally.why : "");
+            memset(&r->tally, 0, sizeof r->tally);
+        }
         fflush(s->log);
     }
     if (sbc_script_tangent_row(s, &r->tangent, &r->aggregate, r->ctl, sbc_driver_fire(r->driver), row, &err) !=
@@ -382,6 +390,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
     r.aggregate.dt = s->dt;
     r.aggregate.law = s->law;
     r.aggregate.bonded = s->cohesive;
+    r.aggregate.tally = s->settings.interior == SBC_INTERIOR_NEWTON ? &r.tally : NULL;
     if (s->check) {
         if (s->log)
             fprintf(s->log, "check: run of line %d: servo_bc %s, %d particles, frame of %d, %d increments, dt = %g s "
@@ -413,9 +422,12 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
             return err->status;
         }
     }
-    /* the first step's forces were taken above */
+    /* the first step's forces were taken above; interior newton solves increment 0's interior first */
+    if (r.aggregate.tally && (st = sbc_aggregate_advance(&r.aggregate, r.ctl, 1, err)) != SBC_OK) {
+        run_free(&r);
+        return st;
+    }
     for (;;) {
-        sbc_commands cmd;
         sbc_event ev = sbc_driver_step(r.driver, 0, err);
         if (ev == SBC_EVENT_FAILED || ++r.since_check == SBC_CONFINE_EVERY) {
             r.since_check = 0;
@@ -427,9 +439,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
         }
         if (ev == SBC_EVENT_FINISHED)
             break;
-        cmd = sbc_controller_commands(r.ctl);
-        sbc_engine_move_frame(r.engine, &cmd);
-        if ((st = sbc_engine_forces(r.engine, err)) != SBC_OK) break;
+        if ((st = sbc_aggregate_advance(&r.aggregate, r.ctl, 0, err)) != SBC_OK) break;
     }
     if (st != SBC_OK) { /* the state the run stopped in, for a look in ParaView and a picture */
         sbc_error verr;

@@ -275,6 +275,18 @@ sbc_commands sbc_controller_commands(const sbc_controller *c)
     return cmd;
 }
 
+void sbc_controller_adopt(sbc_controller *c, const double *x, const double *theta)
+{
+    int q, k;
+    memcpy(c->x_cmd, x, sizeof(double) * 3 * (size_t)c->frame->n);
+    for (q = 0; q < c->frame->n; ++q)
+        for (k = 0; k < c->rot && !c->free_rot[q]; ++k)
+            c->theta_cmd[c->rot * q + k] = theta[c->rot * q + k];
+    memcpy(c->motion.x_goal, c->x_cmd, sizeof(double) * 3 * (size_t)c->frame->n);
+    memcpy(c->motion.th_goal, c->theta_cmd, sizeof(double) * (size_t)(c->rot * c->frame->n));
+    c->motion.done = c->motion.steps;
+}
+
 const sbc_result *sbc_controller_result(const sbc_controller *c) { return &c->result; }
 
 int sbc_controller_increment(const sbc_controller *c) { return c->increment; }

@@ -117,6 +117,14 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
          "near its answer instead of from a wave at the frame (see \"Remap\"); the host must move its "
          "interior (every engine here does)",
      "x; none with `accuracy paper` and in a material point"},
+    {"interior",
+     "`dynamic` or `newton`",
+     "how the interior reaches each new position of the frame: `dynamic`, relaxation by the host's dynamics "
+         "with damping; `newton` (embedded runner, discs; D, P, T): the static equilibrium at the frame's "
+         "commands, the contact laws integrated over the increment by backward Euler and solved by Newton on "
+         "the contact network's stiffness, then certified as every row (see \"Interior\"); the frame jumps "
+         "to its commands (`speed 0`, `remap none`); hosts refuse it",
+     "dynamic"},
     {"frame",
      "group-ID",
      "boundary particles given by a host group; the embedded runner detects the frame itself and refuses "

@@ -376,6 +376,13 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
                 s->remap = strcmp(w, "x") == 0;
             else if (w)
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'remap': value '%s' is not valid (expected x or none)", w);
+        } else if (strcmp(key, "interior") == 0) {
+            const char *w = next_word(&c, "dynamic|newton", &st);
+            if (w && (strcmp(w, "dynamic") == 0 || strcmp(w, "newton") == 0))
+                s->interior = strcmp(w, "newton") == 0 ? SBC_INTERIOR_NEWTON : SBC_INTERIOR_DYNAMIC;
+            else if (w)
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'interior': value '%s' is not valid (expected dynamic or "
+                              "newton)", w);
         } else if (strcmp(key, "max_iterations") == 0) {
             st = read_int(&c, "K", 1, 1000000000L, &iv);
             s->max_iterations = (int)iv;
@@ -432,6 +439,22 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
     if (st == SBC_OK && was_met(m, "relax") && was_met(m, "balance"))
         st = sbc_fail(err, SBC_ERR_INPUT, "keywords 'relax' and 'balance' both choose when a relaxation is over "
                       "(Ek/Ep, or the force balance); give one");
+    /* interior newton: the interior is solved at the frame's commands, so the frame jumps to them and the
+       interior is not carried along by the frame's move */
+    if (st == SBC_OK && s->interior == SBC_INTERIOR_NEWTON) {
+        if (was_met(m, "remap") && s->remap)
+            st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'remap': x moves the interior with the frame's travel, which "
+                          "interior newton solves instead (expected remap none, or interior dynamic)");
+        else if (was_met(m, "speed") && s->speed > 0.0)
+            st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'speed': %g; under interior newton the frame jumps to its "
+                          "commands and the interior is solved there (expected speed 0, or interior dynamic)",
+                          s->speed);
+        else if (s->bc == SBC_BC_MIXED)
+            st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'interior': newton takes D, P and T; mixed conditions take "
+                          "dynamic");
+        s->remap = 0;
+        s->speed = 0.0;
+    }
     /* (D) puts the frame where F X says: the servo's words have nothing to act on */
     s->ignored[0] = '\0';
     if (st == SBC_OK && s->bc == SBC_BC_D) {

@@ -127,6 +127,11 @@ int sbc_engine_pair_records(const sbc_engine *e, double *out);
 sbc_status sbc_engine_set_pair_records(sbc_engine *e, const double *rec, int count, int bonds_initial,
                                        sbc_error *err);
 
+/* interior newton (host/statics.h): every particle put at x [2n] (m) and
+ * theta [n] (rad), at rest (velocities and spins zero), followed by
+ * sbc_engine_set_pair_records with the contacts' springs of that state. */
+void sbc_engine_place(sbc_engine *e, const double *x, const double *theta);
+
 /* Critical time step estimate 2 sqrt(M_min / (2 kn)) (s): the period limit
  * of the stiffest particle-contact oscillator; with bonds also
  * 2 sqrt(I_min / (2 kr)) for the bending spring, whichever is smaller. */

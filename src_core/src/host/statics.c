@@ -1,0 +1,390 @@
+/* interior newton: the static equilibrium of a disc aggregate (statics.h). */
+#include "statics.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../engines/neighbor.h"
+#include "condensed.h"
+#include "sbc/embedded/engine.h"
+
+/* the largest move of a disc in one Newton iteration, in smallest radii: a
+   longer step is scaled down (contacts stay within reach of the pair list) */
+#define STEP_CAP 0.25
+/* backtracking halvings of the line search before the iteration is called stalled */
+#define LINE_HALVINGS 30
+/* the pseudo-time term's first weight (times kn) and the weight below which it is dropped (pure Newton) */
+#define SHIFT_FIRST 1.0
+#define SHIFT_LAST 1e-8
+
+typedef struct statics_work {
+    const sbc_statics_problem *p;
+    sbc_pairs cand;          /* candidate pairs, within reach at the last build */
+    int *start0;             /* [n + 1] the committed pairs of disc i: start0[i] .. start0[i + 1] - 1 */
+    double *fs;              /* [cand capacity] the springs of the iterate (N) */
+    double *fsv;             /* [3 cand capacity] ... as vectors in the plane (condensed.h's sbc_network) */
+    double *res;             /* [3n] net loads of the iterate on each dof, N and N m */
+    int *unk;                /* [3n] each dof's unknown, -1 prescribed (condensed.h) */
+    int L, nu;               /* the dofs' unknowns, and all unknowns with (T)'s multipliers */
+    double *R;               /* [nu] the residual of each unknown */
+    double *row_scale;       /* [nu] 1, or 1/R for a rotation's row (the merit in N) */
+    double *dy;              /* [nu] Newton's correction */
+    double *lambda;          /* [dim^2 + dim] (T): the multipliers (P, m over border) */
+    double *xe;              /* [2n] the state on entry (T: the frame's place for eq. 15 and its mean) */
+    double border;           /* (T): the multipliers' scale, kn */
+    double *xt, *tt;         /* [2n], [n] a trial state of the line search */
+    double rmax, rmin;
+    double mean_force;       /* mean |contact force| of the last evaluation, N */
+    int contacts;            /* ... touching pairs */
+    int built;               /* the candidates have been built once */
+} statics_work;
+
+/* the committed spring of pair (a, b), a < b; 0 for a pair that had none */
+static double committed_fs(const statics_work *w, int a, int b)
+{
+    int lo = w->start0[a], hi = w->start0[a + 1];
+    if (!w->p->fs0)
+        return 0.0;
+    while (lo < hi) {
+        const int mid = lo + (hi - lo) / 2;
+        if (w->p->j0[mid] < b)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < w->start0[a + 1] && w->p->j0[lo] == b ? w->p->fs0[lo] : 0.0;
+}
+
+/* net loads on every dof at (x, theta), the springs of the end state by
+   backward Euler (statics.h); returns the merit: the sum over free dofs of
+   the squared net forces and net moments over R (N^2) */
+static double evaluate(statics_work *w, const double *x, const double *theta)
+{
+    const sbc_statics_problem *p = w->p;
+    const sbc_frictional *law = &p->law;
+    double sum_f = 0.0, merit = 0.0;
+    int k, q;
+    memset(w->res, 0, sizeof(double) * 3 * (size_t)p->n);
+    w->contacts = 0;
+    for (k = 0; k < w->cand.count; ++k) {
+        const int a = w->cand.i[k], b = w->cand.j[k];
+        const double lx = x[2 * b] - x[2 * a], ly = x[2 * b + 1] - x[2 * a + 1], rs = p->r[a] + p->r[b];
+        const double d2 = lx * lx + ly * ly;
+        double d, nx, ny, dn, fn, fs = 0.0, fx, fy;
+        w->fs[k] = 0.0;
+        w->fsv[3 * k] = w->fsv[3 * k + 1] = w->fsv[3 * k + 2] = 0.0;
+        if (d2 >= rs * rs)
+            continue; /* open: the spring is lost */
+        d = sqrt(d2);
+        nx = lx / d;
+        ny = ly / d;
+        dn = rs - d;
+        if (p->fs0) { /* the spring from its committed value by the increment's slip, capped (eq. 6) */
+            double g[2];
+            const double slip = sbc_path_slip(&p->x0[2 * a], &p->x0[2 * b], lx, ly, g) -
+                                (p->r[a] * (theta[a] - p->theta0[a]) + p->r[b] * (theta[b] - p->theta0[b]));
+            fs = committed_fs(w, a, b);
+            fn = sbc_frictional_force(law, dn, slip, &fs, NULL);
+        } else
+            fn = law->kn * dn;
+        w->fs[k] = fs;
+        w->fsv[3 * k] = -fs * ny; /* fs t, t = (-n_y, n_x) */
+        w->fsv[3 * k + 1] = fs * nx;
+        fx = -fn * nx - fs * ny; /* the force on a: -fn n + fs t */
+        fy = -fn * ny + fs * nx;
+        w->res[3 * a] += fx;
+        w->res[3 * a + 1] += fy;
+        w->res[3 * a + 2] += p->r[a] * fs;
+        w->res[3 * b] -= fx;
+        w->res[3 * b + 1] -= fy;
+        w->res[3 * b + 2] += p->r[b] * fs;
+        sum_f += sqrt(fn * fn + fs * fs);
+        ++w->contacts;
+    }
+    w->mean_force = w->contacts ? sum_f / w->contacts : 0.0;
+    memset(w->R, 0, sizeof(double) * (size_t)(w->nu > 0 ? w->nu : 1));
+    for (q = 0; q < 3 * p->n; ++q)
+        if (w->unk[q] >= 0)
+            w->R[w->unk[q]] += w->res[q];
+    if (p->bc == SBC_BC_T) { /* a_q = P A_q + m on the frame; eq. 15 and the mean translation (condensed.c) */
+        const sbc_frame *f = p->frame;
+        const int L = w->L;
+        for (q = 0; q < f->n; ++q) {
+            const int i = f->particle[q];
+            int c, s2;
+            for (c = 0; c < 2; ++c) {
+                const double u = x[2 * i + c] - w->xe[2 * i + c];
+                double tr = w->lambda[4 + c];
+                for (s2 = 0; s2 < 2; ++s2) {
+                    tr += f->A[3 * q + s2] * w->lambda[2 * c + s2];
+                    w->R[L + 2 * c + s2] += f->A[3 * q + s2] * w->border / f->V * u;
+                }
+                w->R[w->unk[3 * i + c]] += w->border * tr;
+                w->R[L + 4 + c] += w->border * u;
+            }
+        }
+    }
+    for (k = 0; k < w->nu; ++k)
+        merit += w->R[k] * w->row_scale[k] * w->R[k] * w->row_scale[k];
+    return merit;
+}
+
+/* the largest residual of an unknown (net force, net moment over R, (T)'s
+   constraints in N) over the mean contact force */
+static double relative_residual(const statics_work *w)
+{
+    double worst = 0.0;
+    int u;
+    for (u = 0; u < w->nu; ++u)
+        worst = fmax(worst, fabs(w->R[u] * w->row_scale[u]));
+    if (w->mean_force > 0.0)
+        return worst / w->mean_force;
+    return worst > 0.0 ? HUGE_VAL : 0.0;
+}
+
+/* the candidate pairs rebuilt when a disc has moved half the reach since the last build */
+static sbc_status keep_candidates(statics_work *w, const double *x, sbc_error *err)
+{
+    const double lim = 0.25 * w->cand.skin * w->cand.skin;
+    int i, stale = !w->built;
+    for (i = 0; i < w->p->n && !stale; ++i) {
+        const double dx = x[2 * i] - w->cand.x_build[2 * i], dy = x[2 * i + 1] - w->cand.x_build[2 * i + 1];
+        stale = dx * dx + dy * dy > lim;
+    }
+    if (!stale)
+        return SBC_OK;
+    if (sbc_pairs_build(&w->cand, x, w->p->r, w->rmax, err) != SBC_OK)
+        return err->status;
+    w->built = 1;
+    if (w->cand.capacity > 0) {
+        double *fs = realloc(w->fs, sizeof(double) * (size_t)w->cand.capacity);
+        double *fsv = fs ? realloc(w->fsv, sizeof(double) * 3 * (size_t)w->cand.capacity) : NULL;
+        if (fs)
+            w->fs = fs;
+        if (fsv)
+            w->fsv = fsv;
+        if (!fs || !fsv)
+            return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d pairs", w->cand.capacity);
+    }
+    return SBC_OK;
+}
+
+static void work_free(statics_work *w)
+{
+    sbc_pairs_free(&w->cand);
+    free(w->start0);
+    free(w->fs);
+    free(w->fsv);
+    free(w->res);
+    free(w->unk);
+    free(w->R);
+    free(w->row_scale);
+    free(w->dy);
+    free(w->lambda);
+    free(w->xe);
+    free(w->xt);
+    free(w->tt);
+}
+
+static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_error *err)
+{
+    const size_t n = (size_t)p->n;
+    int i, k;
+    memset(w, 0, sizeof *w);
+    w->p = p;
+    w->rmin = DBL_MAX;
+    for (i = 0; i < p->n; ++i) {
+        w->rmax = fmax(w->rmax, p->r[i]);
+        w->rmin = fmin(w->rmin, p->r[i]);
+    }
+    w->start0 = calloc(n + 1, sizeof(int));
+    w->res = malloc(sizeof(double) * 3 * n);
+    w->unk = malloc(sizeof(int) * 3 * n);
+    w->xt = malloc(sizeof(double) * 2 * n);
+    w->tt = malloc(sizeof(double) * n);
+    w->lambda = calloc(6, sizeof(double));
+    w->xe = malloc(sizeof(double) * 2 * n);
+    if (!w->start0 || !w->res || !w->unk || !w->xt || !w->tt || !w->lambda || !w->xe)
+        return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d discs", p->n);
+    {
+        sbc_network net;
+        memset(&net, 0, sizeof net);
+        net.dim = 2;
+        net.n = p->n;
+        net.frame_rotation_zero = p->bc == SBC_BC_T && p->rotation_zero;
+        if ((w->L = sbc_condensed_unknowns(&net, p->frame, p->bc, w->unk, err)) < 0)
+            return err->status;
+    }
+    w->nu = w->L + (p->bc == SBC_BC_T ? 6 : 0);
+    w->border = p->law.kn;
+    w->R = malloc(sizeof(double) * (size_t)(w->nu > 0 ? w->nu : 1));
+    w->row_scale = malloc(sizeof(double) * (size_t)(w->nu > 0 ? w->nu : 1));
+    w->dy = malloc(sizeof(double) * (size_t)(w->nu > 0 ? w->nu : 1));
+    if (!w->R || !w->row_scale || !w->dy)
+        return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d unknowns", w->nu);
+    for (k = 0; k < w->nu; ++k)
+        w->row_scale[k] = 1.0;
+    for (k = 3 * p->n - 1; k >= 0; --k) /* a rotation's row in N: over the (first member's) radius */
+        if (k % 3 == 2 && w->unk[k] >= 0)
+            w->row_scale[w->unk[k]] = 1.0 / p->r[k / 3];
+    for (k = 0; k < p->npair0; ++k) {
+        if (p->i0[k] < 0 || p->i0[k] >= p->j0[k] || p->j0[k] >= p->n || (k > 0 && (p->i0[k] < p->i0[k - 1] ||
+            (p->i0[k] == p->i0[k - 1] && p->j0[k] <= p->j0[k - 1]))))
+            return sbc_fail(err, SBC_ERR_INPUT, "interior newton: committed pair %d (%d, %d) is out of order", k,
+                            p->i0[k], p->j0[k]);
+        w->start0[p->i0[k] + 1]++;
+    }
+    for (i = 0; i < p->n; ++i)
+        w->start0[i + 1] += w->start0[i];
+    /* reach: the pairs within a smallest radius of touching */
+    return sbc_pairs_init(&w->cand, p->n, w->rmin, 0, 0, err);
+}
+
+/* the end state's touching pairs as pair records (engine.h) */
+static sbc_status take_records(statics_work *w, const double *x, const double *theta, sbc_statics_result *res,
+                               sbc_error *err)
+{
+    int k, c = 0;
+    evaluate(w, x, theta);
+    res->contacts = w->contacts;
+    if (!(res->records = malloc(sizeof(double) * SBC_PAIR_RECORD * (size_t)(w->contacts > 0 ? w->contacts : 1))))
+        return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d contacts", w->contacts);
+    for (k = 0; k < w->cand.count; ++k) {
+        const int a = w->cand.i[k], b = w->cand.j[k];
+        const double lx = x[2 * b] - x[2 * a], ly = x[2 * b + 1] - x[2 * a + 1], rs = w->p->r[a] + w->p->r[b];
+        double *o;
+        if (lx * lx + ly * ly >= rs * rs)
+            continue;
+        o = &res->records[SBC_PAIR_RECORD * c++];
+        o[0] = a;
+        o[1] = b;
+        o[2] = 0.0;
+        o[3] = w->fs[k];
+        o[4] = 0.0;
+    }
+    return SBC_OK;
+}
+
+/* the iterate moved by alpha dy from (x, theta, lambda) into (xt, tt) and, with keep, lambda */
+static void move(statics_work *w, const double *x, const double *theta, double alpha, double *xt, double *tt)
+{
+    const int n = w->p->n;
+    int q;
+    for (q = 0; q < 3 * n; ++q) {
+        const double d = w->unk[q] >= 0 ? alpha * w->dy[w->unk[q]] : 0.0;
+        if (q % 3 == 2)
+            tt[q / 3] = theta[q / 3] + d;
+        else
+            xt[2 * (q / 3) + q % 3] = x[2 * (q / 3) + q % 3] + d;
+    }
+}
+
+sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
+                             sbc_error *err)
+{
+    statics_work w;
+    sbc_network net;
+    double merit, shift = SHIFT_FIRST;
+    int it, q;
+    sbc_status st;
+    memset(res, 0, sizeof *res);
+    if ((st = work_init(&w, p, err)) != SBC_OK || (st = keep_candidates(&w, x, err)) != SBC_OK) {
+        work_free(&w);
+        return st;
+    }
+    memcpy(w.xe, x, sizeof(double) * 2 * (size_t)p->n);
+    memset(&net, 0, sizeof net);
+    net.dim = 2;
+    net.n = p->n;
+    net.r = p->r;
+    net.law = p->law;
+    net.x0 = p->x0;
+    net.border = w.border;
+    net.frame_rotation_zero = p->bc == SBC_BC_T && p->rotation_zero;
+    merit = evaluate(&w, x, theta);
+    res->residual = relative_residual(&w);
+    for (it = 0; it < p->max_iterations && !(res->residual <= p->tol); ++it) {
+        double alpha = 1.0, step = 0.0, best = merit, best_alpha = 0.0, lambda_keep[6], merit_before = merit;
+        int h, k;
+        net.shift = shift * p->law.kn;
+        net.x = x;
+        net.npair = w.cand.count;
+        net.i = w.cand.i;
+        net.j = w.cand.j;
+        net.fs = p->fs0 ? w.fsv : NULL;
+        if ((st = sbc_condensed_newton_step(&net, p->frame, p->bc, w.R, w.dy, &res->mechanisms, err)) != SBC_OK)
+            break;
+        for (q = 0; q < 3 * p->n; q += 3)
+            if (w.unk[q] >= 0 || w.unk[q + 1] >= 0) {
+                const double dx = w.unk[q] >= 0 ? w.dy[w.unk[q]] : 0.0, dy = w.unk[q + 1] >= 0 ? w.dy[w.unk[q + 1]] : 0.0;
+                step = fmax(step, sqrt(dx * dx + dy * dy));
+            }
+        if (step > STEP_CAP * w.rmin)
+            alpha = STEP_CAP * w.rmin / step;
+        memcpy(lambda_keep, w.lambda, sizeof lambda_keep);
+        for (h = 0; h <= LINE_HALVINGS; ++h, alpha *= 0.5) { /* backtracking on the merit (Armijo) */
+            double trial;
+            move(&w, x, theta, alpha, w.xt, w.tt);
+            for (k = w.L; k < w.nu; ++k)
+                w.lambda[k - w.L] = lambda_keep[k - w.L] + alpha * w.dy[k];
+            if ((st = keep_candidates(&w, w.xt, err)) != SBC_OK)
+                break;
+            trial = evaluate(&w, w.xt, w.tt);
+            if (trial < best) {
+                best = trial;
+                best_alpha = alpha;
+            }
+            if (trial <= (1.0 - 1e-4 * alpha) * merit)
+                break;
+        }
+        if (st != SBC_OK)
+            break;
+        res->iterations = it + 1;
+        if (!(best_alpha > 0.0)) {
+            snprintf(res->why, sizeof res->why, "the line search found no descent at Newton iteration %d (relative "
+                     "residual %.3e)", it + 1, res->residual);
+            memcpy(w.lambda, lambda_keep, sizeof lambda_keep);
+            evaluate(&w, x, theta);
+            break;
+        }
+        move(&w, x, theta, best_alpha, x, theta);
+        for (k = w.L; k < w.nu; ++k)
+            w.lambda[k - w.L] = lambda_keep[k - w.L] + best_alpha * w.dy[k];
+        if ((st = keep_candidates(&w, x, err)) != SBC_OK)
+            break;
+        merit = evaluate(&w, x, theta);
+        res->residual = relative_residual(&w);
+        /* switched evolution relaxation: the pseudo-time grows as the residual falls after a full step, and
+           shrinks (the step leans towards the net forces' direction) after a cut one */
+        shift = best_alpha >= 1.0 ? shift * sqrt(merit / merit_before) : fmax(shift, SHIFT_LAST) / best_alpha;
+        if (shift < SHIFT_LAST)
+            shift = 0.0;
+        else if (shift > 1e3)
+            shift = 1e3;
+        if (getenv("SBC_STATICS_DEBUG"))
+            fprintf(stderr, "it %d alpha %.3g step %.3g merit %.4e rel %.3e contacts %d mean %.3e mech %d shift %.2e\n", it,
+                    best_alpha, step, merit, res->residual, w.contacts, w.mean_force, res->mechanisms, shift);
+        if (!isfinite(merit)) {
+            st = sbc_fail(err, SBC_ERR_NUMERIC, "interior newton: the residual is not finite at iteration %d", it + 1);
+            break;
+        }
+    }
+    if (st == SBC_OK) {
+        res->converged = res->residual <= p->tol;
+        if (!res->converged && !res->why[0])
+            snprintf(res->why, sizeof res->why, "%d Newton iterations left the relative residual at %.3e (tolerance "
+                     "%.1e)", res->iterations, res->residual, p->tol);
+        st = take_records(&w, x, theta, res, err);
+    }
+    work_free(&w);
+    return st;
+}
+
+void sbc_statics_result_free(sbc_statics_result *res)
+{
+    free(res->records);
+    res->records = NULL;
+}

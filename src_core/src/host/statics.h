@@ -1,0 +1,73 @@
+/* Private: keyword interior newton (docs/servo_bc.md, "Interior"): the
+ * static equilibrium of a 2D disc aggregate whose frame stands at given
+ * positions, reached from its committed state by Newton on the contact
+ * network. The contact law of eq. 6 is integrated over the increment by
+ * backward Euler: the normal force from the end state, the tangential
+ * spring from its committed value by the slip of the increment (elastic
+ * trial, then the Coulomb cap, the return map of a sliding contact), the
+ * slip being t . dl along the straight path of the branch (sbc_path_slip)
+ * less R_i dtheta_i + R_j dtheta_j. Contacts open and close between
+ * iterations; the Jacobian is the condensed tangent's contact blocks
+ * (condensed.h), so each Newton step is exact where no contact changes
+ * status. The frame's condition is part of the system, with the condensed
+ * tangent's unknowns: (D) the frame prescribed; (P) each family of periodic
+ * images shares one fluctuation and one rotation, whose net loads vanish,
+ * the corners following F; (T) every frame particle free under
+ * a_q = P A_q + m, with eq. 15 and the frame's mean translation kept from
+ * the frame's place on entry (the multipliers P, m solved for). Globalized by a backtracking line search on the residual's norm
+ * and a cap on each iteration's largest move; degrees of freedom without
+ * stiffness (rattlers, the rotations of frictionless discs) are held. */
+#ifndef SBC_STATICS_H
+#define SBC_STATICS_H
+
+#include "sbc/contact.h"
+#include "sbc/frame.h"
+#include "sbc/settings.h"
+#include "sbc/status.h"
+
+/* The tolerance of the hosts' solves (sbc_statics_problem's tol): far
+   below every preset's force balance, so that the rows are certified in the
+   relaxation's window of steps; and the iterations before the dynamic
+   relaxation finishes the increment from the last iterate. */
+#define SBC_STATICS_TOL 1e-10
+#define SBC_STATICS_ITERATIONS 60
+
+typedef struct sbc_statics_problem {
+    int n;                      /* discs */
+    const double *r;            /* [n] radii, m */
+    sbc_frictional law;         /* eq. 6 */
+    const sbc_frame *frame;     /* the aggregate's frame */
+    sbc_bc bc;                  /* D, P or T (rotation_zero: T's frame rotations held) */
+    int rotation_zero;
+    const double *x0, *theta0;  /* [2n], [n] the committed centres (m) and rotations (rad) */
+    int npair0;                 /* the committed pairs, sorted by i then j, i < j */
+    const int *i0, *j0;
+    const double *fs0;          /* [npair0] their tangential springs (N, the force on i along t); NULL: no
+                                   tangential history (frictionless) */
+    double tol;                 /* converged: every free dof's net force, and net moment over R, at most tol
+                                   times the mean contact force */
+    int max_iterations;
+} sbc_statics_problem;
+
+typedef struct sbc_statics_result {
+    int iterations;   /* Newton iterations taken */
+    int converged;    /* 1: the residual reached tol */
+    int mechanisms;   /* dofs held for want of stiffness, at the last iteration */
+    double residual;  /* the last relative residual (as tol) */
+    int contacts;     /* touching pairs at the end */
+    double *records;  /* [SBC_PAIR_RECORD contacts] (i, j, 0, fs, 0) of the end state (engine.h) */
+    char why[200];    /* not converged: why */
+} sbc_statics_result;
+
+/* Solves for the unknowns of x [2n] and theta [n], which hold on entry the
+ * start of the iteration (the committed state with the frame at its
+ * commands for the increment, which satisfy eq. 15 under (T)) and on
+ * return the last iterate. SBC_OK whether or not
+ * the iteration converged (res says); an sbc_status on failure (memory, a
+ * non-finite state). res->records is the caller's to free
+ * (sbc_statics_result_free). */
+sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
+                             sbc_error *err);
+void sbc_statics_result_free(sbc_statics_result *res);
+
+#endif
