@@ -294,6 +294,8 @@ sbc_status sbc_aggregate_advance(const sbc_aggregate *a, sbc_controller *ctl, in
 sbc_event sbc_aggregate_run_increment(const sbc_aggregate *a, sbc_controller *ctl, sbc_driver *driver, int first,
                                       sbc_error *err)
 {
+    if (a->tally)
+        a->tally->fallback = 0; /* each increment starts with the static solves */
     for (;;) {
         sbc_event ev;
         if (!first && sbc_aggregate_advance(a, ctl, 0, err) != SBC_OK)

@@ -74,7 +74,7 @@ static int block_2d(const sbc_network *net, int k, double B[MAXB][MAXB])
     t[1] = n[0];
     fn = law->kn * dn;
     fs = net->fs ? net->fs[3 * k] * t[0] + net->fs[3 * k + 1] * t[1] : 0.0;
-    slide = law->ks > 0.0 && fabs(fs) >= law->mu * fn * (1.0 - 1e-12);
+    slide = law->ks > 0.0 && fabs(fs) >= law->mu * fn * (1.0 - SBC_SLIDING_BAND);
     stick = law->ks > 0.0 && !slide;
     for (p = 0; p < 2; ++p)
         for (q = 0; q < 2; ++q)
@@ -178,7 +178,7 @@ static int block_3d(const sbc_network *net, int k, double B[MAXB][MAXB])
         for (p = 0; p < 3; ++p)
             fs[p] = net->fs[3 * k + p];
     mag = sqrt(sbc_dot3(fs, fs));
-    slide = law->ks > 0.0 && mag >= law->mu * fn * (1.0 - 1e-12);
+    slide = law->ks > 0.0 && mag >= law->mu * fn * (1.0 - SBC_SLIDING_BAND);
     stick = law->ks > 0.0 && !slide;
     for (p = 0; p < 3; ++p) {
         f[p] = -fn * n[p] + fs[p];
@@ -419,8 +419,18 @@ static sbc_status solve_unknowns(int nu, long nt, const int *ti, const int *tj, 
         goto done;
     }
     compress_columns(nu, nt, ti, tj, tv, colptr, rows, vals, next);
+    /* an unknown that nothing depends on and that depends on nothing (a rattler) is dropped with its equation;
+       a column without entries whose equation has some (the rotation of a disc whose contacts all slide: its
+       moment balance still binds the translations) is left to the pivots, which drop it with the equation
+       that depends on the others */
+    for (u = 0; u < nu; ++u)
+        keep_row[u] = -1;
+    for (u = 0; u < nu; ++u)
+        for (k = colptr[u]; k < colptr[u + 1]; ++k)
+            if (vals[k] != 0.0)
+                keep_row[rows[k]] = 0;
     for (u = 0; u < nu; ++u) {
-        int used = 0;
+        int used = keep_row[u] == 0;
         for (k = colptr[u]; k < colptr[u + 1] && !used; ++k)
             used = vals[k] != 0.0;
         keep_col[u] = keep_row[u] = used ? 0 : -1;

@@ -7,6 +7,14 @@
 #include "sbc/settings.h"
 #include "sbc/status.h"
 
+/* A contact whose tangential spring is within this fraction of the Coulomb
+ * limit mu fn counts as sliding in the linearizations (the condensed and
+ * affine tangents, interior newton's Jacobian): a contact that slid to the
+ * end of its increment is left a hair below the limit by the steps that
+ * certify the row (1e-11 to 1e-9 of it, measured in docs/servo_bc.md, "Interior"),
+ * and 1e-12 called it sticking there at random. */
+#define SBC_SLIDING_BAND 1e-6
+
 /* The contact network of an aggregate in its current state, in the
  * conventions of the embedded engines (engine.c in 2D, spheres.c in 3D). */
 typedef struct sbc_network {

@@ -34,6 +34,7 @@ struct sbc_point {
     double F[9], P[9];     /* committed */
     double Fc[9], Pc[9];   /* current: of the last converged integrate since commit or revert, else F, P */
     int certified, certified_c; /* the committed and the current state certified (sbc_point_certified) */
+    sbc_statics_tally tally;    /* interior newton: the static solves */
 };
 
 sbc_point_def sbc_point_def_default(void)
@@ -120,6 +121,9 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
     if (d->bonds && d->dim != 2)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: cohesive bonds are the paper's 2D bonds (eqs. 7-8); "
                         "this point is 3D");
+    if (s->interior == SBC_INTERIOR_NEWTON && (d->bonds || d->dim != 2))
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': interior newton solves frictional discs (eq. "
+                        "6, 2D) in this version (expected interior dynamic)", d->words);
     if (d->bonds && s->update == SBC_UPDATE_NEWTON)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': update newton linearizes eq. 6 alone, not "
                         "the cohesive bonds (expected update fixed or secant)", d->words);
@@ -302,6 +306,7 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
     p->a.frame = &p->frame;
     p->a.settings = &p->settings;
     p->a.dt = d->dt;
+    p->a.tally = p->settings.interior == SBC_INTERIOR_NEWTON ? &p->tally : NULL;
     if (d->dim == 3) {
         st = sbc_frame_detect_3d(&p->frame, d->n, d->x, d->r, 0.0, err);
     } else {
@@ -340,7 +345,9 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
     if ((p->ctl = sbc_controller_create(&p->frame, &p->settings, p->mass, d->dt, d->law.kn, err)))
         sbc_controller_accept_uncertified(p->ctl, 1); /* an FE code is told, and decides (integrate's status) */
     if (!p->ctl || !(p->driver = sbc_driver_create(p->ctl, &p->settings, &cb, err)) ||
-        p->a.ops->forces(p->a.engine, err) != SBC_OK || run_increment(p, 1, err) != SBC_EVENT_FINISHED) {
+        p->a.ops->forces(p->a.engine, err) != SBC_OK ||
+        (p->a.tally && sbc_aggregate_advance(&p->a, p->ctl, 1, err) != SBC_OK) ||
+        run_increment(p, 1, err) != SBC_EVENT_FINISHED) {
         sbc_point_free(p);
         return NULL;
     }

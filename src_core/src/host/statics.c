@@ -19,6 +19,7 @@
 /* the pseudo-time term's first weight (times kn) and the weight below which it is dropped (pure Newton) */
 #define SHIFT_FIRST 1.0
 #define SHIFT_LAST 1e-8
+#define SHIFT_MOST 1e6
 
 typedef struct statics_work {
     const sbc_statics_problem *p;
@@ -343,12 +344,17 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         if (st != SBC_OK)
             break;
         res->iterations = it + 1;
-        if (!(best_alpha > 0.0)) {
-            snprintf(res->why, sizeof res->why, "the line search found no descent at Newton iteration %d (relative "
-                     "residual %.3e)", it + 1, res->residual);
+        if (!(best_alpha > 0.0)) { /* no descent: a heavier pseudo-time term (the step turns towards the net
+                                      forces) and the iteration again, until the term outweighs the network */
             memcpy(w.lambda, lambda_keep, sizeof lambda_keep);
-            evaluate(&w, x, theta);
-            break;
+            merit = evaluate(&w, x, theta);
+            shift = fmax(10.0 * shift, 1.0);
+            if (shift > SHIFT_MOST) {
+                snprintf(res->why, sizeof res->why, "the line search found no descent at Newton iteration %d "
+                         "(relative residual %.3e)", it + 1, res->residual);
+                break;
+            }
+            continue;
         }
         move(&w, x, theta, best_alpha, x, theta);
         for (k = w.L; k < w.nu; ++k)
@@ -359,14 +365,11 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         res->residual = relative_residual(&w);
         /* switched evolution relaxation: the pseudo-time grows as the residual falls after a full step, and
            shrinks (the step leans towards the net forces' direction) after a cut one */
-        shift = best_alpha >= 1.0 ? shift * sqrt(merit / merit_before) : fmax(shift, SHIFT_LAST) / best_alpha;
+        shift = best_alpha >= 1.0 ? shift * fmin(0.5, sqrt(merit / merit_before)) : fmax(shift, SHIFT_LAST) / best_alpha;
         if (shift < SHIFT_LAST)
             shift = 0.0;
-        else if (shift > 1e3)
-            shift = 1e3;
-        if (getenv("SBC_STATICS_DEBUG"))
-            fprintf(stderr, "it %d alpha %.3g step %.3g merit %.4e rel %.3e contacts %d mean %.3e mech %d shift %.2e\n", it,
-                    best_alpha, step, merit, res->residual, w.contacts, w.mean_force, res->mechanisms, shift);
+        else if (shift > SHIFT_MOST)
+            shift = SHIFT_MOST;
         if (!isfinite(merit)) {
             st = sbc_fail(err, SBC_ERR_NUMERIC, "interior newton: the residual is not finite at iteration %d", it + 1);
             break;

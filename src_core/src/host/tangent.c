@@ -40,7 +40,7 @@ sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], doubl
         for (k = 0; k < dim; ++k)
             n[k] = lv[k] / len;
         sbc_tensor_apply(dim, Finv, lv, L);
-        stick = law->ks > 0.0 && fs < law->mu * law->kn * dn * (1.0 - 1e-12);
+        stick = law->ks > 0.0 && fs < law->mu * law->kn * dn * (1.0 - SBC_SLIDING_BAND);
         for (i = 0; i < dim; ++i)
             for (k = 0; k < dim; ++k) {
                 const double t = (i == k ? 1.0 : 0.0) - n[i] * n[k]; /* I - n (x) n */

@@ -322,6 +322,10 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
     if (s->cohesive && s->settings.update == SBC_UPDATE_NEWTON && s->settings.bc != SBC_BC_D)
         return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'update': newton linearizes the contacts, not "
                         "the cohesive bonds of 'contact cohesive' (expected fixed or secant)", s->servo_line);
+    if (s->cohesive && s->settings.interior == SBC_INTERIOR_NEWTON)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'interior': newton integrates eq. 6, not the "
+                        "cohesive bonds of 'contact cohesive' (eqs. 7-8), in this version (expected dynamic)",
+                        s->servo_line);
 
     if ((st = sbc_packing_distinct(s->packing.n, s->packing.x, s->packing.r, err)) != SBC_OK ||
         (st = sbc_frame_detect_packing(&r.frame, &s->packing, err)) != SBC_OK)

@@ -227,6 +227,9 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
     if (s->settings.frame_group[0])
         return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'frame' is 2D in this version; the packing is 3D",
                         s->servo_line);
+    if (s->settings.interior == SBC_INTERIOR_NEWTON)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'interior': newton solves discs (2D) in this "
+                        "version; the packing is 3D (expected dynamic)", s->servo_line);
     if ((st = sbc_frame_detect_3d(&p.frame, s->n3, s->x3, s->r3, 0.0, err)) != SBC_OK)
         return st;
     def.n = s->n3;
