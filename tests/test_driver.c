@@ -139,7 +139,7 @@ void test_driver(void)
     sbc_settings s;
     sbc_controller *c, *h;
     sbc_driver *d;
-    sbc_driver_callbacks cb = {NULL, fire_sums, interior, contacts, frame, reduce, confined, row, net_force, NULL, NULL, NULL, NULL};
+    sbc_driver_callbacks cb = {NULL, fire_sums, interior, contacts, frame, reduce, confined, row, net_force, NULL, NULL, NULL, NULL, 0};
     sbc_error err;
     rig g, by_hand;
     long steps = 0, hand_steps = 0;

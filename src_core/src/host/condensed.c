@@ -423,12 +423,18 @@ static sbc_status solve_unknowns(int nu, long nt, const int *ti, const int *tj, 
        a column without entries whose equation has some (the rotation of a disc whose contacts all slide: its
        moment balance still binds the translations) is left to the pivots, which drop it with the equation
        that depends on the others */
-    for (u = 0; u < nu; ++u)
-        keep_row[u] = -1;
-    for (u = 0; u < nu; ++u)
-        for (k = colptr[u]; k < colptr[u + 1]; ++k)
-            if (vals[k] != 0.0)
-                keep_row[rows[k]] = 0;
+    {
+        double largest = 0.0; /* an equation whose entries are round-off (the moment of a sphere's normal forces,
+                                 whose arms stay parallel to them) has none */
+        for (k = 0; k < colptr[nu]; ++k)
+            largest = fmax(largest, fabs(vals[k]));
+        for (u = 0; u < nu; ++u)
+            keep_row[u] = -1;
+        for (u = 0; u < nu; ++u)
+            for (k = colptr[u]; k < colptr[u + 1]; ++k)
+                if (fabs(vals[k]) > 1e-12 * largest)
+                    keep_row[rows[k]] = 0;
+    }
     for (u = 0; u < nu; ++u) {
         int used = keep_row[u] == 0;
         for (k = colptr[u]; k < colptr[u + 1] && !used; ++k)
