@@ -28,6 +28,7 @@ void test_seal_3d(void);
 void test_point(void);
 void test_condensed(void);
 void test_newton(void);
+void test_interior(void);
 void test_bpm_host(void);
 void test_cohesive_host(void);
 void test_driver(void);

@@ -69,6 +69,8 @@ typedef struct sbc_result {
     double hill_mandel;   /* eq. 30 relative to sbc_homogenize_work_scale */
     double unbalanced;    /* max |net force| / mean |contact force| of the interior when accepted (relax.h) */
     double frame_residual; /* frame force residual relative to the frame's forces (servo.h), 0 for D */
+    long newton_iterations; /* interior newton: Newton iterations of the increment's static solves (the host
+                               fills it; the controller leaves 0) */
 } sbc_result;
 
 typedef struct sbc_controller sbc_controller;

@@ -365,7 +365,8 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         res->residual = relative_residual(&w);
         /* switched evolution relaxation: the pseudo-time grows as the residual falls after a full step, and
            shrinks (the step leans towards the net forces' direction) after a cut one */
-        shift = best_alpha >= 1.0 ? shift * fmin(0.5, sqrt(merit / merit_before)) : fmax(shift, SHIFT_LAST) / best_alpha;
+        shift = best_alpha >= 1.0 ? shift * fmin(0.5, sqrt(merit / merit_before))
+                                  : fmax(shift, SHIFT_FIRST) / best_alpha;
         if (shift < SHIFT_LAST)
             shift = 0.0;
         else if (shift > SHIFT_MOST)

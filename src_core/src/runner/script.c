@@ -269,7 +269,10 @@ static int engine_row(void *user_data, const sbc_result *row, const char *line, 
     const int last = row->increment == sbc_settings_total_increments(&s->settings);
     sbc_error err;
     sbc_status st;
+    sbc_result filled = *row;
     r->increment_now = row->increment + 1;
+    filled.newton_iterations = r->tally.iterations;
+    row = &filled;
     if ((st = keep_row(r, row, &err)) != SBC_OK || (r->csv.fp && (st = sbc_csv_write(&r->csv, row, &err)) != SBC_OK) ||
         (st = write_snapshots(s, r->engine, &r->frame, row->increment, last, &err)) != SBC_OK) {
         snprintf(message, cap, "%s", err.message);
@@ -284,7 +287,6 @@ static int engine_row(void *user_data, const sbc_result *row, const char *line, 
                     r->tally.solves, r->tally.iterations, r->tally.residual, r->tally.mechanisms,
                     r->tally.unconverged ? "; the dynamic relaxation finished an unconverged solve: " : "",
                     r->tally.unconverged ? r->tally.why : "");
-            memset(&r->tally, 0, sizeof r->tally);
         }
         fflush(s->log);
     }
@@ -293,6 +295,7 @@ static int engine_row(void *user_data, const sbc_result *row, const char *line, 
         snprintf(message, cap, "%s", err.message);
         return err.status;
     }
+    memset(&r->tally, 0, sizeof r->tally); /* the next increment's solves */
     timespec_get(&r->reported, TIME_UTC);
     return SBC_OK;
 }

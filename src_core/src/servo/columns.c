@@ -52,6 +52,8 @@ const sbc_column sbc_columns[SBC_COLUMNS] = {
     MEASURE("unbalanced", unbalanced, "-", "largest net force on an interior particle over the mean contact force"),
     MEASURE("frame_residual", frame_residual, "-", "the frame's force residual relative to its forces, 0 for D"),
     MEASURE("hill_mandel", hill_mandel, "-", "residual of eq. 30 relative to the work scale"),
+    COUNT("newton_iterations", newton_iterations, 'l', "-",
+          "interior newton: Newton iterations of the increment's static solves, 0 with interior dynamic"),
 };
 
 static unsigned in_dim(int dim) { return dim == 2 || dim == 3 ? 1u << dim : 0u; }

@@ -3,6 +3,7 @@
 #include "update_rules.h"
 
 #include "settings_mixed.h"
+#include "../base/sparse.h"
 #include "sbc/keywords.h"
 #include "base/words.h"
 
@@ -378,7 +379,11 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'remap': value '%s' is not valid (expected x or none)", w);
         } else if (strcmp(key, "interior") == 0) {
             const char *w = next_word(&c, "dynamic|newton", &st);
-            if (w && (strcmp(w, "dynamic") == 0 || strcmp(w, "newton") == 0))
+            if (w && strcmp(w, "newton") == 0 && !sbc_sparse_available())
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'interior': newton needs the sparse direct solver (UMFPACK), "
+                              "which this build of the core was made without (SPARSE=no, or libsuitesparse-dev "
+                              "missing: scripts/install-deps.sh core, then make again); expected dynamic");
+            else if (w && (strcmp(w, "dynamic") == 0 || strcmp(w, "newton") == 0))
                 s->interior = strcmp(w, "newton") == 0 ? SBC_INTERIOR_NEWTON : SBC_INTERIOR_DYNAMIC;
             else if (w)
                 st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'interior': value '%s' is not valid (expected dynamic or "

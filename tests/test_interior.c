@@ -1,0 +1,384 @@
+/* Keyword interior newton (docs/servo_bc.md, "Interior"): each increment
+ * solved as a static equilibrium by Newton on the contact network.
+ *
+ * - Closed forms at `tight`: the prestressed frictional 5 x 5 lattice
+ *   (d = 2 mm, R = 1.01 mm, kn 1e4, ks 2e3 N/m, mu 0.4) under (D) and (P),
+ *   P_ii = -N kn (2R - d F_ii) / ((N - 1) d), P12 = P21 = 0, to 1e-6 of |P11|;
+ *   the touching frictionless 5 x 5 lattice under (T),
+ *   P11 = -kn eps (N - 1) / (N - 3/2), to 1e-5 (test_newton.c); the
+ *   lattices in at most two Newton iterations an increment (their answer is
+ *   the affine start: none).
+ * - A frictionless irregular packing (55 discs, one equilibrium) under (D):
+ *   newton equals dynamic at `tight` to 1e-5 of the stress scale.
+ * - The frictional irregular packing under (D), (P): every row certified
+ *   (the run ends), the same bits in two runs, and the material point's
+ *   condensed tangent after three shear steps against central differences
+ *   of the increment's map from the committed state (the FE code's
+ *   derivative) to 1e-4 of |C|.
+ * - Refusals by name: mixed, remap x, speed > 0, cohesive bonds, spheres,
+ *   a host driver that does not solve its interior. */
+#include "check.h"
+#include "csv_read.h"
+#include "layer.h"
+#include "tests.h"
+
+#include "sbc/driver.h"
+#include "sbc/embedded/script.h"
+#include "sbc/material_point.h"
+#include "sbc/packing.h"
+#include "sbc/settings.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define N 5
+#define SPACING 2e-3
+#define KN 1e4
+
+/* the 55-disc irregular periodic packing of the FE^2 points (docs/fe2.md) */
+static const char generate_script[] = "dimension 2\ngenerate periodic n0 40 rmin 1e-3 polydispersity 1.5 seed 3 strain "
+                                      "0.01\nwrite_packing text %s\n";
+
+static int packing_path(char *path, size_t cap)
+{
+    static int made = 0;
+    char text[512];
+    sbc_error err;
+    snprintf(path, cap, "%s/interior_disc55.txt", test_tmpdir);
+    if (made)
+        return 1;
+    snprintf(text, sizeof text, generate_script, path);
+    if (sbc_script_run_string(text, "interior_generate", NULL, &err) != SBC_OK) {
+        printf("  interior: generate: %s\n", err.message);
+        return 0;
+    }
+    made = 1;
+    return 1;
+}
+
+/* the script (its last "%s" the csv path, before it the words) into rows; the row count or -1 */
+static int run_case(const char *tag, const char *script, const char *words, double rows[][CSV_COLS], int max,
+                    char *csv, size_t cap)
+{
+    char text[2048], name[80];
+    sbc_error err;
+    snprintf(name, sizeof name, "interior_%s", tag);
+    snprintf(csv, cap, "%s/%s.csv", test_tmpdir, name);
+    snprintf(text, sizeof text, script, words, csv);
+    if (sbc_script_run_string(text, name, NULL, &err) != SBC_OK) {
+        printf("  interior: %s: %s\n", name, err.message);
+        return -1;
+    }
+    return csv_read(csv, rows, max);
+}
+
+static void lattices(void)
+{
+    static const char prestressed[] = "dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.01e-3\n"
+                                      "contact frictional kn 1e4 %s\ndensity 2e3\ntimestep 1e-5\n"
+                                      "servo_bc %s file %s\nrun\n";
+    static const char touching[] = "dimension 2\nlattice square 5 5 spacing 2e-3 radius 1e-3\n"
+                                   "contact frictional kn 1e4 ks 0 mu 0\ndensity 2e3\ntimestep 1e-5\n"
+                                   "servo_bc %s file %s\nrun\n";
+    static double rows[8][CSV_COLS];
+    const char *bcs[2] = {"D", "P"};
+    char csv[512], script[512], words[160];
+    int b, k, n;
+    for (b = 0; b < 2; ++b) {
+        double worst = 0.0;
+        snprintf(script, sizeof script, prestressed, "ks 2e3 mu 0.4", "%s", "%s");
+        snprintf(words, sizeof words, "%s F 0.999 0 0 0.998 increments 2 accuracy tight interior newton", bcs[b]);
+        n = run_case(bcs[b], script, words, rows, 8, csv, sizeof csv);
+        CHECK(n == 3);
+        for (k = 1; k < n; ++k) {
+            const double a = rows[k][COL("F11")], c = rows[k][COL("F22")];
+            const double P11 = -N * KN * (2 * 1.01e-3 - SPACING * a) / ((N - 1) * SPACING);
+            const double P22 = -N * KN * (2 * 1.01e-3 - SPACING * c) / ((N - 1) * SPACING);
+            worst = fmax(worst, fmax(fabs(rows[k][COL("P11")] - P11), fabs(rows[k][COL("P22")] - P22)) / fabs(P11));
+            worst = fmax(worst, fmax(fabs(rows[k][COL("P12")]), fabs(rows[k][COL("P21")])) / fabs(P11));
+            CHECK(rows[k][COL("newton_iterations")] <= 2.0); /* the affine start is the answer: 0 */
+        }
+        CHECK(n == 3 && worst <= 1e-6);
+        printf("  interior: frictional 5 x 5 lattice (%s), newton: closed form to %.2e of |P11|, %g Newton iterations "
+               "and %g DEM steps in increment 1\n", bcs[b], worst, n == 3 ? rows[1][COL("newton_iterations")] : -1.0,
+               n == 3 ? rows[1][COL("relax_steps")] : -1.0);
+    }
+    { /* (T) on the touching frictionless lattice */
+        double worst = 0.0;
+        n = run_case("T", touching, "T F 0.99 0 0 1 increments 3 accuracy tight interior newton", rows, 8, csv,
+                     sizeof csv);
+        CHECK(n == 4);
+        for (k = 1; k < n; ++k) {
+            const double eps = 1.0 - rows[k][COL("F11")], want = -KN * eps * (N - 1) / (N - 1.5);
+            worst = fmax(worst, fabs(rows[k][COL("P11")] - want) / fabs(want));
+        }
+        CHECK(n == 4 && worst <= 1e-5);
+        printf("  interior: touching frictionless 5 x 5 lattice (T), newton: P11 = -kn eps (N-1)/(N-3/2) to %.2e\n",
+               worst);
+    }
+    { /* frictionless: linear but for the turning contacts */
+        double most = 0.0;
+        snprintf(script, sizeof script, prestressed, "ks 0 mu 0", "%s", "%s");
+        n = run_case("D_frictionless", script, "D F 0.999 0 0 0.998 increments 3 accuracy tight interior newton",
+                     rows, 8, csv, sizeof csv);
+        CHECK(n == 4);
+        for (k = 1; k < n; ++k)
+            most = fmax(most, rows[k][COL("newton_iterations")]);
+        CHECK(n == 4 && most <= 2.0);
+        printf("  interior: frictionless prestressed lattice (D), newton: at most %g Newton iterations an increment\n",
+               most);
+    }
+}
+
+static const char irregular[] = "dimension 2\nread_packing %s\ncontact frictional kn 1e4 %%s\ndensity 2e3\ntimestep "
+                                "1e-4\nservo_bc %%s file %%s\nrun\n";
+
+/* the largest difference of P over the rows of two runs, relative to the largest |P| */
+static double path_gap(double a[][CSV_COLS], double b[][CSV_COLS], int n)
+{
+    static const char *const comp[4] = {"P11", "P12", "P21", "P22"};
+    double gap = 0.0, scale = 0.0;
+    int k, c;
+    for (k = 0; k < n; ++k)
+        for (c = 0; c < 4; ++c) {
+            gap = fmax(gap, fabs(a[k][COL(comp[c])] - b[k][COL(comp[c])]));
+            scale = fmax(scale, fabs(b[k][COL(comp[c])]));
+        }
+    return scale > 0.0 ? gap / scale : HUGE_VAL;
+}
+
+static void frictionless_irregular(void)
+{
+    static double rows[2][8][CSV_COLS];
+    const char *interior[2] = {"dynamic", "newton"};
+    char path[512], script[1024], law[64], csv[512], words[160], tag[32];
+    int m, n[2] = {-1, -1};
+    long steps[2] = {0, 0};
+    if (!packing_path(path, sizeof path)) {
+        CHECK(0);
+        return;
+    }
+    snprintf(script, sizeof script, irregular, path);
+    snprintf(law, sizeof law, "ks 0 mu 0");
+    for (m = 0; m < 2; ++m) {
+        char full[1024];
+        int k;
+        snprintf(full, sizeof full, script, law, "%s", "%s");
+        snprintf(words, sizeof words, "D F 0.9985 0.003 0 1 increments 3 accuracy tight interior %s", interior[m]);
+        snprintf(tag, sizeof tag, "frictionless_%s", interior[m]);
+        n[m] = run_case(tag, full, words, rows[m], 8, csv, sizeof csv);
+        for (k = 1; k < n[m]; ++k)
+            steps[m] += (long)rows[m][k][COL("relax_steps")];
+    }
+    CHECK(n[0] == 4 && n[1] == 4);
+    if (n[0] == 4 && n[1] == 4) {
+        const double gap = path_gap(rows[1], rows[0], 4);
+        CHECK(gap <= 1e-5);
+        printf("  interior: frictionless 55 discs (D): newton against dynamic %.2e of the stress scale; DEM steps %ld "
+               "against %ld\n", gap, steps[1], steps[0]);
+    }
+}
+
+/* the bytes of two files alike */
+static int same_bytes(const char *a, const char *b)
+{
+    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
+    int ca, cb, same = fa && fb;
+    while (same) {
+        ca = fgetc(fa);
+        cb = fgetc(fb);
+        same = ca == cb;
+        if (ca == EOF || cb == EOF)
+            break;
+    }
+    if (fa)
+        fclose(fa);
+    if (fb)
+        fclose(fb);
+    return same;
+}
+
+static void frictional_irregular(void)
+{
+    static double rows[8][CSV_COLS];
+    const char *bcs[2] = {"D", "P"};
+    char path[512], script[1024], full[1024], csv[2][512], words[160], tag[32];
+    int b, r;
+    if (!packing_path(path, sizeof path)) {
+        CHECK(0);
+        return;
+    }
+    snprintf(script, sizeof script, irregular, path);
+    snprintf(full, sizeof full, script, "ks 5e3 mu 0.5", "%s", "%s");
+    for (b = 0; b < 2; ++b) {
+        long steps = 0, iterations = 0;
+        int n = -1, k;
+        snprintf(words, sizeof words, "%s F 0.9985 0.003 0 1 increments 3 accuracy tight interior newton", bcs[b]);
+        for (r = 0; r < 2; ++r) {
+            snprintf(tag, sizeof tag, "frictional_%s_%d", bcs[b], r);
+            n = run_case(tag, full, words, rows, 8, csv[r], sizeof csv[r]);
+            CHECK(n == 4); /* a row that misses its preset stops the run */
+        }
+        CHECK(same_bytes(csv[0], csv[1]));
+        for (k = 1; k < n; ++k) {
+            steps += (long)rows[k][COL("relax_steps")];
+            iterations += (long)rows[k][COL("newton_iterations")];
+            CHECK(rows[k][COL("unbalanced")] <= 1e-7);
+        }
+        printf("  interior: frictional 55 discs (%s), newton: 3 certified increments in %ld DEM steps and %ld Newton "
+               "iterations, two runs %s\n", bcs[b], steps, iterations,
+               same_bytes(csv[0], csv[1]) ? "byte for byte" : "DIFFER");
+    }
+}
+
+/* C_ijkl of the map (committed state, F) -> P by central differences (step h) */
+static int map_derivative(sbc_point *p, const double F[9], double h, double C[81], sbc_error *err)
+{
+    int k, l, i, j, s;
+    memset(C, 0, sizeof(double) * 81);
+    for (k = 0; k < 2; ++k)
+        for (l = 0; l < 2; ++l) {
+            double P[2][9], G[9], ratio;
+            for (s = 0; s < 2; ++s) {
+                memcpy(G, F, sizeof G);
+                G[3 * k + l] += s == 0 ? h : -h;
+                sbc_point_revert(p);
+                if (sbc_point_integrate(p, G, P[s], &ratio, err) != SBC_POINT_CONVERGED)
+                    return 0;
+            }
+            for (i = 0; i < 2; ++i)
+                for (j = 0; j < 2; ++j)
+                    C[9 * (3 * i + j) + 3 * k + l] = (P[0][3 * i + j] - P[1][3 * i + j]) / (2.0 * h);
+        }
+    return 1;
+}
+
+static void consistent_tangent(void)
+{
+    const char *words[2] = {"D accuracy tight interior newton", "P accuracy tight interior newton"};
+    char path[512];
+    sbc_packing pk;
+    sbc_error err;
+    int w;
+    memset(&pk, 0, sizeof pk);
+    if (!packing_path(path, sizeof path) || sbc_packing_read(&pk, path, &err) != SBC_OK) {
+        CHECK(0);
+        return;
+    }
+    for (w = 0; w < 2; ++w) {
+        sbc_point_def def = sbc_point_def_default();
+        sbc_point *p;
+        double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, P[9], ratio, C[81], D[81], num = 0.0, den = 0.0;
+        int k, mechanisms, ok = 1;
+        def.n = pk.n;
+        def.x = pk.x;
+        def.r = pk.r;
+        def.box = pk.has_box ? pk.box : NULL;
+        def.words = words[w];
+        def.law.kn = KN;
+        def.law.ks = 5e3;
+        def.law.mu = 0.5;
+        def.density = 2e3;
+        def.dt = 1e-4;
+        if (!(p = sbc_point_create(&def, &err))) {
+            printf("  interior: point: %s\n", err.message);
+            CHECK(0);
+            continue;
+        }
+        for (k = 1; k <= 4 && ok; ++k) { /* three committed shear steps, the fourth integrated */
+            F[0] = 1.0 - 0.0005 * k;
+            F[1] = 0.001 * k;
+            ok = sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED;
+            if (ok && k < 4)
+                sbc_point_commit(p);
+        }
+        CHECK(ok);
+        ok = ok && sbc_point_tangent_condensed(p, C, &mechanisms, &err) == SBC_OK && map_derivative(p, F, 1e-7, D, &err);
+        CHECK(ok);
+        for (k = 0; k < 81 && ok; ++k) {
+            num += (C[k] - D[k]) * (C[k] - D[k]);
+            den += D[k] * D[k];
+        }
+        CHECK(ok && sqrt(num) <= 1e-4 * sqrt(den));
+        printf("  interior: material point %s, frictional 55 discs after three shear steps: condensed tangent against "
+               "the increment's map by central differences %.2e of |C| (C1111 %.6g, %.6g)\n", words[w],
+               den > 0.0 ? sqrt(num / den) : -1.0, C[0], D[0]);
+        sbc_point_free(p);
+    }
+    sbc_packing_free(&pk);
+}
+
+static void interior_cb(void *u, const sbc_fire_mix *m, int again, double out[2])
+{
+    (void)u, (void)m, (void)again;
+    out[0] = out[1] = 0.0;
+}
+static void contacts_cb(void *u, double out[4])
+{
+    (void)u;
+    out[0] = out[1] = out[2] = out[3] = 0.0;
+}
+static void frame_cb(void *u, double *buf) { (void)u, (void)buf; }
+static void fire_cb(void *u, double *sums) { (void)u, (void)sums; }
+
+static void refusals(void)
+{
+    static double xy[2 * N * N], rad[N * N], mass[N * N];
+    sbc_settings s;
+    sbc_error err;
+    sbc_packing pk;
+    sbc_frame f;
+    sbc_controller *c = NULL;
+    sbc_driver_callbacks cb;
+    int k;
+    CHECK(sbc_settings_parse_words(&s, "mixed interior newton", &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "keyword 'interior': newton takes D, P and T") != NULL);
+    CHECK(sbc_settings_parse_words(&s, "P interior newton remap x", &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "keyword 'remap'") != NULL);
+    CHECK(sbc_settings_parse_words(&s, "P speed 0.01 interior newton", &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "keyword 'speed'") != NULL);
+    CHECK(sbc_settings_parse_words(&s, "P interior sideways", &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "keyword 'interior': value 'sideways' is not valid (expected dynamic or newton)"));
+    CHECK(sbc_settings_parse_words(&s, "T interior newton", &err) == SBC_OK && s.interior == SBC_INTERIOR_NEWTON &&
+          s.remap == 0 && s.speed == 0.0);
+    /* a host that relaxes its interior itself (LAMMPS, LIGGGHTS, YADE through the driver) */
+    test_square_lattice(N, SPACING, 1.01e-3, xy, rad);
+    memset(&pk, 0, sizeof pk);
+    pk.n = N * N;
+    pk.x = xy;
+    pk.r = rad;
+    for (k = 0; k < N * N; ++k)
+        mass[k] = 1e-5;
+    CHECK(sbc_frame_detect_packing(&f, &pk, &err) == SBC_OK);
+    CHECK((c = sbc_controller_create(&f, &s, mass, 1e-5, KN, &err)) != NULL);
+    memset(&cb, 0, sizeof cb);
+    cb.interior = interior_cb;
+    cb.contacts = contacts_cb;
+    cb.frame = frame_cb;
+    cb.fire_sums = fire_cb;
+    CHECK(c && sbc_driver_create(c, &s, &cb, &err) == NULL &&
+          strstr(err.message, "keyword 'interior': newton solves the interior's static equilibrium") != NULL);
+    sbc_controller_free(c);
+    sbc_frame_free(&f);
+    CHECK(sbc_script_run_string("dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.01e-3\n"
+                                "contact cohesive kn 1e4 ks 2e3 kr 0 fn 1 fs 1 mr 1 mu 0.4\ndensity 2e3\n"
+                                "timestep 1e-5\nservo_bc D interior newton\nrun\n",
+                                "interior_cohesive", NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "keyword 'interior': newton integrates eq. 6, not the cohesive bonds") != NULL);
+    CHECK(sbc_script_run_string("dimension 3\nlattice cubic 3 3 3 spacing 2e-3 radius 1.01e-3\n"
+                                "contact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2650\ntimestep 2e-6\n"
+                                "servo_bc P interior newton\nrun\n",
+                                "interior_spheres", NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "keyword 'interior': newton solves discs (2D) in this version") != NULL);
+}
+
+void test_interior(void)
+{
+    lattices();
+    frictionless_irregular();
+    frictional_irregular();
+    consistent_tangent();
+    refusals();
+}
