@@ -90,8 +90,8 @@ try:
 except core.ServoBCError as e:
     check("keyword 'F'" in str(e), 'material point: F in the words refused: %s' % e)
 
-# converged but not certified: a 60-disc frictionless irregular packing under (T) at `tight` converges at F = I
-# and after a step, but its states miss the stated accuracy (|hill_mandel| 1e-4 > 1e-6): the runner stops, the
+# converged but not certified: a 60-disc frictionless irregular packing under (T) at `tight` (interior dynamic, the
+# runner's path) converges at F = I and after a step, but its states miss the stated accuracy (|hill_mandel| 1e-4 > 1e-6): the runner stops, the
 # material point goes on and says so
 with tempfile.TemporaryDirectory() as tmp:
     packing = os.path.join(tmp, 'irregular.txt')
@@ -113,7 +113,7 @@ with tempfile.TemporaryDirectory() as tmp:
             r.append(float(w[2]))
 check(stopped.returncode != 0 and 'cannot be certified' in stopped.stdout + stopped.stderr,
       'uncertified: the runner stops on the 60-disc frictionless packing under (T), tight')
-point = core.MaterialPoint(x, r, 'T accuracy tight', kn=1e4, density=2e3, dt=1e-5, box=box)
+point = core.MaterialPoint(x, r, 'T accuracy tight interior dynamic', kn=1e4, density=2e3, dt=1e-5, box=box)
 created = point.certified()
 ok, P, ratio = point.integrate([0.9995, 0.0005, 0, 0, 0.9998, 0, 0, 0, 1])
 check(not created and not ok and point.status == 'uncertified' and 'cannot be certified' in point.message and
@@ -126,7 +126,7 @@ check(point.status == 'uncertified' and conv_batch == [False] and P_batch[0] == 
       'uncertified: integrate_points gives the same P bit for bit and the point\'s status %s' % point.status)
 point.commit()
 saved = point.state()
-twin = core.MaterialPoint(x, r, 'T accuracy tight', kn=1e4, density=2e3, dt=1e-5, box=box)
+twin = core.MaterialPoint(x, r, 'T accuracy tight interior dynamic', kn=1e4, density=2e3, dt=1e-5, box=box)
 created_size = len(twin.state())
 twin.load(saved)
 F2 = [0.9993, 0.0007, 0, 0, 0.9997, 0, 0, 0, 1]

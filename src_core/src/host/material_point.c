@@ -4,6 +4,7 @@
 #include "sbc/material_point.h"
 
 #include "aggregate.h"
+#include "../base/sparse.h"
 #include "base/words.h"
 #include "sbc/controller.h"
 #include "sbc/driver.h"
@@ -113,6 +114,15 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
         return err->status;
     if (!d->words || word_at(d->words, "remap") <= 0)
         s->remap = 0;
+    /* a point of frictional discs under D, P or T solves its increments statically unless its words say
+       otherwise (interior, speed or remap given): its P is then a function of F, and its condensed tangent the
+       derivative (docs/servo_bc.md, "Interior") */
+    if (d->dim == 2 && !d->bonds && s->bc != SBC_BC_MIXED && sbc_sparse_available() &&
+        (!d->words || (word_at(d->words, "interior") < 0 && word_at(d->words, "speed") < 0 &&
+                       word_at(d->words, "remap") < 0))) {
+        s->interior = SBC_INTERIOR_NEWTON;
+        s->speed = 0.0;
+    }
     sbc_tensor_identity(d->dim, I);
     for (k = 0; k < 9; ++k)
         if (s->F[k] != I[k])

@@ -20,6 +20,11 @@
 #define SHIFT_FIRST 1.0
 #define SHIFT_LAST 1e-8
 #define SHIFT_MOST 1e6
+/* an iteration whose squared residual is not half the one this many iterations back has stalled: the
+   dynamic relaxation finishes the increment (statics.h) */
+#define STALL_WINDOW 20
+/* how far a step under the pseudo-time term may raise the merit and still be taken */
+#define FLOW_RISE 4.0
 
 typedef struct statics_work {
     const sbc_statics_problem *p;
@@ -288,7 +293,7 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
 {
     statics_work w;
     sbc_network net;
-    double merit, shift = SHIFT_FIRST;
+    double merit, shift = SHIFT_FIRST, ring[STALL_WINDOW];
     int it, q;
     sbc_status st;
     memset(res, 0, sizeof *res);
@@ -308,7 +313,7 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
     merit = evaluate(&w, x, theta);
     res->residual = relative_residual(&w);
     for (it = 0; it < p->max_iterations && !(res->residual <= p->tol); ++it) {
-        double alpha = 1.0, step = 0.0, best = merit, best_alpha = 0.0, lambda_keep[6], merit_before = merit;
+        double alpha = 1.0, step = 0.0, best_alpha = 0.0, lambda_keep[6], merit_before = merit;
         int h, k;
         net.shift = shift * p->law.kn;
         net.x = x;
@@ -326,7 +331,10 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         if (step > STEP_CAP * w.rmin)
             alpha = STEP_CAP * w.rmin / step;
         memcpy(lambda_keep, w.lambda, sizeof lambda_keep);
-        for (h = 0; h <= LINE_HALVINGS; ++h, alpha *= 0.5) { /* backtracking on the merit (Armijo) */
+        /* the step at full length (or the cap); where it does not lower the merit: under a pseudo-time term
+           of at least SHIFT_FIRST, taken all the same if the merit rises at most FLOW_RISE-fold (implicit
+           damped motion through an unstable stretch, as a relaxation passes it); else backtracking */
+        for (h = 0; h <= LINE_HALVINGS; ++h, alpha *= 0.5) {
             double trial;
             move(&w, x, theta, alpha, w.xt, w.tt);
             for (k = w.L; k < w.nu; ++k)
@@ -334,21 +342,18 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
             if ((st = keep_candidates(&w, w.xt, err)) != SBC_OK)
                 break;
             trial = evaluate(&w, w.xt, w.tt);
-            if (trial < best) {
-                best = trial;
+            if (trial <= (1.0 - 1e-4 * alpha) * merit || (h == 0 && shift >= SHIFT_FIRST && trial <= FLOW_RISE * merit)) {
                 best_alpha = alpha;
-            }
-            if (trial <= (1.0 - 1e-4 * alpha) * merit)
                 break;
+            }
         }
         if (st != SBC_OK)
             break;
         res->iterations = it + 1;
-        if (!(best_alpha > 0.0)) { /* no descent: a heavier pseudo-time term (the step turns towards the net
-                                      forces) and the iteration again, until the term outweighs the network */
+        if (!(best_alpha > 0.0)) { /* no step: a heavier pseudo-time term, and the iteration again */
             memcpy(w.lambda, lambda_keep, sizeof lambda_keep);
             merit = evaluate(&w, x, theta);
-            shift = fmax(10.0 * shift, 1.0);
+            shift = fmax(4.0 * shift, SHIFT_FIRST);
             if (shift > SHIFT_MOST) {
                 snprintf(res->why, sizeof res->why, "the line search found no descent at Newton iteration %d "
                          "(relative residual %.3e)", it + 1, res->residual);
@@ -363,10 +368,19 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
             break;
         merit = evaluate(&w, x, theta);
         res->residual = relative_residual(&w);
-        /* switched evolution relaxation: the pseudo-time grows as the residual falls after a full step, and
-           shrinks (the step leans towards the net forces' direction) after a cut one */
-        shift = best_alpha >= 1.0 ? shift * fmin(0.5, sqrt(merit / merit_before))
-                                  : fmax(shift, SHIFT_FIRST) / best_alpha;
+        ring[it % STALL_WINDOW] = merit;
+        if (it >= STALL_WINDOW && merit > 0.5 * ring[(it + 1) % STALL_WINDOW]) {
+            res->iterations = it + 1;
+            snprintf(res->why, sizeof res->why, "Newton stalled: the squared residual did not halve over "
+                     "%d iterations (relative residual %.3e after %d)", STALL_WINDOW, res->residual, it + 1);
+            break;
+        }
+        /* switched evolution relaxation: the pseudo-time grows as the residual falls after a full step that
+           lowered it, and shrinks after a cut step */
+        if (best_alpha < 1.0 && step * best_alpha < STEP_CAP * w.rmin * (1.0 - 1e-12))
+            shift = 2.0 * fmax(shift, SHIFT_FIRST);
+        else if (merit < merit_before)
+            shift *= fmin(0.5, sqrt(merit / merit_before));
         if (shift < SHIFT_LAST)
             shift = 0.0;
         else if (shift > SHIFT_MOST)
