@@ -20,6 +20,8 @@
 #define SHIFT_FIRST 1.0
 #define SHIFT_LAST 1e-8
 #define SHIFT_MOST 1e6
+/* the weight after a cut step: at least this */
+#define SHIFT_CUT 1e-3
 /* an iteration whose squared residual is not half the one this many iterations back has stalled: the
    dynamic relaxation finishes the increment (statics.h) */
 #define STALL_WINDOW 20
@@ -378,7 +380,7 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         /* switched evolution relaxation: the pseudo-time grows as the residual falls after a full step that
            lowered it, and shrinks after a cut step */
         if (best_alpha < 1.0 && step * best_alpha < STEP_CAP * w.rmin * (1.0 - 1e-12))
-            shift = 2.0 * fmax(shift, SHIFT_FIRST);
+            shift = fmax(4.0 * shift, SHIFT_CUT);
         else if (merit < merit_before)
             shift *= fmin(0.5, sqrt(merit / merit_before));
         if (shift < SHIFT_LAST)
