@@ -18,9 +18,11 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
     {"accuracy",
      "`fast`, `balanced`, `tight`, `paper`",
      "a preset: the relaxation criterion and its tolerance, `tol_relative`, `update`, `speed` and "
-         "`damping`; `fast`, `balanced`, `tight` guarantee the relative stress error 1e-2, 1e-4, 1e-6 at every "
-         "converged increment, `paper` is Table 4 as printed and guarantees nothing (see \"Accuracy\"); "
-         "keywords given with it win wherever they stand",
+         "`damping`; `fast`, `balanced`, `tight` guarantee every row's equilibrium residual (force balance "
+         "1e-3, 1e-5, 1e-8), and so the stress to 1e-2, 1e-4, 1e-6 where the path has one equilibrium; on a "
+         "frictional packing they do not fix the path (measured per increment size in \"Interior\"); `paper` "
+         "is Table 4 as printed and guarantees nothing (see \"Accuracy\"); keywords given with it win "
+         "wherever they stand",
      "balanced"},
     {"balance",
      "tol window",
