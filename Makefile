@@ -123,7 +123,7 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B
 	@echo "the core without the sparse solver (SPARSE=no): built, and the condensed tangent's tests"
 	@$(MAKE) --no-print-directory -s B=$(B)/without-sparse SPARSE=no $(B)/without-sparse/run_tests
 	@mkdir -p $(B)/without-sparse/tmp
-	SBC_TEST_SUITE=condensed,point $(B)/without-sparse/run_tests $(B)/servo-bc $(B)/without-sparse/tmp
+	SBC_TEST_SUITE=condensed,point,interior $(B)/without-sparse/run_tests $(B)/servo-bc $(B)/without-sparse/tmp
 	bash tests/layers.sh $(B)
 	bash tests/restart_layout.sh $(B)
 	bash tests/path_error.sh

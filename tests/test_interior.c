@@ -27,6 +27,7 @@
 #include "sbc/material_point.h"
 #include "sbc/packing.h"
 #include "sbc/settings.h"
+#include "base/sparse.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -374,8 +375,23 @@ static void refusals(void)
           strstr(err.message, "keyword 'interior': newton solves discs (2D) in this version") != NULL);
 }
 
+/* a core built without UMFPACK (make SPARSE=no) refuses the keyword by name and keeps the points dynamic */
+static void without_sparse(void)
+{
+    sbc_settings s;
+    sbc_error err;
+    CHECK(sbc_settings_parse_words(&s, "D interior newton", &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "keyword 'interior': newton needs the sparse direct solver (UMFPACK)") != NULL);
+    CHECK(sbc_settings_parse_words(&s, "D", &err) == SBC_OK && s.interior == SBC_INTERIOR_DYNAMIC);
+    printf("  interior: without a sparse solver: %s\n", err.message);
+}
+
 void test_interior(void)
 {
+    if (!sbc_sparse_available()) {
+        without_sparse();
+        return;
+    }
     lattices();
     frictionless_irregular();
     frictional_irregular();
