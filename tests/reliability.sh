@@ -96,7 +96,7 @@ refused_by "a second writer of a results file" "cannot write 'shared.csv': proce
   "$TMP/concurrent.err"
 # the file size limit: a message naming the file and the reason, and no torn row
 (cd "$TMP" && ulimit -f 20 && "$runner" r3_full_disk.sbc > /dev/null 2> full_disk.err); rc=$?
-torn=$(awk -F, '{ if (NF != 23) bad++ } END { print bad + 0 }' "$TMP/full_disk.csv")
+torn=$(awk -F, '{ if (NF != 24) bad++ } END { print bad + 0 }' "$TMP/full_disk.csv")
 last=$(tail -c 1 "$TMP/full_disk.csv" | od -An -c | tr -d ' ')
 if [ "$torn" = 0 ] && [ "$last" = '\n' ]; then
   refused_by "a results file past the file size limit ($(($(wc -l < "$TMP/full_disk.csv") - 1)) whole rows kept)" \
