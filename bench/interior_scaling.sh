@@ -20,20 +20,10 @@ trap 'rm -rf "$tmp"' EXIT
 contact='contact frictional kn 1e4 ks 2e3 mu 0.4
 density 2e3
 timestep 1e-6'
+# shared: timed_run, particles, exponent
+. "$(dirname "$0")/scaling_lib.sh"
 # run NAME PACKING WORDS: "seconds steps newton_iterations" (the steps and iterations of increment 1)
-run() {
-  printf 'dimension 2\nread_packing %s\n%s\nservo_bc %s file %s/%s.csv\nrun\n' "$2" "$contact" "$3" "$tmp" "$1" > "$tmp/$1.sbc"
-  local t0 t1
-  t0=$(date +%s.%N)
-  (cd "$tmp" && "$bin" "$1.sbc" > "$1.log" 2>&1) || { tail -3 "$tmp/$1.log"; exit 1; }
-  t1=$(date +%s.%N)
-  awk -F, -v t="$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')" \
-    'NR == 1 { for (c = 1; c <= NF; c++) { if ($c == "relax_steps") s = c; if ($c == "newton_iterations") k = c } }
-     END { printf "%s %s %s", t, $s, $k }' "$tmp/$1.csv"
-}
-particles() { awk '!/^#/ && $1 != "box" && NF >= 3 { n++ } END { print n }' "$1"; }
-exponent() { awk '{ x = log($1); y = log($2); n++; sx += x; sy += y; sxx += x * x; sxy += x * y }
-  END { if (n > 1) printf "%.2f", (n * sxy - sx * sy) / (n * sxx - sx * sx); else print "-" }'; }
+run() { timed_run "$1" "read_packing $2" "$contact" "$3" relax_steps newton_iterations; }
 printf '%-3s %9s %12s %10s %12s %10s %8s %9s\n' BC particles "dynamic (s)" steps "newton (s)" steps "Newton" ratio
 for bc in D P; do
   : > "$tmp/growth"

@@ -19,21 +19,10 @@ trap 'rm -rf "$tmp"' EXIT
 contact='contact frictional kn 1e4 ks 2e3 mu 0.4
 density 2e3
 timestep 1e-6'
-# run NAME PACKING_LINES WORDS: "particles steps seconds" of the last increment
-run() {
-  printf 'dimension 2\n%s\n%s\nservo_bc %s file %s/%s.csv\nrun\n' "$2" "$contact" "$3" "$tmp" "$1" > "$tmp/$1.sbc"
-  local t0 t1
-  t0=$(date +%s.%N)
-  (cd "$tmp" && "$bin" "$1.sbc" > "$1.log" 2>&1) || { tail -3 "$tmp/$1.log"; exit 1; }
-  t1=$(date +%s.%N)
-  awk -F, -v t="$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", b - a }')" \
-    'NR == 1 { for (c = 1; c <= NF; c++) if ($c == "relax_steps") s = c } END { printf "%s %s", $s, t }' "$tmp/$1.csv"
-}
-# the particle lines of a text packing (x y r): neither the header nor the box, a centre's coordinate may be negative
-particles() { awk '!/^#/ && $1 != "box" && NF >= 3 { n++ } END { print n }' "$1"; }
-# exponent: least squares of log(steps) on log(particles) over "n s" lines
-exponent() { awk '{ x = log($1); y = log($2); n++; sx += x; sy += y; sxx += x * x; sxy += x * y }
-  END { if (n > 1) printf "%.2f", (n * sxy - sx * sy) / (n * sxx - sx * sx); else print "-" }'; }
+# shared: timed_run, particles, exponent
+. "$(dirname "$0")/scaling_lib.sh"
+# run NAME PACKING_LINES WORDS: "steps seconds" of the last increment (seconds to one decimal)
+run() { timed_run "$1" "$2" "$contact" "$3" relax_steps | awk '{ printf "%s %.1f", $2, $1 }'; }
 for preset in $presets; do
 printf '%-9s %-10s %10s %12s %8s %12s %8s\n' preset packing particles "steps none" "s" "steps x" "s"
 : > "$tmp/lat_none"; : > "$tmp/lat_x"; : > "$tmp/irr_none"; : > "$tmp/irr_x"

@@ -1,5 +1,7 @@
 #include "layer.h"
 
+#include <string.h>
+
 #include "sbc/embedded/generate.h"
 
 sbc_engine *test_layer(sbc_packing *p, sbc_frame *f, int fire)
@@ -64,4 +66,49 @@ int test_seal_chain(double *xy, double *r)
         r[n++] = j < 3 ? 1e-3 : 0.75e-3;
     }
     return n;
+}
+
+static void idle_interior(void *u, const sbc_fire_mix *m, int again, double out[2])
+{
+    (void)u, (void)m, (void)again;
+    out[0] = out[1] = 0.0;
+}
+static void idle_contacts(void *u, double out[4])
+{
+    (void)u;
+    out[0] = out[1] = out[2] = out[3] = 0.0;
+}
+static void idle_frame(void *u, double *buf) { (void)u, (void)buf; }
+static void idle_fire_sums(void *u, double *sums) { (void)u, (void)sums; }
+
+int test_driver_refused(const sbc_settings *s, sbc_error *err)
+{
+    double xy[2 * 25], rad[25], mass[25];
+    sbc_packing pk;
+    sbc_frame f;
+    sbc_controller *c;
+    sbc_driver_callbacks cb;
+    sbc_driver *d = NULL;
+    int k;
+    test_square_lattice(5, 2e-3, 1.01e-3, xy, rad);
+    memset(&pk, 0, sizeof pk);
+    pk.n = 25;
+    pk.x = xy;
+    pk.r = rad;
+    for (k = 0; k < 25; ++k)
+        mass[k] = 1e-5;
+    if (sbc_frame_detect_packing(&f, &pk, err) != SBC_OK)
+        return 0;
+    if ((c = sbc_controller_create(&f, s, mass, 1e-5, 1e4, err))) {
+        memset(&cb, 0, sizeof cb);
+        cb.interior = idle_interior;
+        cb.contacts = idle_contacts;
+        cb.frame = idle_frame;
+        cb.fire_sums = idle_fire_sums;
+        d = sbc_driver_create(c, s, &cb, err);
+    }
+    sbc_driver_free(d);
+    sbc_controller_free(c);
+    sbc_frame_free(&f);
+    return c && !d;
 }

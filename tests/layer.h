@@ -5,6 +5,7 @@
 #ifndef SBC_TEST_LAYER_H
 #define SBC_TEST_LAYER_H
 
+#include "sbc/driver.h"
 #include "sbc/embedded/engine.h"
 #include "sbc/frame.h"
 #include "sbc/packing.h"
@@ -27,5 +28,10 @@ void test_square_lattice(int N, double d, double R, double *xy, double *r);
  * 2.52, 4.52 mm and one of radius 0.75 mm at 6.27 mm. Centres xy [2 x 28],
  * radii r [28]; returns the count, 28. */
 int test_seal_chain(double *xy, double *r);
+
+/* A host that relaxes its interior itself and has no linearized network (LAMMPS, LIGGGHTS, YADE through
+ * the driver): a controller under s on the frame of a 5 x 5 lattice (d = 2 mm, R = 1.01 mm) and a driver
+ * whose callbacks measure nothing. 1 when sbc_driver_create refuses s, with the message in err. */
+int test_driver_refused(const sbc_settings *s, sbc_error *err);
 
 #endif

@@ -311,29 +311,10 @@ static void consistent_tangent(void)
     sbc_packing_free(&pk);
 }
 
-static void interior_cb(void *u, const sbc_fire_mix *m, int again, double out[2])
-{
-    (void)u, (void)m, (void)again;
-    out[0] = out[1] = 0.0;
-}
-static void contacts_cb(void *u, double out[4])
-{
-    (void)u;
-    out[0] = out[1] = out[2] = out[3] = 0.0;
-}
-static void frame_cb(void *u, double *buf) { (void)u, (void)buf; }
-static void fire_cb(void *u, double *sums) { (void)u, (void)sums; }
-
 static void refusals(void)
 {
-    static double xy[2 * N * N], rad[N * N], mass[N * N];
     sbc_settings s;
     sbc_error err;
-    sbc_packing pk;
-    sbc_frame f;
-    sbc_controller *c = NULL;
-    sbc_driver_callbacks cb;
-    int k;
     CHECK(sbc_settings_parse_words(&s, "mixed interior newton", &err) == SBC_ERR_INPUT &&
           strstr(err.message, "keyword 'interior': newton takes D, P and T") != NULL);
     CHECK(sbc_settings_parse_words(&s, "P interior newton remap x", &err) == SBC_ERR_INPUT &&
@@ -345,24 +326,8 @@ static void refusals(void)
     CHECK(sbc_settings_parse_words(&s, "T interior newton", &err) == SBC_OK && s.interior == SBC_INTERIOR_NEWTON &&
           s.remap == 0 && s.speed == 0.0);
     /* a host that relaxes its interior itself (LAMMPS, LIGGGHTS, YADE through the driver) */
-    test_square_lattice(N, SPACING, 1.01e-3, xy, rad);
-    memset(&pk, 0, sizeof pk);
-    pk.n = N * N;
-    pk.x = xy;
-    pk.r = rad;
-    for (k = 0; k < N * N; ++k)
-        mass[k] = 1e-5;
-    CHECK(sbc_frame_detect_packing(&f, &pk, &err) == SBC_OK);
-    CHECK((c = sbc_controller_create(&f, &s, mass, 1e-5, KN, &err)) != NULL);
-    memset(&cb, 0, sizeof cb);
-    cb.interior = interior_cb;
-    cb.contacts = contacts_cb;
-    cb.frame = frame_cb;
-    cb.fire_sums = fire_cb;
-    CHECK(c && sbc_driver_create(c, &s, &cb, &err) == NULL &&
+    CHECK(test_driver_refused(&s, &err) &&
           strstr(err.message, "keyword 'interior': newton solves the interior's static equilibrium") != NULL);
-    sbc_controller_free(c);
-    sbc_frame_free(&f);
     CHECK(sbc_script_run_string("dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.01e-3\n"
                                 "contact cohesive kn 1e4 ks 2e3 kr 0 fn 1 fs 1 mr 1 mu 0.4\ndensity 2e3\n"
                                 "timestep 1e-5\nservo_bc D interior newton\nrun\n",

@@ -166,52 +166,16 @@ static void material_point(void)
     sbc_point_free(p);
 }
 
-/* a driver of a host without the newton callback */
-static void interior(void *u, const sbc_fire_mix *m, int again, double out[2])
-{
-    (void)u, (void)m, (void)again;
-    out[0] = out[1] = 0.0;
-}
-static void contacts(void *u, double out[4])
-{
-    (void)u;
-    out[0] = out[1] = out[2] = out[3] = 0.0;
-}
-static void frame(void *u, double *buf) { (void)u, (void)buf; }
-static void fire_sums(void *u, double *sums) { (void)u, (void)sums; }
-
 static void refusals(void)
 {
-    static double xy[2 * N * N], rad[N * N], mass[N * N];
     sbc_settings s;
     sbc_error err;
-    sbc_packing pk;
-    sbc_frame f;
-    sbc_controller *c = NULL;
-    sbc_driver_callbacks cb;
-    int k;
     CHECK(sbc_settings_parse_words(&s, "mixed update newton", &err) == SBC_ERR_INPUT &&
           strstr(err.message, "keyword 'update': newton takes (P) and (T)") != NULL);
     /* remap none: this host has no remap callback either */
     CHECK(sbc_settings_parse_words(&s, "T update newton remap none", &err) == SBC_OK && s.update == SBC_UPDATE_NEWTON);
-    test_square_lattice(N, SPACING, 1.01e-3, xy, rad);
-    memset(&pk, 0, sizeof pk);
-    pk.n = N * N;
-    pk.x = xy;
-    pk.r = rad;
-    for (k = 0; k < N * N; ++k)
-        mass[k] = 1e-5;
-    CHECK(sbc_frame_detect_packing(&f, &pk, &err) == SBC_OK);
-    CHECK((c = sbc_controller_create(&f, &s, mass, 1e-5, KN, &err)) != NULL);
-    memset(&cb, 0, sizeof cb);
-    cb.interior = interior;
-    cb.contacts = contacts;
-    cb.frame = frame;
-    cb.fire_sums = fire_sums;
-    CHECK(c && sbc_driver_create(c, &s, &cb, &err) == NULL &&
+    CHECK(test_driver_refused(&s, &err) &&
           strstr(err.message, "keyword 'update': newton needs the host's linearized contact network") != NULL);
-    sbc_controller_free(c);
-    sbc_frame_free(&f);
     CHECK(sbc_script_run_string("dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.01e-3\n"
                                 "contact cohesive kn 1e4 ks 2e3 kr 0 fn 1 fs 1 mr 1 mu 0.4\ndensity 2e3\n"
                                 "timestep 1e-5\nservo_bc P update newton\nrun\n",
