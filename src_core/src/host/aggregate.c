@@ -186,53 +186,6 @@ static int frame_moves(const sbc_aggregate *a, const sbc_commands *cmd)
     return 0;
 }
 
-/* The Newton iteration's start: the interior carried along by the affine
- * map that fits the frame's move best (least squares about the frame's
- * centroid: M = (sum dn do^T)(sum do do^T)^-1, do, dn the frame's centres
- * about their centroid before and after), as `remap x` carries it during a
- * dynamic move: a lattice's increment is then solved by one Newton step, an
- * irregular packing's starts near its answer. x0 [2n] before, x [2n] after
- * the frame's move (its interior still at x0), overwritten. */
-static void affine_start(const sbc_frame *f, int n, const double *x0, double *x)
-{
-    double co[2] = {0, 0}, cn[2] = {0, 0}, A[2][2] = {{0, 0}, {0, 0}}, B[2][2] = {{0, 0}, {0, 0}}, M[2][2], det;
-    int q, i, k, l;
-    unsigned char *in_frame = calloc((size_t)n, 1);
-    if (!in_frame || f->n < 3)
-        goto done;
-    for (q = 0; q < f->n; ++q) {
-        const int p = f->particle[q];
-        in_frame[p] = 1;
-        for (k = 0; k < 2; ++k) {
-            co[k] += x0[2 * p + k] / f->n;
-            cn[k] += x[2 * p + k] / f->n;
-        }
-    }
-    for (q = 0; q < f->n; ++q) {
-        const int p = f->particle[q];
-        for (k = 0; k < 2; ++k)
-            for (l = 0; l < 2; ++l) {
-                A[k][l] += (x[2 * p + k] - cn[k]) * (x0[2 * p + l] - co[l]);
-                B[k][l] += (x0[2 * p + k] - co[k]) * (x0[2 * p + l] - co[l]);
-            }
-    }
-    det = B[0][0] * B[1][1] - B[0][1] * B[1][0];
-    if (!(fabs(det) > 0.0))
-        goto done;
-    for (k = 0; k < 2; ++k) { /* M = A B^-1 */
-        M[k][0] = (A[k][0] * B[1][1] - A[k][1] * B[1][0]) / det;
-        M[k][1] = (A[k][1] * B[0][0] - A[k][0] * B[0][1]) / det;
-    }
-    for (i = 0; i < n; ++i)
-        if (!in_frame[i]) {
-            const double dx = x0[2 * i] - co[0], dy = x0[2 * i + 1] - co[1];
-            x[2 * i] = cn[0] + M[0][0] * dx + M[0][1] * dy;
-            x[2 * i + 1] = cn[1] + M[1][0] * dx + M[1][1] * dy;
-        }
-done:
-    free(in_frame);
-}
-
 /* interior newton: the frame moved by cmd from the committed state (x0, theta0, the engine's pairs), the
    interior solved there and the engine placed at the solution (statics.h) */
 static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, const sbc_commands *cmd,
@@ -270,7 +223,6 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
     a->ops->move_frame(a->engine, cmd);
     memcpy(x, a->ops->centres(a->engine), sizeof(double) * 2 * (size_t)n);
     memcpy(th, a->ops->rotations(a->engine), sizeof(double) * (size_t)n);
-    affine_start(f, n, x0, x);
     memset(&p, 0, sizeof p);
     p.n = n;
     p.r = a->ops->radii(a->engine);

@@ -20,6 +20,8 @@
 #define SHIFT_FIRST 1.0
 #define SHIFT_LAST 1e-8
 #define SHIFT_MOST 1e6
+/* the most parts a frame's move is cut into when its solve stalls */
+#define SUBSTEPS_MOST 8
 /* the weight after a cut step: at least this */
 #define SHIFT_CUT 1e-3
 /* an iteration whose squared residual is not half the one this many iterations back has stalled: the
@@ -290,7 +292,55 @@ static void move(statics_work *w, const double *x, const double *theta, double a
     }
 }
 
-sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
+/* The Newton iteration's start: the interior carried along by the affine
+ * map that fits the frame's move best (least squares about the frame's
+ * centroid: M = (sum dn do^T)(sum do do^T)^-1, do, dn the frame's centres
+ * about their centroid before and after), as `remap x` carries it during a
+ * dynamic move: a lattice's increment is then solved by one Newton step, an
+ * irregular packing's starts near its answer. x0 [2n] before, x [2n] after
+ * the frame's move (its interior still at x0), overwritten. */
+static void affine_start(const sbc_frame *f, int n, const double *x0, double *x)
+{
+    double co[2] = {0, 0}, cn[2] = {0, 0}, A[2][2] = {{0, 0}, {0, 0}}, B[2][2] = {{0, 0}, {0, 0}}, M[2][2], det;
+    int q, i, k, l;
+    unsigned char *in_frame = calloc((size_t)n, 1);
+    if (!in_frame || f->n < 3)
+        goto done;
+    for (q = 0; q < f->n; ++q) {
+        const int p = f->particle[q];
+        in_frame[p] = 1;
+        for (k = 0; k < 2; ++k) {
+            co[k] += x0[2 * p + k] / f->n;
+            cn[k] += x[2 * p + k] / f->n;
+        }
+    }
+    for (q = 0; q < f->n; ++q) {
+        const int p = f->particle[q];
+        for (k = 0; k < 2; ++k)
+            for (l = 0; l < 2; ++l) {
+                A[k][l] += (x[2 * p + k] - cn[k]) * (x0[2 * p + l] - co[l]);
+                B[k][l] += (x0[2 * p + k] - co[k]) * (x0[2 * p + l] - co[l]);
+            }
+    }
+    det = B[0][0] * B[1][1] - B[0][1] * B[1][0];
+    if (!(fabs(det) > 0.0))
+        goto done;
+    for (k = 0; k < 2; ++k) { /* M = A B^-1 */
+        M[k][0] = (A[k][0] * B[1][1] - A[k][1] * B[1][0]) / det;
+        M[k][1] = (A[k][1] * B[0][0] - A[k][0] * B[0][1]) / det;
+    }
+    for (i = 0; i < n; ++i)
+        if (!in_frame[i]) {
+            const double dx = x0[2 * i] - co[0], dy = x0[2 * i + 1] - co[1];
+            x[2 * i] = cn[0] + M[0][0] * dx + M[0][1] * dy;
+            x[2 * i + 1] = cn[1] + M[1][0] * dx + M[1][1] * dy;
+        }
+done:
+    free(in_frame);
+}
+
+/* one solve from p's committed state (sbc_statics_solve, without the substeps) */
+static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
                              sbc_error *err)
 {
     statics_work w;
@@ -400,6 +450,147 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         st = take_records(&w, x, theta, res, err);
     }
     work_free(&w);
+    return st;
+}
+
+/* the committed state of a substep's problem: its centres, rotations and pairs, owned */
+typedef struct substep_state {
+    double *x0, *theta0, *fs0;
+    int *i0, *j0;
+} substep_state;
+
+static void substep_free(substep_state *c)
+{
+    free(c->x0);
+    free(c->theta0);
+    free(c->fs0);
+    free(c->i0);
+    free(c->j0);
+    memset(c, 0, sizeof *c);
+}
+
+/* q's committed state becomes the solution x, theta with the pairs of res (records sorted by i, then j) */
+static sbc_status substep_commit(sbc_statics_problem *q, substep_state *c, const double *x, const double *theta,
+                                 const sbc_statics_result *res, sbc_error *err)
+{
+    const size_t n = (size_t)q->n, m = (size_t)(res->contacts > 0 ? res->contacts : 1);
+    int k;
+    substep_free(c);
+    c->x0 = malloc(sizeof(double) * 2 * n);
+    c->theta0 = malloc(sizeof(double) * n);
+    c->fs0 = malloc(sizeof(double) * m);
+    c->i0 = malloc(sizeof(int) * m);
+    c->j0 = malloc(sizeof(int) * m);
+    if (!c->x0 || !c->theta0 || !c->fs0 || !c->i0 || !c->j0)
+        return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for a substep of %d discs", q->n);
+    memcpy(c->x0, x, sizeof(double) * 2 * n);
+    memcpy(c->theta0, theta, sizeof(double) * n);
+    for (k = 0; k < res->contacts; ++k) {
+        c->i0[k] = (int)res->records[SBC_PAIR_RECORD * k];
+        c->j0[k] = (int)res->records[SBC_PAIR_RECORD * k + 1];
+        c->fs0[k] = res->records[SBC_PAIR_RECORD * k + 3];
+    }
+    q->x0 = c->x0;
+    q->theta0 = c->theta0;
+    q->npair0 = res->contacts;
+    q->i0 = c->i0;
+    q->j0 = c->j0;
+    q->fs0 = q->fs0 ? c->fs0 : NULL;
+    return SBC_OK;
+}
+
+/* the frame at the fraction t of its move from p's committed place to (xt, tht), the interior at the
+   committed state q (x0, theta0) carried by the frame's affine fit */
+static void substep_start(const sbc_statics_problem *p, const sbc_statics_problem *q, const double *xt,
+                          const double *tht, double t, double *x, double *theta)
+{
+    const sbc_frame *f = p->frame;
+    int k, c;
+    memcpy(x, q->x0, sizeof(double) * 2 * (size_t)p->n);
+    memcpy(theta, q->theta0, sizeof(double) * (size_t)p->n);
+    for (k = 0; k < f->n; ++k) {
+        const int i = f->particle[k];
+        for (c = 0; c < 2; ++c)
+            x[2 * i + c] = p->x0[2 * i + c] + t * (xt[2 * i + c] - p->x0[2 * i + c]);
+        theta[i] = p->theta0[i] + t * (tht[i] - p->theta0[i]);
+    }
+    affine_start(f, p->n, q->x0, x);
+}
+
+sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
+                             sbc_error *err)
+{
+    const size_t n = (size_t)p->n;
+    double *xt = malloc(sizeof(double) * 2 * n), *tht = malloc(sizeof(double) * n);
+    double *xf = malloc(sizeof(double) * 2 * n), *thf = malloc(sizeof(double) * n), *x1 = NULL;
+    sbc_statics_result first, part;
+    substep_state c;
+    sbc_status st;
+    long iterations;
+    int parts, k, ok = 0;
+    memset(res, 0, sizeof *res);
+    memset(&first, 0, sizeof first);
+    memset(&part, 0, sizeof part);
+    memset(&c, 0, sizeof c);
+    if (!xt || !tht || !xf || !thf) {
+        st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d discs", p->n);
+        goto done;
+    }
+    memcpy(xt, x, sizeof(double) * 2 * n); /* the frame's target (its commands) */
+    memcpy(tht, theta, sizeof(double) * n);
+    substep_start(p, p, xt, tht, 1.0, x, theta);
+    if ((st = solve_once(p, x, theta, &first, err)) != SBC_OK || first.converged) {
+        *res = first;
+        memset(&first, 0, sizeof first);
+        goto done;
+    }
+    iterations = first.iterations;
+    if (!(x1 = malloc(sizeof(double) * 3 * n))) {
+        st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d discs", p->n);
+        goto done;
+    }
+    memcpy(x1, x, sizeof(double) * 2 * n); /* the first attempt's iterate, for the relaxation if no cut helps */
+    memcpy(x1 + 2 * n, theta, sizeof(double) * n);
+    /* substeps: the frame's move in 2, 4, 8 equal parts, each solved from the last, until every part
+       converges; else the first attempt stands (the relaxation finishes it) */
+    for (parts = 2; parts <= SUBSTEPS_MOST && !ok && st == SBC_OK; parts *= 2) {
+        sbc_statics_problem q = *p;
+        for (k = 1, ok = 1; k <= parts && ok && st == SBC_OK; ++k) {
+            substep_start(p, &q, xt, tht, (double)k / parts, xf, thf);
+            sbc_statics_result_free(&part);
+            if ((st = solve_once(&q, xf, thf, &part, err)) != SBC_OK)
+                break;
+            iterations += part.iterations;
+            ok = part.converged;
+            if (ok && k < parts)
+                st = substep_commit(&q, &c, xf, thf, &part, err);
+        }
+        substep_free(&c);
+        if (ok && st == SBC_OK) {
+            memcpy(x, xf, sizeof(double) * 2 * n);
+            memcpy(theta, thf, sizeof(double) * n);
+            *res = part;
+            memset(&part, 0, sizeof part);
+            res->iterations = (int)iterations;
+            res->substeps = parts;
+        }
+    }
+    if (!ok && st == SBC_OK) { /* every cut stalled too: the first attempt, for the relaxation */
+        *res = first;
+        memset(&first, 0, sizeof first);
+        res->iterations = (int)iterations;
+        memcpy(x, x1, sizeof(double) * 2 * n);
+        memcpy(theta, x1 + 2 * n, sizeof(double) * n);
+    }
+done:
+    sbc_statics_result_free(&first);
+    sbc_statics_result_free(&part);
+    substep_free(&c);
+    free(xt);
+    free(tht);
+    free(xf);
+    free(thf);
+    free(x1);
     return st;
 }
 

@@ -55,14 +55,19 @@ typedef struct sbc_statics_result {
     int mechanisms;   /* dofs held for want of stiffness, at the last iteration */
     double residual;  /* the last relative residual (as tol) */
     int contacts;     /* touching pairs at the end */
+    int substeps;     /* 0: one solve; else the parts the frame's move was cut into, each solved from the last
+                         (a solve that stalled is tried again in 2, 4, 8 parts) */
     double *records;  /* [SBC_PAIR_RECORD contacts] (i, j, 0, fs, 0) of the end state (engine.h) */
     char why[200];    /* not converged: why */
 } sbc_statics_result;
 
 /* Solves for the unknowns of x [2n] and theta [n], which hold on entry the
- * start of the iteration (the committed state with the frame at its
- * commands for the increment, which satisfy eq. 15 under (T)) and on
- * return the last iterate. SBC_OK whether or not
+ * committed state with the frame at its commands for the increment (which
+ * satisfy eq. 15 under (T)) and on return the solution or the last iterate.
+ * The iteration starts with the interior carried by the affine map that
+ * fits the frame's move best; a stalled solve is tried again with the move
+ * cut into 2, 4, 8 parts, each solved from the last (res->substeps), and
+ * where every cut stalls too, the first attempt's iterate is returned. SBC_OK whether or not
  * the iteration converged (res says); an sbc_status on failure (memory, a
  * non-finite state). res->records is the caller's to free
  * (sbc_statics_result_free). */
