@@ -4,7 +4,9 @@
  * controller_checks.c   refusals, failure messages, the certification of a row
  * controller_update.c   the secant update's scaling and eq. 15 under (T)
  * update_rules.c        the update rules as a table (update_rules.h)
- * controller_state.c    the restart state (save, load) */
+ * controller_state.c    the restart state (save, load)
+ * controller_host.c     the host's queries and changes between steps (commands, results, aim, branch, adopt,
+ *                       remap, progress) */
 #ifndef SBC_CONTROLLER_PRIVATE_H
 #define SBC_CONTROLLER_PRIVATE_H
 
@@ -70,6 +72,11 @@ struct sbc_controller {
     double work_path;    /* the largest work scale |P||F| of the path's converged increments, N/m */
     double sigma_path;   /* the largest |sigma| (largest component) of those increments, N/m */
 };
+
+/* controller.c: an increment's start (its commands, the servo's state, the frame's move) and the interior's
+   map over its opening move (remap x; 0 when it is the identity) */
+void sbc_ctl_start_increment(sbc_controller *c);
+int sbc_ctl_opening_map(const sbc_controller *c, double M[9], double origin[3]);
 
 /* controller_mixed.c: the mixed condition's bookkeeping (Table 5) */
 int sbc_ctl_row_measured(const sbc_controller *c, int i);
