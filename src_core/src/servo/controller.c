@@ -239,7 +239,7 @@ sbc_controller *sbc_controller_create(const sbc_frame *frame, const sbc_settings
         sbc_controller_free(c);
         return NULL;
     }
-    sbc_controller_target_F(c, 0, c->F_now);
+    sbc_settings_target_F(&c->s, 0, c->F_now);
     memcpy(c->F_prev, c->F_now, sizeof c->F_prev);
     sbc_ctl_start_increment(c);
     return c;
@@ -395,7 +395,7 @@ static sbc_event accept(sbc_controller *c, const sbc_snapshot *snap, sbc_error *
         return SBC_EVENT_FINISHED;
     }
     c->increment++;
-    sbc_controller_target_F(c, c->increment, c->F_now);
+    sbc_settings_target_F(&c->s, c->increment, c->F_now);
     sbc_ctl_start_increment(c);
     return SBC_EVENT_INCREMENT;
 }
