@@ -114,10 +114,11 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
         return err->status;
     if (!d->words || word_at(d->words, "remap") <= 0)
         s->remap = 0;
-    /* a point of frictional discs under D, P or T solves its increments statically unless its words say
+    /* a point of frictional discs under D or P solves its increments statically unless its words say
        otherwise (interior, speed or remap given): its P is then a function of F, and its condensed tangent the
-       derivative (docs/servo_bc.md, "Interior") */
-    if (d->dim == 2 && !d->bonds && s->bc != SBC_BC_MIXED && sbc_sparse_available() &&
+       derivative (docs/servo_bc.md, "Interior"); under T the static solves of irregular packings stall, so T
+       keeps the relaxation unless the words ask */
+    if (d->dim == 2 && !d->bonds && (s->bc == SBC_BC_D || s->bc == SBC_BC_P) && sbc_sparse_available() &&
         (!d->words || (word_at(d->words, "interior") < 0 && word_at(d->words, "speed") < 0 &&
                        word_at(d->words, "remap") < 0))) {
         s->interior = SBC_INTERIOR_NEWTON;
