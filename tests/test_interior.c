@@ -11,7 +11,9 @@
  * - A frictionless irregular packing (55 discs, one equilibrium) under (D):
  *   newton equals dynamic at `tight` to 1e-5 of the stress scale.
  * - The frictional irregular packing under (D), (P): every row certified
- *   (the run ends), the same bits in two runs, and the material point's
+ *   (the run ends), the same bits in two runs; under (T), where the solve
+ *   stalls, the relaxation finishing the increment to a certified row; and
+ *   the material point's
  *   condensed tangent after three shear steps against central differences
  *   of the increment's map from the committed state (the FE code's
  *   derivative) to 1e-4 of |C|.
@@ -231,6 +233,18 @@ static void frictional_irregular(void)
         printf("  interior: frictional 55 discs (%s), newton: 3 certified increments in %ld DEM steps and %ld Newton "
                "iterations, two runs %s\n", bcs[b], steps, iterations,
                same_bytes(csv[0], csv[1]) ? "byte for byte" : "DIFFER");
+    }
+    { /* (T): the free frame's discs roll and every solve stalls; the relaxation finishes each increment from
+         the solve's iterate and the rows are certified all the same */
+        int n;
+        snprintf(words, sizeof words, "T F 0.9985 0.003 0 1 increments 1 accuracy fast interior newton");
+        n = run_case("frictional_T", full, words, rows, 8, csv[0], sizeof csv[0]);
+        CHECK(n == 2);
+        CHECK(n == 2 && rows[1][COL("newton_iterations")] > 0.0 && rows[1][COL("relax_steps")] > 20.0 &&
+              rows[1][COL("unbalanced")] <= 1e-3);
+        printf("  interior: frictional 55 discs (T), newton: the stalled solve finished by %g DEM steps of relaxation "
+               "after %g Newton iterations, unbalanced %g\n", n == 2 ? rows[1][COL("relax_steps")] : -1.0,
+               n == 2 ? rows[1][COL("newton_iterations")] : -1.0, n == 2 ? rows[1][COL("unbalanced")] : -1.0);
     }
 }
 
