@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdint>
 #include <csignal>
 #include <cmath>
 #include <cstdarg>
@@ -40,7 +41,7 @@ using namespace FixConst;
 namespace {
 enum { CALLBACK_GROW = 0, CALLBACK_RESTART = 1 };    // Atom::GROW, Atom::RESTART in LAMMPS
 // marks fix servo_bc's restart block (and its layout: bump on any change)
-const double RESTART_MAGIC = 8.020001e7;
+const double RESTART_MAGIC = 8.020002e7;
 }    // namespace
 
 FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
@@ -260,19 +261,25 @@ void FixServoBC::init()
       error->warning(FLERR, (std::string("Fix servo_bc: ") + (strncmp(note, "servo_bc: ", 10) ? note : note + 10)).c_str());
     slow_step_noted = 1;
   }
-  {    // every interior atom is integrated by some fix (else the servo waits for ever)
-    int orphans = 0, all = 0;
+  {    // every interior atom is integrated by some fix (else the servo waits for ever), and so is every atom
+       // outside the fix's group (else the specimen is larger than the group, and its rows are not the specimen's)
+    int orphans[2] = {0, 0}, all[2] = {0, 0};
     for (int i = 0; i < atom->nlocal; i++) {
-      if (!(atom->mask[i] & interior_bit)) continue;
+      const int inside = atom->mask[i] & groupbit;
+      if (inside && !(atom->mask[i] & interior_bit)) continue;
       int owned = 0;
       for (int k = 0; k < modify->nfix && !owned; k++)
         owned = modify->fix[k] != this && (modify->fmask[k] & INITIAL_INTEGRATE) &&
                 (atom->mask[i] & modify->fix[k]->groupbit);
-      orphans += !owned;
+      orphans[inside ? 0 : 1] += !owned;
     }
-    MPI_Allreduce(&orphans, &all, 1, MPI_INT, MPI_SUM, world);
-    if (all)
-      fail(std::to_string(all) + " atoms of group " + id + "_interior are integrated by no fix (add: fix integrate " +
+    MPI_Allreduce(orphans, all, 2, MPI_INT, MPI_SUM, world);
+    if (all[1])
+      fail(std::to_string(all[1]) + " atoms outside group " + group->names[igroup] +
+           " are integrated by no fix: the fix's group holds the whole specimen, whose boundary it finds (use group "
+           "all; keyword frame names a group of boundary particles in 2d)");
+    if (all[0])
+      fail(std::to_string(all[0]) + " atoms of group " + id + "_interior are integrated by no fix (add: fix integrate " +
            id + "_interior nve/sphere" + servo_bc_host::disc_keyword + ")");
   }
   if (restored) {    // the saved atom IDs must be the frame group's, each once
@@ -712,7 +719,7 @@ void FixServoBC::write_restart(FILE *fp)
   if (comm->me != 0) return;
   std::vector<double> list;
   list.push_back(RESTART_MAGIC);
-  list.push_back(0.0);    // the block's length, set below
+  list.resize(1 + SBC_SEALED_HEAD);    // the seal's head, set below (sbc/saved.h)
   list.push_back((double) sbc_frame_state_size(&frame));
   size_t at = list.size();
   list.resize(at + sbc_frame_state_size(&frame));
@@ -729,7 +736,7 @@ void FixServoBC::write_restart(FILE *fp)
   const sbc_fire_state &now = driver ? *sbc_driver_fire(driver) : fire;
   list.push_back(now.alpha);
   list.push_back((double) now.positive);
-  list[1] = (double) list.size();
+  sbc_saved_seal(&list[1], list.size() - 1);
   int bytes = (int) (list.size() * sizeof(double));    // LAMMPS reads the block size in bytes
   fwrite(&bytes, sizeof(int), 1, fp);
   fwrite(list.data(), sizeof(double), list.size(), fp);
@@ -744,11 +751,11 @@ void FixServoBC::restart(char *raw)
   sbc_saved rd;
   if (list[0] != RESTART_MAGIC)
     fail("restart: the saved fix servo_bc data is not this version's (write the restart file again)");
-  sbc_saved_start(&rd, list + 1, 1, "fix servo_bc restart data", &err);
-  const size_t total = (size_t) sbc_saved_int(&rd, "length", 8, 1000000000L);
-  if (rd.st != SBC_OK) fail(err.message);
-  sbc_saved_start(&rd, list + 2, total - 2, "fix servo_bc restart data", &err);
-  const size_t nf = (size_t) sbc_saved_int(&rd, "frame length", 1, (long) (total - 2));
+  // its length and every value after it are sealed: a changed value is refused before any is used
+  size_t total = 0;
+  if (sbc_saved_open(list + 1, SIZE_MAX, &total, "restart: fix servo_bc data", &err) != SBC_OK) fail(err.message);
+  sbc_saved_start(&rd, list + 1 + SBC_SEALED_HEAD, total - SBC_SEALED_HEAD, "fix servo_bc restart data", &err);
+  const size_t nf = (size_t) sbc_saved_int(&rd, "frame length", 1, (long) rd.n);
   if (rd.st != SBC_OK) fail(err.message);
   sbc_frame_free(&frame);
   if (sbc_frame_load(&frame, rd.in + rd.at, nf, &err) != SBC_OK) fail(err.message);
@@ -757,7 +764,7 @@ void FixServoBC::restart(char *raw)
   frame_mass.resize(frame.n);
   for (int q = 0; q < frame.n; q++) frame_tag[q] = (tagint) sbc_saved_int(&rd, "frame atom ID", 1, MAXTAGINT);
   for (int q = 0; q < frame.n; q++) frame_mass[q] = sbc_saved_positive(&rd, "frame mass");
-  const size_t nc = (size_t) sbc_saved_int(&rd, "controller length", 0, (long) (total - 2 - rd.at));
+  const size_t nc = (size_t) sbc_saved_int(&rd, "controller length", 0, (long) (rd.n - rd.at));
   if (rd.st != SBC_OK) fail(err.message);
   saved_state.assign(rd.in + rd.at, rd.in + rd.at + nc);
   rd.at += nc;
@@ -766,6 +773,8 @@ void FixServoBC::restart(char *raw)
   fire.alpha = sbc_saved_positive(&rd, "FIRE alpha");
   fire.positive = sbc_saved_int(&rd, "FIRE steps", 0, 1125899906842624L);
   if (rd.st != SBC_OK) fail(err.message);
+  if (rd.at != rd.n)
+    fail("restart: fix servo_bc data: " + std::to_string(rd.n - rd.at) + " values follow its last field (FIRE steps)");
   restored = 1;
   make_buffers();
 }
@@ -846,6 +855,10 @@ void FixServoBC::fail(const std::string &message)
 void FixServoBC::fail_here(const std::string &message)
 {
   last_error = "Fix servo_bc: " + message;
+  if (!servo_bc_host::one_writes_log && logfile) {
+    fprintf(logfile, "ERROR on proc %d: %s\n", comm->me, last_error.c_str());
+    fflush(logfile);
+  }
   error->one(FLERR, last_error.c_str());
 }
 

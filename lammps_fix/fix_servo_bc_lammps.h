@@ -22,6 +22,8 @@ namespace servo_bc_host {
 constexpr double inertia = 0.5;
 // the integrator's words for that (error messages)
 constexpr const char *disc_keyword = " disc";
+// Error::one writes its message to the log file too
+constexpr bool one_writes_log = true;
 constexpr const char *contact_law = "pair_style gran/hooke/history KN KT 0 0 MU 0";
 
 // kn, kt and fix_history are protected in PairGranHookeHistory; a derived

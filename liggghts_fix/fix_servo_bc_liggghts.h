@@ -27,6 +27,8 @@ namespace servo_bc_host {
 constexpr double inertia = 0.4;
 // the integrator's words for that (error messages)
 constexpr const char *disc_keyword = "";
+// Error::one writes to the screen only: under -screen none its message is lost unless the fix logs it
+constexpr bool one_writes_log = false;
 constexpr const char *contact_law =
     "pair_style gran model hooke/stiffness tangential history absolute_damping on, with fix property/global "
     "kn, kt, gamman_abs, gammat_abs and coefficientFriction";

@@ -89,20 +89,103 @@ layer3d_form() {
 }
 
 # cubic_restart_check PART2_HEAD_FILE: (P) on the frictional 4^3 lattice of
-# $DECK split by write_restart and read_restart after 2000 steps (inside
-# increment 1, which ends at step 2057 in LAMMPS): the uninterrupted run's
+# $DECK split by write_restart and read_restart after 60 steps (inside
+# increment 1: each increment of the lattice takes 40 steps; part 1 must end
+# with fewer rows than the whole run, which is checked): the uninterrupted run's
 # rows (the rotation vectors in the fix's per-atom restart data); part 2 is
 # the deck's variables, read_restart, PART2_HEAD_FILE (what the host does not
 # keep in its restart file) and the deck from fix servo on
 cubic_restart_check() {
-  sed "/^run  *0\$/d; s|^run .*|run 2000\nwrite_restart $TMP/cubic.restart|; /jump SELF loop/d" "$DECK" > "$TMP/cubic_part1.in"
+  sed "/^run  *0\$/d; s|^run .*|run 60\nwrite_restart $TMP/cubic.restart|; /jump SELF loop/d" "$DECK" > "$TMP/cubic_part1.in"
   { sed -n '/^variable  *[a-zA-Z0-9]*  *index/p' "$DECK"; echo "read_restart $TMP/cubic.restart"; cat "$1"
     sed -n '/^fix  *servo /,$p' "$DECK"; } > "$TMP/cubic_part2.in"
   run_deck 1 "$DECK" "$TMP/cubic_full.csv" "$TMP/cubic_full.log" bc P kt 5e3 mu 0.5
-  run_deck 1 cubic_part1.in "$TMP/cubic_split.csv" "$TMP/cubic_part1.log" bc P kt 5e3 mu 0.5 &&
-    run_deck 1 cubic_part2.in "$TMP/cubic_split.csv" "$TMP/cubic_part2.log" bc P kt 5e3 mu 0.5 || tail -3 "$TMP/cubic_part2.log"
+  run_deck 1 cubic_part1.in "$TMP/cubic_split.csv" "$TMP/cubic_part1.log" bc P kt 5e3 mu 0.5
+  local rows_part1 rows_full
+  rows_part1=$(wc -l < "$TMP/cubic_split.csv") rows_full=$(wc -l < "$TMP/cubic_full.csv")
+  if [ "$rows_part1" -ge 2 ] && [ "$rows_part1" -lt "$rows_full" ]; then
+    ok "3d restart: part 1 ends inside the path ($((rows_part1 - 1)) of $((rows_full - 1)) rows written)"
+  else
+    no "3d restart: part 1 wrote $((rows_part1 - 1)) of $((rows_full - 1)) rows (expected a split inside the path)"
+  fi
+  [ -s "$TMP/cubic.restart" ] && run_deck 1 cubic_part2.in "$TMP/cubic_split.csv" "$TMP/cubic_part2.log" bc P kt 5e3 mu 0.5 || tail -3 "$TMP/cubic_part2.log"
   TOLERANCE=1e-12 same_csvs "3d (P) frictional, a run split by write_restart/read_restart inside increment 1$(
     cmp -s "$TMP/cubic_full.csv" "$TMP/cubic_split.csv" && echo ", byte for byte")" 3 "$TMP/cubic_full.csv" "$TMP/cubic_split.csv"
+}
+
+# host_refusals_3d: what a 3d deck of the round-4 reproducers did silently,
+# refused by name: the tangent file (the embedded runner's), a fix group that
+# leaves part of the specimen to no integrator
+host_refusals_3d() {
+  refuses "keyword tangent (the embedded runner's)" 's/accuracy tight/accuracy tight tangent affine t.csv/' \
+    "keyword 'tangent': affine writes the aggregate's tangent"
+  refuses "a fix group without part of the specimen" 's/^fix  *servo all servo_bc/group part id 1:21 23:42 44:64\nfix servo part servo_bc/' \
+    "2 atoms outside group part are integrated by no fix: the fix's group holds the whole specimen"
+}
+
+# screen_none_check: a results file that cannot be written, under -screen
+# none: the fix's ERROR line in the log file (LIGGGHTS' Error::one writes the
+# screen only), exit 1
+screen_none_check() {
+  deck_with 's|file ${csv}|file /proc/servo_bc_none/x.csv|' "$TMP/lost.in"
+  (cd "$TMP" && timeout 60 "$BIN" -in lost.in -var csv x.csv -var bc P -log lost.log -screen none > /dev/null 2>&1)
+  local rc=$?
+  if [ $rc -ge 1 ] && [ $rc -le 123 ] && grep -q "ERROR.*Fix servo_bc: keyword 'file': cannot write '/proc/servo_bc_none/x.csv'" "$TMP/lost.log"; then
+    ok "-screen none: the fix's error on its results file is in the log (exit $rc)"
+  else
+    no "-screen none: exit $rc, log: $(grep -m1 ERROR "$TMP/lost.log" || tail -n 1 "$TMP/lost.log")"
+  fi
+}
+
+# restart_corruption_check: the restart file of cubic_restart_check with one
+# value of fix servo_bc's block changed at a time (the round-4 reproducers:
+# its length, the controller's length, finished, a frame mass, a frame
+# position, then 16 values spread over the block set to 1e300 and nudged by one ulp): each
+# read back by cubic_part2.in ends in the fix's error, never a signal, a
+# hang or a run
+restart_corruption_check() {
+  local cases
+  cases=$(python3 - "$TMP/cubic.restart" "$TMP" <<'PY'
+import struct, sys
+b = bytes(open(sys.argv[1], 'rb').read())
+at = b.find(struct.pack('d', 8.020002e7))
+n = int(struct.unpack_from('d', b, at + 8)[0])      # the block's length after the magic (sbc/saved.h)
+v = lambda k: struct.unpack_from('d', b, at + 8 * k)[0]
+nf = int(v(4)); q = int(v(6) if v(5) == -3.0 else v(5)) # the frame's particles (after the 3D marker)
+named = {'length': 1, 'controller_length': 5 + nf + 2 * q, 'frame_mass': 5 + nf + q,
+         'finished': 6 + nf + 2 * q + int(v(5 + nf + 2 * q)), 'frame_X': (7 if v(5) == -3.0 else 6) + 3}
+cases = [(k, name, 1e6 if name == 'length' else 5e5 if name == 'controller_length' else
+          1.0 if name == 'finished' else 1e300) for name, k in named.items()]
+for k in range(2, n + 1, max(1, n // 16)):
+    cases += [(k, 'v%d_1e300' % k, 1e300), (k, 'v%d_ulp' % k, None)]
+for k, name, value in cases:
+    c = bytearray(b)
+    if value is None:
+        c[at + 8 * k: at + 8 * k + 8] = struct.pack('<q', struct.unpack('<q', c[at + 8 * k: at + 8 * k + 8])[0] ^ 1)
+    else:
+        struct.pack_into('d', c, at + 8 * k, value)
+    if c != b:
+        open('%s/bad_%s.restart' % (sys.argv[2], name), 'wb').write(c); print(name)
+PY
+) || { no "restart corruption: the block of fix servo_bc not found in $TMP/cubic.restart"; return; }
+  local name rc bad=0 count=0 sample=""
+  for name in $cases; do
+    sed "s|read_restart .*|read_restart $TMP/bad_$name.restart|" "$TMP/cubic_part2.in" > "$TMP/bad_restart.in"
+    run_deck 1 bad_restart.in "$TMP/bad_restart.csv" "$TMP/bad_restart.log" bc P kt 5e3 mu 0.5
+    rc=$?
+    count=$((count + 1))
+    if [ $rc -ge 1 ] && [ $rc -le 123 ] && grep -q "ERROR.*Fix servo_bc: restart" "$TMP/bad_restart.log"; then
+      case $name in length | controller_length | finished | frame_mass)
+        sample="$sample; $name: $(grep -m1 -o 'Fix servo_bc: restart.*' "$TMP/bad_restart.log" | cut -c1-110)" ;; esac
+    else
+      bad=$((bad + 1)); echo "  restart corruption $name: exit $rc"; grep -m1 ERROR "$TMP/bad_restart.log" || tail -2 "$TMP/bad_restart.log"
+    fi
+  done
+  if [ "$bad" -eq 0 ] && [ "$count" -ge 10 ]; then
+    ok "3d restart: $count corruptions of fix servo_bc's block each refused by the fix$sample"
+  else
+    no "3d restart: $bad of $count corruptions of fix servo_bc's block not refused"
+  fi
 }
 
 # deck_with SED-EXPRESSION OUT: the lattice deck edited

@@ -40,6 +40,9 @@ done
 { printf 'newton off\ncommunicate single vel yes\nneighbor 0.000255 bin\nneigh_modify delay 0\n'
   sed -n '/^fix  *kn /,/^timestep/p' "$DECK"; } > "$TMP/cubic_head.in"
 cubic_restart_check "$TMP/cubic_head.in"
+restart_corruption_check
+host_refusals_3d
+screen_none_check
 rm -rf "$TMP"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

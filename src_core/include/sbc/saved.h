@@ -34,6 +34,23 @@ double sbc_saved_real(sbc_saved *s, const char *name);
 /* The next value, finite and > 0. */
 double sbc_saved_positive(sbc_saved *s, const char *name);
 
+/* A sealed block: [n, seal of n, checksum, payload ...], n values in all.
+ * A host's restart buffer comes without its size (LAMMPS and LIGGGHTS pass
+ * a bare pointer), so the length cannot be checked against the buffer: the
+ * seal, a hash of n, refuses a changed length before any value past the head
+ * is read, and the checksum, a hash of the payload's bytes, refuses a
+ * changed value anywhere after it. Both are integers below 2^52, exact in a
+ * double. SBC_SEALED_HEAD values precede the payload. */
+#define SBC_SEALED_HEAD 3
+
+/* Writes the head of block [n] (its payload already in place). */
+void sbc_saved_seal(double *block, size_t n);
+
+/* Checks the head and the checksum of the sealed block at in, which holds at
+ * most `most` values (SIZE_MAX where the host does not say); *n: its length.
+ * The message names what and the value that fails. */
+sbc_status sbc_saved_open(const double *in, size_t most, size_t *n, const char *what, sbc_error *err);
+
 #ifdef __cplusplus
 }
 #endif

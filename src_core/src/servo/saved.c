@@ -2,6 +2,8 @@
 #include "sbc/saved.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 void sbc_saved_start(sbc_saved *s, const double *in, size_t n, const char *what, sbc_error *err)
 {
@@ -62,4 +64,44 @@ double sbc_saved_positive(sbc_saved *s, const char *name)
         return 0.0;
     }
     return v;
+}
+
+/* FNV-1a over the bytes of n doubles from the basis h, folded to 52 bits */
+static double hash_of(const double *v, size_t n, uint64_t h)
+{
+    size_t k;
+    for (k = 0; k < n; ++k) {
+        unsigned char b[sizeof(double)];
+        size_t i;
+        memcpy(b, &v[k], sizeof b);
+        for (i = 0; i < sizeof b; ++i)
+            h = (h ^ b[i]) * 1099511628211ULL;
+    }
+    return (double)((h ^ (h >> 52)) & ((1ULL << 52) - 1));
+}
+
+#define SEAL_BASIS 0x6a09e667f3bcc908ULL     /* of the length */
+#define CHECKSUM_BASIS 0xcbf29ce484222325ULL /* of the payload (FNV's own) */
+
+void sbc_saved_seal(double *block, size_t n)
+{
+    block[0] = (double)n;
+    block[1] = hash_of(block, 1, SEAL_BASIS);
+    block[2] = hash_of(block + SBC_SEALED_HEAD, n - SBC_SEALED_HEAD, CHECKSUM_BASIS);
+}
+
+sbc_status sbc_saved_open(const double *in, size_t most, size_t *n, const char *what, sbc_error *err)
+{
+    const double hi = most < 1e15 ? (double)most : 1e15;
+    if (!(in[0] >= SBC_SEALED_HEAD && in[0] <= hi) || in[0] != floor(in[0]))
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: its length is %.17g (expected an integer from %d to %.0f): the "
+                        "block is corrupted or not this version's", what, in[0], SBC_SEALED_HEAD, hi);
+    if (in[1] != hash_of(in, 1, SEAL_BASIS))
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: its length %.17g does not match its seal %.17g: the block is "
+                        "corrupted", what, in[0], in[1]);
+    *n = (size_t)in[0];
+    if (in[2] != hash_of(in + SBC_SEALED_HEAD, *n - SBC_SEALED_HEAD, CHECKSUM_BASIS))
+        return sbc_fail(err, SBC_ERR_INPUT, "%s: its %zu values do not match their checksum %.17g: a value was "
+                        "changed after it was written", what, *n - SBC_SEALED_HEAD, in[2]);
+    return SBC_OK;
 }
