@@ -54,7 +54,8 @@ FixServoBC::FixServoBC(LAMMPS *lmp, int narg, char **arg) :
   std::memset(&csv, 0, sizeof csv);
   sbc_fire_start(&fire);
   if (sbc_settings_parse(&settings, narg - 3, arg + 3, &err) != SBC_OK ||
-      sbc_settings_check_dimension(&settings, domain->dimension, &err) != SBC_OK)
+      sbc_settings_check_dimension(&settings, domain->dimension, &err) != SBC_OK ||
+      sbc_settings_check_host(&settings, &err) != SBC_OK)
     fail(err.message);
   if (!atom->sphere_flag) fail("requires atom_style sphere");
   if (std::strcmp(update->unit_style, "si") != 0)

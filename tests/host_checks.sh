@@ -118,7 +118,7 @@ cubic_restart_check() {
 # leaves part of the specimen to no integrator
 host_refusals_3d() {
   refuses "keyword tangent (the embedded runner's)" 's/accuracy tight/accuracy tight tangent affine t.csv/' \
-    "keyword 'tangent': affine writes the aggregate's tangent"
+    "keyword 'tangent' (affine t.csv) is the embedded runner's"
   refuses "a fix group without part of the specimen" 's/^fix  *servo all servo_bc/group part id 1:21 23:42 44:64\nfix servo part servo_bc/' \
     "2 atoms outside group part are integrated by no fix: the fix's group holds the whole specimen"
 }

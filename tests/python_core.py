@@ -3,8 +3,11 @@ the module loads without it, its version and result columns are the runner's,
 and a host handle is made on a 5 x 5 lattice (16 frame discs) or refused with
 the core's message. Prints "N passed, N failed".
 Usage: python3 tests/python_core.py LIBSERVO_BC.so SERVO_BC"""
+import copy
 import ctypes
 import os
+import pickle
+import struct
 import subprocess
 import sys
 import tempfile
@@ -147,5 +150,57 @@ again = core.MaterialPoint(words='P accuracy balanced', **lattice)
 ok, P, ratio = again.integrate([0.999, 0, 0, 0, 0.999, 0, 0, 0, 1])
 check(ok and again.status == 'converged' and again.certified() and ratio == 1.0,
       'uncertified: a certified increment says converged (the 5 x 5 lattice under (P))')
+
+
+def refused(label, call, expected):
+    """call() raises ServoBCError (or TypeError) whose text holds expected"""
+    try:
+        call()
+    except (core.ServoBCError, TypeError) as e:
+        check(expected in str(e), '%s: refused: %s' % (label, e))
+        return
+    check(False, '%s: not refused' % label)
+
+
+# round 4's reproducers of MaterialPoint: no Python use crashes, every array is checked by length, a state is
+# tied to the definition it came from
+G = [0.999, 0.001, 0, 0, 0.999, 0, 0, 0, 1]
+closed = core.MaterialPoint(words='P accuracy balanced', **lattice)
+closed.__del__()
+refused('a point used after __del__', lambda: closed.integrate(G), 'this point was closed')
+closed.close()                        # twice: nothing
+source = core.MaterialPoint(words='P accuracy balanced', **lattice)
+source.integrate(G)
+source.commit()
+shallow, deep = copy.copy(source), copy.deepcopy(source)
+P_source = source.integrate(G)[1]
+del source
+check(shallow.integrate(G)[1] == P_source and deep.integrate(G)[1] == P_source and shallow._p != deep._p,
+      'copy.copy and copy.deepcopy: points of their own at the committed state, P bit for bit the original\'s')
+refused('pickle', lambda: pickle.dumps(deep), 'not pickled')
+refused('F of 4 values', lambda: deep.integrate([0.999, 0.001, 0, 0.999]), 'F has 4 values (expected 9)')
+refused('x two values short', lambda: core.MaterialPoint(**dict(lattice, x=lattice['x'][:-2], words='P')),
+        'x has %d values (expected %d)' % (len(lattice['x']) - 2, len(lattice['x'])))
+refused('a box of 3 values', lambda: core.MaterialPoint(**dict(lattice, box=[0, 1, 0], words='P')),
+        'box has 3 values (expected 4)')
+refused('a batch of 3 points and 1 F', lambda: core.integrate_points([shallow, deep, shallow], [G]),
+        '3 points and 1 F')
+_, conv, _, message = core.integrate_points([deep, deep], [G, G], threads=2)
+check(conv == [False, False] and 'points 0 and 1 are the same sbc_point' in message,
+      'one point twice in a batch: refused before either is integrated: %s' % message)
+refused('a perturbation step of 1e-300', lambda: deep.tangent(1e-300), 'perturbation step 1e-300 (expected 1e-12')
+refused('a perturbation step of 0', lambda: deep.tangent(0), 'perturbation step 0 (expected 1e-12')
+state = deep.state()
+refused('a state into a point with another kn', lambda: core.MaterialPoint(
+    **dict(lattice, kn=2 * lattice['kn'], words='P accuracy balanced')).load(state), 'another contact law')
+values = list(struct.unpack('%dd' % (len(state) // 8), state))
+for at, label in ((len(values) - 18, 'committed F11'), (len(values) // 2, 'a value in the middle')):
+    bad = list(values)
+    bad[at] = 1e300
+    refused('a state whose %s is 1e300' % label, lambda: deep.load(struct.pack('%dd' % len(bad), *bad)),
+            'do not match their checksum')
+refused('a state of 7 bytes', lambda: deep.load(state[:7]), 'a state of 7 bytes')
+check(deep.integrate(G)[1] == P_source, 'after the refused loads the point integrates from its committed state, '
+      'bit for bit')
 print('%d passed, %d failed' % (passed, failed))
 sys.exit(failed > 0)

@@ -297,6 +297,68 @@ static void seal_in_point(void)
     }
 }
 
+/* a point's saved state [n] of definition d refused where it is not this point's (round 4's reproducers): a
+ * point with another kn, other radii, other words; a changed length, F11 or frame rotation of 1e300, one ulp
+ * anywhere; another version's; cut short. Each leaves the point at its committed state. */
+static void state_refusals(const sbc_point_def *d, const double *state, size_t n)
+{
+    static const char *const other[3] = {"contact law (kn, ks, mu, bonds)", "packing (x, r, box)",
+                                         "run (words, density, time step)"};
+    double *bad = malloc(sizeof(double) * n), P0[9], P1[9], F[9], Fc[9], ratio;
+    sbc_point_def e;
+    sbc_point *q;
+    sbc_error err;
+    size_t k, refused = 0, cases = 0;
+    int c;
+    if (!bad)
+        return;
+    for (c = 0; c < 3; ++c) { /* a point made otherwise */
+        double r2[N * N];
+        e = *d;
+        if (c == 0)
+            e.law.kn *= 2.0;
+        if (c == 1) {
+            memcpy(r2, d->r, sizeof r2);
+            r2[12] *= 0.999;
+            e.r = r2;
+        }
+        if (c == 2)
+            e.words = "D accuracy tight";
+        if ((q = sbc_point_create(&e, &err))) {
+            CHECK(sbc_point_load(q, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, other[c]) != NULL);
+            printf("  point state into a point of another %s: %s\n", other[c] + 0, err.message);
+            sbc_point_free(q);
+        }
+    }
+    if (!(q = sbc_point_create(d, &err))) {
+        free(bad);
+        return;
+    }
+    diag(0.9995, 1.0, F);
+    CHECK(sbc_point_integrate(q, F, P0, &ratio, &err) == SBC_POINT_CONVERGED);
+    for (k = 0; k < n; ++k) { /* one value at a time: one ulp, then 1e300 */
+        int way;
+        for (way = 0; way < 2; ++way) {
+            memcpy(bad, state, sizeof(double) * n);
+            if (way == 0)
+                bad[k] = nextafter(bad[k], INFINITY);
+            else if (bad[k] != 1e300)
+                bad[k] = 1e300;
+            ++cases;
+            refused += sbc_point_load(q, bad, n, &err) == SBC_ERR_INPUT;
+        }
+    }
+    CHECK(refused == cases);
+    CHECK(sbc_point_load(q, state, n - 1, &err) == SBC_ERR_INPUT);
+    CHECK(sbc_point_integrate(q, F, P1, &ratio, &err) == SBC_POINT_CONVERGED && memcmp(P0, P1, sizeof P0) == 0);
+    sbc_point_committed(q, Fc, P1);
+    CHECK(Fc[0] == 1.0);
+    printf("  point state: %zu of %zu changed values refused (one ulp and 1e300 at each of %zu), the point at its "
+           "committed state after each\n", refused, cases, n);
+    sbc_point_free(q);
+    free(bad);
+}
+
 /* integrate, revert, integrate: the same bits; the state into a new point */
 static void commit_revert_restore(const char *words)
 {
@@ -331,9 +393,7 @@ static void commit_revert_restore(const char *words)
         CHECK(sbc_point_integrate(p, F, P2, &ratio, &err) == SBC_POINT_CONVERGED);
         CHECK(sbc_point_integrate(q, F, P3, &ratio, &err) == SBC_POINT_CONVERGED);
         CHECK(memcmp(P2, P3, sizeof P2) == 0);
-        state[0] = 99.0; /* another version's state */
-        CHECK(sbc_point_load(q, state, n, &err) == SBC_ERR_INPUT && strstr(err.message, "not one of this point"));
-        CHECK(sbc_point_load(q, state, n - 1, &err) == SBC_ERR_INPUT);
+        state_refusals(&d, state, n);
     }
     free(state);
     sbc_point_free(q);
@@ -474,7 +534,7 @@ static void batch(void)
     enum { COUNT = 6 };
     const sbc_point_def d = lattice("P accuracy balanced");
     sbc_point *pts[2][COUNT];
-    double F[9 * COUNT], P[2][9 * COUNT], ratio[COUNT], alone[9];
+    double F[9 * COUNT], P[2][9 * COUNT], ratio[COUNT], alone[9], C[81];
     int status[COUNT], k, t, made = 1;
     sbc_error err;
     for (k = 0; k < COUNT; ++k) {
@@ -495,6 +555,25 @@ static void batch(void)
               strstr(err.message, "point 2: ") && status[2] == SBC_POINT_FAILED && status[3] == SBC_POINT_CONVERGED &&
               ratio[2] == 0.5);
         CHECK(memcmp(&P[0][27], &P[1][27], sizeof alone) == 0);
+        /* one point twice, a NULL point: refused before any is integrated (two threads on one point raced) */
+        sbc_point *const kept = pts[1][4];
+        pts[1][4] = pts[1][1];
+        CHECK(sbc_points_integrate(pts[1], COUNT, F, P[1], status, ratio, 2, &err) == SBC_ERR_INPUT &&
+              strstr(err.message, "points 1 and 4 are the same sbc_point") && status[0] == SBC_POINT_FAILED);
+        pts[1][4] = NULL;
+        CHECK(sbc_points_integrate(pts[1], COUNT, F, P[1], status, ratio, 2, &err) == SBC_ERR_INPUT &&
+              strstr(err.message, "point 4 is NULL"));
+        pts[1][4] = kept;
+        /* NULL handles and steps lost to round-off, refused by name */
+        CHECK(sbc_point_integrate(NULL, F, alone, &ratio[0], &err) == SBC_POINT_FAILED &&
+              strstr(err.message, "integrate of a NULL point") && ratio[0] == 0.5);
+        CHECK(sbc_point_load(NULL, F, 9, &err) == SBC_ERR_INPUT && sbc_point_state_size(NULL) == 0 &&
+              sbc_point_commit(NULL) == SBC_ERR_INPUT && !sbc_point_certified(NULL));
+        sbc_point_revert(NULL);
+        CHECK(sbc_point_tangent_affine(NULL, C, &err) == SBC_ERR_INPUT);
+        CHECK(sbc_point_tangent_perturbation(pts[1][0], 1e-300, C, &err) == SBC_ERR_INPUT &&
+              strstr(err.message, "perturbation step 1e-300 (expected 1e-12 to 0.1"));
+        CHECK(sbc_point_tangent_perturbation(pts[1][0], 0.0, C, &err) == SBC_ERR_INPUT);
     }
     for (k = 0; k < COUNT; ++k)
         for (t = 0; t < 2; ++t)

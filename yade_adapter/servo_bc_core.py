@@ -182,6 +182,17 @@ class _Error(ctypes.Structure):
 POINT_STATUS = ('converged', 'failed', 'uncertified')
 
 
+def _values(name, values, count):
+    """values as a list of count floats, or a ServoBCError naming name and the count given (the C side reads count)."""
+    try:
+        out = [float(v) for v in values]
+    except TypeError:
+        raise ServoBCError('material point: %s is not a sequence of numbers' % name) from None
+    if len(out) != count:
+        raise ServoBCError('material point: %s has %d values (expected %d)' % (name, len(out), count))
+    return out
+
+
 class MaterialPoint:
     """The aggregate as a material point (material_point.h, docs/fe2.md): a packing (x [dim n], dim 2 or 3)
     under (D), (P) or (T) on an embedded engine. integrate(F) -> (converged, P, step_ratio) from the committed state
@@ -190,10 +201,20 @@ class MaterialPoint:
     revert(); state() -> bytes of the committed state, load(bytes) in a point made alike; tangent(h) -> C
     (81 values, C[9 (3i + j) + 3k + l] = dP_ij / dF_kl) by perturbation, tangent() the affine one, condensed()
     the condensed one. F and P:
-    9 values, row-major 3 x 3 slots (the 2 x 2 block in 2D)."""
+    9 values, row-major 3 x 3 slots (the 2 x 2 block in 2D). Every array is checked against the length the C side
+    reads. copy.copy and copy.deepcopy make a new point of the same definition at the committed state (as after
+    revert()); close() frees the C side at once, after which every call raises ServoBCError."""
 
     def __init__(self, x, r, words, kn, ks=0.0, mu=0.0, density=2e3, dt=1e-6, box=None, dim=2, bonds=None):
+        self._p = None
         lib = library()
+        if dim not in (2, 3):
+            raise ServoBCError('material point: dimension %r (expected 2 or 3)' % (dim,))
+        r = _values('r', r, len(r) if hasattr(r, '__len__') else -1)
+        x = _values('x', x, dim * len(r))
+        box = _values('box', box, 4) if box else None
+        self._args = dict(x=x, r=r, words=words, kn=kn, ks=ks, mu=mu, density=density, dt=dt, box=box, dim=dim,
+                          bonds=bonds)
         self._x, self._r = doubles(x), doubles(r)
         self._box = doubles(box) if box else None
         self._words = words.encode()
@@ -211,42 +232,67 @@ class MaterialPoint:
         if not self._p:
             raise ServoBCError(err.message.decode())
 
+    def close(self):
+        """Frees the C side now (else at collection); the point is unusable afterwards."""
+        handle, self._p = getattr(self, '_p', None), None
+        free('sbc_point_free', handle)
+
     def __del__(self):
-        free('sbc_point_free', getattr(self, '_p', None))
+        self.close()
+
+    def _handle(self):
+        if not getattr(self, '_p', None):
+            raise ServoBCError('material point: this point was closed, or its creation failed')
+        return self._p
+
+    def __copy__(self):
+        other = MaterialPoint(**self._args)
+        other.load(self.state())
+        return other
+
+    def __deepcopy__(self, memo):
+        return self.__copy__()
+
+    def __reduce__(self):
+        raise TypeError('a MaterialPoint is not pickled: store state() and load() it into a point made alike')
 
     def integrate(self, F):
         P, ratio, err = (ctypes.c_double * 9)(), ctypes.c_double(), _Error()
-        status = library().sbc_point_integrate(self._p, doubles(F), P, ctypes.byref(ratio), ctypes.byref(err))
+        status = library().sbc_point_integrate(self._handle(), doubles(_values('F', F, 9)), P, ctypes.byref(ratio),
+                                               ctypes.byref(err))
         self.message = err.message.decode() if status else ''
         self.status = POINT_STATUS[status]
         return status == 0, list(P), ratio.value
 
     def certified(self):
-        return bool(library().sbc_point_certified(self._p))
+        return bool(library().sbc_point_certified(self._handle()))
 
     def commit(self):
-        if library().sbc_point_commit(self._p):
+        if library().sbc_point_commit(self._handle()):
             raise ServoBCError('material point: out of memory for its committed state')
 
     def revert(self):
-        library().sbc_point_revert(self._p)
+        library().sbc_point_revert(self._handle())
 
     def state(self):
-        n = library().sbc_point_state_size(self._p)
+        n = library().sbc_point_state_size(self._handle())
         out = (ctypes.c_double * n)()
-        library().sbc_point_save(self._p, out)
+        library().sbc_point_save(self._handle(), out)
         return bytes(out)
 
     def load(self, data):
         n = len(data) // ctypes.sizeof(ctypes.c_double)
         err = _Error()
-        if library().sbc_point_load(self._p, (ctypes.c_double * n).from_buffer_copy(data), n, ctypes.byref(err)):
+        if len(data) % ctypes.sizeof(ctypes.c_double):
+            raise ServoBCError('material point: a state of %d bytes (a state is whole doubles)' % len(data))
+        if library().sbc_point_load(self._handle(), (ctypes.c_double * n).from_buffer_copy(data), n,
+                                    ctypes.byref(err)):
             raise ServoBCError(err.message.decode())
 
     def condensed(self):
         """The condensed tangent at the current state: (C, mechanisms), C as tangent() gives it."""
         C, count, err = (ctypes.c_double * 81)(), ctypes.c_int(), _Error()
-        if library().sbc_point_tangent_condensed(self._p, C, ctypes.byref(count), ctypes.byref(err)):
+        if library().sbc_point_tangent_condensed(self._handle(), C, ctypes.byref(count), ctypes.byref(err)):
             raise ServoBCError(err.message.decode())
         return list(C), count.value
 
@@ -254,8 +300,8 @@ class MaterialPoint:
         """At the current state (the last integrate): by perturbation of step h, or affine (Voigt) without h."""
         C, err = (ctypes.c_double * 81)(), _Error()
         lib = library()
-        status = lib.sbc_point_tangent_perturbation(self._p, h, C, ctypes.byref(err)) if h else \
-            lib.sbc_point_tangent_affine(self._p, C, ctypes.byref(err))
+        status = lib.sbc_point_tangent_perturbation(self._handle(), float(h), C, ctypes.byref(err)) \
+            if h is not None else lib.sbc_point_tangent_affine(self._handle(), C, ctypes.byref(err))
         if status:
             raise ServoBCError(err.message.decode())
         return list(C)
@@ -268,8 +314,10 @@ def integrate_points(points, Fs, threads=1):
     status ('converged', 'failed' or 'uncertified': converged, P returned, but not certified) is its .status.
     Bit for bit the results of integrating each point alone, whatever the thread count."""
     n = len(points)
-    handles = (ctypes.c_void_p * n)(*[p._p for p in points])
-    F = doubles([v for f in Fs for v in f])
+    if len(Fs) != n:
+        raise ServoBCError('material points: %d points and %d F (expected one F per point)' % (n, len(Fs)))
+    handles = (ctypes.c_void_p * n)(*[p._handle() for p in points])
+    F = doubles([v for k, f in enumerate(Fs) for v in _values('F of point %d' % k, f, 9)])
     P, status, ratio, err = (ctypes.c_double * (9 * n))(), (ctypes.c_int * n)(), (ctypes.c_double * n)(), _Error()
     library().sbc_points_integrate(handles, n, F, P, status, ratio, threads, ctypes.byref(err))
     for point, code in zip(points, status):

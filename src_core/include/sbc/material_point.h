@@ -58,6 +58,13 @@ sbc_point_def sbc_point_def_default(void);
 
 typedef struct sbc_point sbc_point;
 
+/* The error contract of the functions below: err must not be NULL; a NULL
+ * point is refused (SBC_ERR_INPUT or SBC_POINT_FAILED, with the message in
+ * err; without err: nothing done, 0 returned, the outputs zeroed), never
+ * followed. Arrays are read and written at the sizes each function states;
+ * a caller whose arrays are shorter (a binding from another language) checks
+ * their lengths first, as the Python module's MaterialPoint does. */
+
 /* Builds the engine, the frame and the controller, relaxes the packing at
  * F = I and commits that state (certified or not: sbc_point_certified).
  * NULL with the message in err. */
@@ -115,6 +122,8 @@ sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *e
  * beyond dim 0. Fails with the message of the first perturbation that does
  * not converge (C then 0). */
 sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], sbc_error *err);
+#define SBC_POINT_H_SMALLEST 1e-12 /* the perturbation steps h accepted */
+#define SBC_POINT_H_LARGEST 0.1
 
 /* Many points at once (the integration points of a mesh): points[k] to F
  * [9k .. 9k + 8], into P [9k ..], status [k] (sbc_point_status) and ratio

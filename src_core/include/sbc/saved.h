@@ -43,6 +43,10 @@ double sbc_saved_positive(sbc_saved *s, const char *name);
  * double. SBC_SEALED_HEAD values precede the payload. */
 #define SBC_SEALED_HEAD 3
 
+/* A hash of bytes (FNV-1a folded to 52 bits, exact in a double), chained:
+ * from is 0 or the hash of what came before. */
+double sbc_saved_hash(const void *data, size_t bytes, double from);
+
 /* Writes the head of block [n] (its payload already in place). */
 void sbc_saved_seal(double *block, size_t n);
 

@@ -156,6 +156,10 @@ sbc_status sbc_settings_parse_words(sbc_settings *s, const char *words, sbc_erro
  * expects. */
 sbc_status sbc_settings_check_dimension(sbc_settings *s, int dim, sbc_error *err);
 
+/* What a host's fix (LAMMPS, LIGGGHTS, YADE, the C API's host) cannot serve,
+ * refused by name: the keyword tangent, which is the embedded runner's. */
+sbc_status sbc_settings_check_host(const sbc_settings *s, sbc_error *err);
+
 /* The warning a host prints when the words give (D) the servo's keywords
  * (settings.ignored): 1 with the message in out, 0 when there is none. */
 int sbc_settings_ignored_message(const sbc_settings *s, char *out, size_t cap);

@@ -48,12 +48,6 @@ sbc_driver *sbc_driver_create(sbc_controller *c, const sbc_settings *s, const sb
                  "this host relaxes its interior with its own dynamics (expected dynamic)", sbc_bc_name(s->bc));
         return NULL;
     }
-    if (s->tangent != SBC_TANGENT_NONE) {
-        sbc_fail(err, SBC_ERR_INPUT, "servo_bc %s: keyword 'tangent': %s writes the aggregate's tangent from the "
-                 "embedded engine's contact network (servo-bc and the material point); a host's fix does not "
-                 "(expected no keyword 'tangent')", sbc_bc_name(s->bc), sbc_tangent_name(s->tangent));
-        return NULL;
-    }
     if (!(d = calloc(1, sizeof *d))) {
         sbc_fail(err, SBC_ERR_NOMEM, "servo_bc: out of memory");
         return NULL;

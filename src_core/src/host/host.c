@@ -79,13 +79,8 @@ sbc_host *sbc_host_create(const char *words, int dim, int n, const double *x, co
     if (sbc_settings_parse_words(&h->settings, words, &err) != SBC_OK ||
         sbc_settings_check_dimension(&h->settings, dim, &err) != SBC_OK)
         return fail_create(h, &err, msg, cap);
-    if (h->settings.tangent != SBC_TANGENT_NONE) {
-        sbc_fail(&err, SBC_ERR_INPUT, "servo_bc: keyword 'tangent' (%s %s) is the embedded runner's: its "
-                 "perturbations rerun the aggregate from saved states and its condensed tangent reads the engine's "
-                 "contacts; run the case with servo-bc, or take the tangent from the material point (docs/fe2.md)",
-                 sbc_tangent_name(h->settings.tangent), h->settings.tangent_file);
+    if (sbc_settings_check_host(&h->settings, &err) != SBC_OK)
         return fail_create(h, &err, msg, cap);
-    }
     if (h->settings.update == SBC_UPDATE_NEWTON && h->settings.bc != SBC_BC_D) {
         sbc_fail(&err, SBC_ERR_INPUT, "servo_bc %s: keyword 'update': newton needs the host's linearized contact "
                  "network, which the embedded runner and the material point give and this host does not (expected "

@@ -19,7 +19,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define POINT_STATE_VERSION 1.0
+#define POINT_STATE_VERSION 2.0
+/* a state's head after its seal (sbc/saved.h): the version, the dimension, the particle count and the hashes of
+   the definition it was saved from (definition_of) */
+#define POINT_HEAD (SBC_SEALED_HEAD + 6)
 
 struct sbc_point {
     sbc_aggregate a;       /* its engine, frame, settings, masses, dt and contact law */
@@ -36,7 +39,27 @@ struct sbc_point {
     double Fc[9], Pc[9];   /* current: of the last converged integrate since commit or revert, else F, P */
     int certified, certified_c; /* the committed and the current state certified (sbc_point_certified) */
     sbc_statics_tally tally;    /* interior newton: the static solves */
+    double definition[3];       /* hashes of the packing, the contact law and the run's words (definition_of) */
 };
+
+/* what a saved state depends on beyond its own values, as three hashes (sbc_saved_hash): the packing (x, r,
+   box), the contact law (eq. 6, the bonds' eqs. 7-8) and the run (words, density, time step) */
+static void definition_of(const sbc_point_def *d, double h[3])
+{
+    const double law[3] = {d->law.kn, d->law.ks, d->law.mu}, run[2] = {d->density, d->dt};
+    h[0] = sbc_saved_hash(d->x, sizeof(double) * (size_t)(d->dim * d->n), 0.0);
+    h[0] = sbc_saved_hash(d->r, sizeof(double) * (size_t)d->n, h[0]);
+    if (d->box)
+        h[0] = sbc_saved_hash(d->box, sizeof(double) * 4, h[0]);
+    h[1] = sbc_saved_hash(law, sizeof law, 0.0);
+    if (d->bonds) {
+        const double b[7] = {d->bonds->kn, d->bonds->ks, d->bonds->kr, d->bonds->fn_u, d->bonds->fs_u, d->bonds->m_u,
+                             d->bonds->mu};
+        h[1] = sbc_saved_hash(b, sizeof b, h[1]);
+    }
+    h[2] = sbc_saved_hash(run, sizeof run, 0.0);
+    h[2] = sbc_saved_hash(d->words ? d->words : "", d->words ? strlen(d->words) : 0, h[2]);
+}
 
 sbc_point_def sbc_point_def_default(void)
 {
@@ -157,13 +180,13 @@ static sbc_event run_increment(sbc_point *p, int first, sbc_error *err)
     return ev;
 }
 
-size_t sbc_point_state_size(const sbc_point *p) { return p->size; }
+size_t sbc_point_state_size(const sbc_point *p) { return p ? p->size : 0; }
 
 /* the values of the current state (sbc_point_save's layout): the engine's
    grow and shrink with its pair list */
 static size_t current_size(const sbc_point *p)
 {
-    return 2 + p->a.ops->state_size(p->a.engine) + 1 + sbc_controller_state_size(p->ctl) + 2 + 18;
+    return POINT_HEAD + 1 + p->a.ops->state_size(p->a.engine) + 1 + sbc_controller_state_size(p->ctl) + 2 + 18;
 }
 
 /* the current state into out [current_size] (sbc_point_save's layout) */
@@ -171,7 +194,13 @@ static void save_current(const sbc_point *p, const double F[9], const double P[9
 {
     const size_t ne = p->a.ops->state_size(p->a.engine), nc = sbc_controller_state_size(p->ctl);
     sbc_fire_state *fire = sbc_driver_fire(p->driver);
+    double *const block = out;
+    out += SBC_SEALED_HEAD;
     *out++ = POINT_STATE_VERSION;
+    *out++ = p->frame.dim;
+    *out++ = p->a.n;
+    memcpy(out, p->definition, sizeof p->definition);
+    out += 3;
     *out++ = (double)ne;
     p->a.ops->save(p->a.engine, out);
     out += ne;
@@ -182,28 +211,62 @@ static void save_current(const sbc_point *p, const double F[9], const double P[9
     *out++ = (double)fire->positive;
     memcpy(out, F, sizeof(double) * 9);
     memcpy(out + 9, P, sizeof(double) * 9);
+    sbc_saved_seal(block, current_size(p));
+}
+
+/* the head of a saved state in [n]: sealed, this version, and saved by a point of p's definition */
+static sbc_status check_head(const sbc_point *p, const double *in, size_t n, sbc_error *err)
+{
+    static const char *const part[3] = {"packing (x, r, box)", "contact law (kn, ks, mu, bonds)",
+                                        "run (words, density, time step)"};
+    size_t sealed = 0;
+    int k;
+    if (n < POINT_HEAD + 1)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: a saved state of %zu values (a state has at least %d)", n,
+                        POINT_HEAD + 1);
+    if (sbc_saved_open(in, n, &sealed, "material point: the saved state", err) != SBC_OK)
+        return err->status;
+    if (sealed != n)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: the saved state holds %zu values and %zu were given", sealed,
+                        n);
+    in += SBC_SEALED_HEAD;
+    if (in[0] != POINT_STATE_VERSION)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: the saved state is of version %g, this point's %g (save it "
+                        "again with this version)", in[0], POINT_STATE_VERSION);
+    if (in[1] != p->frame.dim || in[2] != p->a.n)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: the saved state is of a %gD point of %g particles, this "
+                        "one %dD of %d", in[1], in[2], p->frame.dim, p->a.n);
+    for (k = 0; k < 3; ++k)
+        if (in[3 + k] != p->definition[k])
+            return sbc_fail(err, SBC_ERR_INPUT, "material point: the saved state was made by a point of another %s "
+                            "(load it into a point created from the same definition)", part[k]);
+    return SBC_OK;
 }
 
 /* in [n] into the engine, the controller, FIRE, F and P */
 static sbc_status load_state(sbc_point *p, const double *in, size_t n, double F[9], double P[9], sbc_error *err)
 {
     const size_t nc = sbc_controller_state_size(p->ctl);
-    const double ne_saved = n >= 2 ? in[1] : -1.0;
     sbc_fire_state *fire = sbc_driver_fire(p->driver);
     sbc_saved s;
+    double ne_saved;
     size_t at, ne;
     int k;
-    /* the engine's share is as long as its pair list was (in[1]); the rest is this point's */
-    if (n < 3 + nc + 20 || in[0] != POINT_STATE_VERSION || !(ne_saved >= 0.0) || ne_saved != floor(ne_saved) ||
-        ne_saved != (double)(n - (3 + nc + 20)) || in[2 + (size_t)ne_saved] != (double)nc)
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: the saved state (%zu values, version %g) is not one of "
-                        "this point (version %g, %zu controller values)", n, n > 0 ? in[0] : 0.0, POINT_STATE_VERSION,
-                        nc);
-    ne = (size_t)ne_saved;
-    if (p->a.ops->load(p->a.engine, in + 2, ne, err) != SBC_OK ||
-        sbc_controller_load(p->ctl, in + 3 + ne, nc, err) != SBC_OK)
+    if (check_head(p, in, n, err) != SBC_OK)
         return err->status;
-    at = 3 + ne + nc;
+    in += POINT_HEAD;
+    n -= POINT_HEAD;
+    /* the engine's share is as long as its pair list was (in[0]); the rest is this point's */
+    ne_saved = in[0];
+    if (n < 2 + nc + 20 || !(ne_saved >= 0.0) || ne_saved != floor(ne_saved) || ne_saved != (double)(n - (2 + nc + 20)) ||
+        in[1 + (size_t)ne_saved] != (double)nc)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: the saved state's %zu values are not one of this point "
+                        "(%zu controller values)", n, nc);
+    ne = (size_t)ne_saved;
+    if (p->a.ops->load(p->a.engine, in + 1, ne, err) != SBC_OK ||
+        sbc_controller_load(p->ctl, in + 2 + ne, nc, err) != SBC_OK)
+        return err->status;
+    at = 2 + ne + nc;
     sbc_saved_start(&s, in + at, n - at, "material point state", err);
     fire->alpha = sbc_saved_real(&s, "FIRE alpha");
     fire->positive = sbc_saved_int(&s, "FIRE steps", 0, 1L << 52);
@@ -214,7 +277,7 @@ static sbc_status load_state(sbc_point *p, const double *in, size_t n, double F[
     return s.st;
 }
 
-int sbc_point_certified(const sbc_point *p) { return p->certified_c; }
+int sbc_point_certified(const sbc_point *p) { return p ? p->certified_c : 0; }
 
 /* the committed buffer sized for n values; 0 when out of memory (the buffer as it was) */
 static int committed_room(sbc_point *p, size_t n)
@@ -237,6 +300,8 @@ static void keep_centres(sbc_point *p)
 
 sbc_status sbc_point_commit(sbc_point *p)
 {
+    if (!p)
+        return SBC_ERR_INPUT;
     if (!committed_room(p, current_size(p)))
         return SBC_ERR_NOMEM;
     p->certified = p->certified_c;
@@ -252,7 +317,7 @@ void sbc_point_revert(sbc_point *p)
 {
     sbc_error err;
     double F[9], P[9];
-    if (p->at_committed)
+    if (!p || p->at_committed)
         return;
     /* a state this point saved itself: it loads */
     load_state(p, p->committed, p->size, F, P, &err);
@@ -264,15 +329,34 @@ void sbc_point_revert(sbc_point *p)
 
 void sbc_point_committed(const sbc_point *p, double F[9], double P[9])
 {
+    if (!p) {
+        memset(F, 0, sizeof(double) * 9);
+        memset(P, 0, sizeof(double) * 9);
+        return;
+    }
     memcpy(F, p->F, sizeof p->F);
     memcpy(P, p->P, sizeof p->P);
 }
 
-void sbc_point_save(const sbc_point *p, double *out) { memcpy(out, p->committed, sizeof(double) * p->size); }
+void sbc_point_save(const sbc_point *p, double *out)
+{
+    if (p)
+        memcpy(out, p->committed, sizeof(double) * p->size);
+}
+
+/* SBC_ERR_INPUT with the message when p is NULL (a handle never created, or freed and cleared) */
+static sbc_status no_point(const sbc_point *p, const char *what, sbc_error *err)
+{
+    return p ? SBC_OK : sbc_fail(err, SBC_ERR_INPUT, "material point: %s of a NULL point", what);
+}
 
 sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *err)
 {
     double F[9], P[9];
+    if (no_point(p, "load", err) != SBC_OK)
+        return err->status;
+    if (!in)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: load of a NULL state");
     if (load_state(p, in, n, F, P, err) != SBC_OK) {
         p->at_committed = 0;
         sbc_point_revert(p);
@@ -310,6 +394,7 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
         sbc_point_free(p);
         return NULL;
     }
+    definition_of(d, p->definition);
     p->a.ops = d->dim == 3 ? &sbc_engine_ops_spheres : &sbc_engine_ops_discs;
     p->a.law = d->law;
     p->a.bonded = d->bonds != NULL;
@@ -376,9 +461,11 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
 sbc_point_status sbc_point_integrate(sbc_point *p, const double F[9], double P[9], double *step_ratio,
                                      sbc_error *err)
 {
-    sbc_point_revert(p);
     *step_ratio = 0.5;
     memset(P, 0, sizeof(double) * 9);
+    if (no_point(p, "integrate", err) != SBC_OK)
+        return SBC_POINT_FAILED;
+    sbc_point_revert(p);
     if (sbc_controller_aim(p->ctl, F, err) != SBC_OK)
         return SBC_POINT_FAILED;
     sbc_driver_remap(p->driver);
@@ -407,8 +494,12 @@ sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], 
     int k, l, side, ij;
     sbc_status st = SBC_OK;
     memset(C, 0, sizeof(double) * 81);
-    if (!(h > 0.0) || !isfinite(h))
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: perturbation step %g is not positive", h);
+    if (no_point(p, "tangent", err) != SBC_OK)
+        return err->status;
+    if (!(h >= SBC_POINT_H_SMALLEST && h <= SBC_POINT_H_LARGEST))
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: perturbation step %g (expected %g to %g: F's entries are "
+                        "near 1, so a smaller step is lost to round-off and a larger one is not a derivative)", h,
+                        SBC_POINT_H_SMALLEST, SBC_POINT_H_LARGEST);
     memcpy(F0, p->Fc, sizeof F0);
     memcpy(Pc, p->Pc, sizeof Pc);
     if (!p->at_committed) { /* the current state comes back afterwards */
@@ -445,10 +536,14 @@ sbc_status sbc_point_tangent_perturbation(sbc_point *p, double h, double C[81], 
 
 sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
 {
+    if (no_point(p, "tangent", err) != SBC_OK)
+        return err->status;
     return sbc_aggregate_affine(&p->a, p->Fc, C, err);
 }
 
 sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanisms, sbc_error *err)
 {
+    if (no_point(p, "condensed tangent", err) != SBC_OK)
+        return err->status;
     return sbc_aggregate_condensed(&p->a, p->x_committed, C, mechanisms, err);
 }

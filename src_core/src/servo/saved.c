@@ -66,19 +66,16 @@ double sbc_saved_positive(sbc_saved *s, const char *name)
     return v;
 }
 
-/* FNV-1a over the bytes of n doubles from the basis h, folded to 52 bits */
-static double hash_of(const double *v, size_t n, uint64_t h)
+/* FNV-1a over size bytes from the basis h, folded to 52 bits */
+static double hash_bytes(const unsigned char *b, size_t size, uint64_t h)
 {
-    size_t k;
-    for (k = 0; k < n; ++k) {
-        unsigned char b[sizeof(double)];
-        size_t i;
-        memcpy(b, &v[k], sizeof b);
-        for (i = 0; i < sizeof b; ++i)
-            h = (h ^ b[i]) * 1099511628211ULL;
-    }
+    size_t i;
+    for (i = 0; i < size; ++i)
+        h = (h ^ b[i]) * 1099511628211ULL;
     return (double)((h ^ (h >> 52)) & ((1ULL << 52) - 1));
 }
+
+static double hash_of(const double *v, size_t n, uint64_t h) { return hash_bytes((const unsigned char *)v, sizeof(double) * n, h); }
 
 #define SEAL_BASIS 0x6a09e667f3bcc908ULL     /* of the length */
 #define CHECKSUM_BASIS 0xcbf29ce484222325ULL /* of the payload (FNV's own) */
@@ -104,4 +101,9 @@ sbc_status sbc_saved_open(const double *in, size_t most, size_t *n, const char *
         return sbc_fail(err, SBC_ERR_INPUT, "%s: its %zu values do not match their checksum %.17g: a value was "
                         "changed after it was written", what, *n - SBC_SEALED_HEAD, in[2]);
     return SBC_OK;
+}
+
+double sbc_saved_hash(const void *data, size_t bytes, double from)
+{
+    return hash_bytes(data, bytes, CHECKSUM_BASIS ^ (uint64_t)from);
 }

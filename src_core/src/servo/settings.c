@@ -576,3 +576,13 @@ sbc_status sbc_settings_parse_words(sbc_settings *s, const char *words, sbc_erro
     free(line);
     return st;
 }
+
+sbc_status sbc_settings_check_host(const sbc_settings *s, sbc_error *err)
+{
+    if (s->tangent != SBC_TANGENT_NONE)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: keyword 'tangent' (%s %s) is the embedded runner's: its "
+                        "perturbations rerun the aggregate from saved states and its condensed tangent reads the "
+                        "engine's contacts; run the case with servo-bc, or take the tangent from the material point "
+                        "(docs/fe2.md)", sbc_tangent_name(s->tangent), s->tangent_file);
+    return SBC_OK;
+}
