@@ -53,9 +53,14 @@ def packing_path(out, n0, seed):
 def packing(runner, out, n0, seed):
     """A generated packing (x [2n], r [n], box [4]) from the runner's write_packing text, kept in out."""
     path = packing_path(out, n0, seed)
-    if not os.path.exists(path):
-        run(runner, 'dimension 2\n%s\n%s\nwrite_packing text %s\n' % (LAW, GENERATE % (n0, seed), path),
-            path + '.sbc')
+    if os.path.exists(path):
+        try:
+            return macro.read_packing(path)
+        except ValueError as e:          # a torn cache: made again, never used
+            print('fe2/biaxial.py: %s; generating it again' % e, flush=True)
+            os.remove(path)
+    run(runner, 'dimension 2\n%s\n%s\nwrite_packing text %s\n' % (LAW, GENERATE % (n0, seed), path),
+        path + '.sbc')
     return macro.read_packing(path)
 
 

@@ -216,18 +216,27 @@ def lattice_point(words, N=5, spacing=2e-3, radius=1.01e-3, kn=1e4, ks=2e3, mu=0
 
 
 def read_packing(path):
-    """A 2D packing written by the runner's `write_packing text`: x [2n], r [n], box [4] or None."""
-    x, r, box = [], [], None
+    """A 2D packing written by the runner's `write_packing text`: x [2n], r [n], box [4] or None. ValueError when
+    the count its first line announces ('# servo_bc packing: 121 discs, ...') is not the discs it holds (a torn
+    file), or a line is not 'x y r'."""
+    x, r, box, announced = [], [], None, None
     with open(path) as f:
-        for line in f:
+        for number, line in enumerate(f, 1):
             words = line.split()
+            if number == 1 and line.startswith('# servo_bc packing: ') and len(words) > 3 and words[3].isdigit():
+                announced = int(words[3])
             if not words or words[0].startswith('#'):
                 continue
+            if words[0] != 'box' and len(words) != 3:
+                raise ValueError('%s line %d: %d values (expected x y r)' % (path, number, len(words)))
             if words[0] == 'box':
                 box = [float(v) for v in words[1:5]]
                 continue
             x += [float(words[0]), float(words[1])]
             r.append(float(words[2]))
+    if announced is not None and announced != len(r):
+        raise ValueError('%s: its first line announces %d discs and it holds %d (a torn or edited file)'
+                         % (path, announced, len(r)))
     return x, r, box
 
 

@@ -41,6 +41,13 @@ for f in "$TMP"/runner_*.sbc; do
     else
       no "$name: expected a correct run, exit $rc"; tail -n 2 "$TMP/$name.err"
     fi
+  elif [ "$name" = runner_r4_chain_uniaxial.sbc ]; then   # a 3D test: its time series, and E in the log
+    if [ $rc -eq 0 ] && [ "$(wc -l < "$TMP/r4_chain.csv")" -eq 101 ] && ! grep -qiE "nan|inf" "$TMP/r4_chain.csv" &&
+       grep -q "^uniaxial: E 3.141" "$TMP/$name.out"; then
+      ok "$name: a correct run of the chain one sphere thick ($(grep -o 'E [0-9.e+]* Pa' "$TMP/$name.out"), pi E_b / 4)"
+    else
+      no "$name: expected a correct run, exit $rc"; tail -n 2 "$TMP/$name.err"
+    fi
   elif [ $rc -ge 1 ] && [ $rc -le 125 ] && [ -n "$message" ]; then
     ok "$name: exit $rc, $message"
   else
@@ -60,6 +67,25 @@ if grep -q "^WARNING: servo_bc: time step 1e-06 s is 1/1143 of the critical step
 else
   no "slow time step: warning or sigma11 ($slow against $usual N/m)"; head -n 3 "$TMP/runner_r3_lattice_slow_step.sbc.out"
 fi
+
+# round 4 (docs/reliability.md): the 3D runner's messages name the component, the particles and their lines,
+# the face names, the timestep line; the bonded model's one-word vtk and a vtk family over the CSV refused
+while IFS='|' read -r name expect; do
+  grep -q "^ERROR: [^:]*:[0-9]*: .*$expect" "$TMP/$name.err" && ok "round 4 $name: the message names it: $expect" ||
+    { no "round 4 $name: expected '$expect'"; head -n 2 "$TMP/$name.err"; }
+done <<'CASES'
+runner_r4_F13_inf.sbc|keyword 'F': F13 'inf' is not valid
+runner_r4_F33_nan.sbc|keyword 'F': F33 'nan' is not valid
+runner_r4_F_eight_values.sbc|keyword 'F': 8 values (expected 4 for a 2D F or 9 for a 3D F
+runner_r4_coincident_spheres.sbc|rp_r4_coincident.txt lines 23 and 66: spheres 21 and 64 have coincident centres
+runner_r4_top_edge_in_3d.sbc|keyword 'top' names a 2D edge, but the words are 3D
+runner_r4_vtk_one_word_3d.sbc|'vtk v' (one word) is the bonded model's snapshot
+runner_r4_vtk_spheres_is_csv.sbc|'v_spheres_000000.vtk' and vtk 'v' would write the same file
+runner_r4_torn_packing.sbc|rp_r4_torn.txt: its first line announces 26 particles and it holds 25
+CASES
+grep -q "^ERROR: runner_r4_timestep_line.sbc:5: servo_bc: time step 0.0003 s is 0.671 of the critical step" \
+  "$TMP/runner_r4_timestep_line.sbc.err" && ok "round 4: a time step above 0.6 of critical is refused at its own line (5)" ||
+  { no "round 4: the time step's line"; head -n 2 "$TMP/runner_r4_timestep_line.sbc.err"; }
 
 # round 3 (docs/reliability.md): the runner's files, each refused by name with the inputs intact
 refused_by() {  # LABEL EXPECTED-TEXT RC ERRFILE [FILE-THAT-MUST-BE-INTACT SUM]

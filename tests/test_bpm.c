@@ -422,6 +422,30 @@ static void test_uniaxial_cubic(void)
     CHECK(b.balance < 1e-2);
 }
 
+/* A chain one sphere thick (round 4: its lateral strain was 0/0 and the run
+ * stopped at step 10): the same E = pi E_b / 4, nu = 0, the lateral strain
+ * over the outer width 2 r_p (bpm_loading.h). */
+static void test_uniaxial_chain(void)
+{
+    static const double box[3] = {2.2, 0.2, 0.2};
+    sbc_bpm_settings s = sbc_bpm_settings_default();
+    sbc_bpm *e = NULL;
+    sbc_error err;
+    sbc_bpm_uniaxial test = {0.1, 1.5, 1e-5, 2000, NULL, 0};
+    sbc_bpm_uniaxial_result r;
+    s.parallel = sbc_bpm_parallel_law(EB, 0.1, 4.2);
+    sbc_bpm_create(&s, &e, &err);
+    sbc_bpm_pack_lattice(e, SBC_PACK_CUBIC, box, 0.1, 925.0 / (SBC_PI / 6.0), NULL, &err);
+    sbc_bpm_bond_touching(e, &err);
+    e->dt = 0.6 * sbc_bpm_critical_dt(e);
+    CHECK(e->n == 11 && sbc_bpm_uniaxial_run(e, &test, &r, &err) == SBC_OK);
+    CHECK_REL(r.E, SBC_PI * EB / 4.0, 5e-3);
+    CHECK(r.nu_xy == 0.0 && r.nu_xz == 0.0 && r.w0 == 0.2 && r.h0 == 0.2);
+    printf("  bpm: a chain of %zu spheres one thick: E %.6g Pa (pi E_b / 4 = %.6g), nu %g, w0 %g m\n", e->n, r.E,
+           SBC_PI * EB / 4.0, r.nu_xy, r.w0);
+    sbc_bpm_free(e);
+}
+
 /* Sect. 5.3.1: the RVE stress of the compressed specimen (eq. 54) against
  * the boundary load F / A. The thesis finds 1.3 % (uniform, HCP) to 2.5 %
  * (RCP) at 12.5 mm, 0.24-0.36 % at 2.5 mm; with the RVE volume taken as the
@@ -664,6 +688,7 @@ void test_bpm(void)
     test_beam_vibration();
     test_lattices();
     test_uniaxial_cubic();
+    test_uniaxial_chain();
     test_random_packing();
     test_rve_stress();
     test_bending();

@@ -113,6 +113,7 @@ typedef struct sbc_settings {
        top D T, left P P; 3D zlo D D D, zhi D D T, the four side faces P P P */
     unsigned char face_mode[SBC_FACES_MAX][SBC_DIM_MAX];
     unsigned char face_given;      /* mixed: bit f set when the words name face f */
+    unsigned char edge_given;      /* mixed: bit f set when a 2D edge keyword (bottom, right, top, left) named it */
     int nstress;                   /* prescribed stress components (keyword stress) */
     sbc_stress_spec stress[9];
     int stress_increments;         /* i_vs: increments of the stress stage (all stress keywords alike) */

@@ -58,7 +58,7 @@ enum { LOADED = 1, HELD = 2, YLO = 4, YHI = 8, ZLO = 16, ZHI = 32 };
 sbc_status sbc_bpm_uniaxial_run(sbc_bpm *e, const sbc_bpm_uniaxial *test, sbc_bpm_uniaxial_result *res,
                                 sbc_error *err)
 {
-    double ext[6], reach = test->zone * test->rp, xl, xh, w0, h0;
+    double ext[6], reach = test->zone * test->rp, xl, xh, w0, h0, outer_y, outer_z;
     unsigned char *zone;
     fit force = {0, 0, 0, 0, 0}, wide = {0, 0, 0, 0, 0}, high = {0, 0, 0, 0, 0};
     long t, every = test->every > 0 ? test->every : (test->steps >= 100 ? test->steps / 100 : 1);
@@ -93,8 +93,11 @@ sbc_status sbc_bpm_uniaxial_run(sbc_bpm *e, const sbc_bpm_uniaxial *test, sbc_bp
     xl = mean_coord(e, zone, LOADED, 0);
     xh = mean_coord(e, zone, HELD, 0);
     res->L0 = xh - xl;
-    res->w0 = w0 = mean_coord(e, zone, YHI, 1) - mean_coord(e, zone, YLO, 1);
-    res->h0 = h0 = mean_coord(e, zone, ZHI, 2) - mean_coord(e, zone, ZLO, 2);
+    /* a specimen one sphere across: its lateral strain over the outer width (bpm_loading.h) */
+    outer_y = mean_coord(e, zone, YHI, 1) - mean_coord(e, zone, YLO, 1) < test->rp ? 2.0 * test->rp : 0.0;
+    outer_z = mean_coord(e, zone, ZHI, 2) - mean_coord(e, zone, ZLO, 2) < test->rp ? 2.0 * test->rp : 0.0;
+    res->w0 = w0 = mean_coord(e, zone, YHI, 1) - mean_coord(e, zone, YLO, 1) + outer_y;
+    res->h0 = h0 = mean_coord(e, zone, ZHI, 2) - mean_coord(e, zone, ZLO, 2) + outer_z;
     res->A = (ext[4] - ext[1]) * (ext[5] - ext[2]);
     for (i = 0; i < e->n; ++i) { /* the velocity ramp; the loaded end moves to -x in tension */
         double ramp = (xh - e->x[3 * i]) / res->L0, v0 = e->v[3 * i];
@@ -111,8 +114,8 @@ sbc_status sbc_bpm_uniaxial_run(sbc_bpm *e, const sbc_bpm_uniaxial *test, sbc_bp
             break;
         if (t % every == 0 || t == test->steps) {
             double fx = 0.0, dl = xh - mean_coord(e, zone, LOADED, 0) - res->L0;
-            double ey = (mean_coord(e, zone, YHI, 1) - mean_coord(e, zone, YLO, 1) - w0) / w0;
-            double ez = (mean_coord(e, zone, ZHI, 2) - mean_coord(e, zone, ZLO, 2) - h0) / h0;
+            double ey = (mean_coord(e, zone, YHI, 1) - mean_coord(e, zone, YLO, 1) + outer_y - w0) / w0;
+            double ez = (mean_coord(e, zone, ZHI, 2) - mean_coord(e, zone, ZLO, 2) + outer_z - h0) / h0;
             sbc_bpm_energy en = sbc_bpm_energies(e);
             for (i = 0; i < e->n; ++i)
                 if (zone[i] & LOADED)

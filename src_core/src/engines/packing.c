@@ -112,6 +112,51 @@ sbc_status sbc_packing_read(sbc_packing *p, const char *path, sbc_error *err)
     return st;
 }
 
+typedef struct by_x {
+    double x;
+    int k;
+} by_x;
+
+static int compare_x(const void *a, const void *b)
+{
+    double xa = ((const by_x *)a)->x, xb = ((const by_x *)b)->x;
+    return (xa > xb) - (xa < xb);
+}
+
+/* the first pair a < b of the n particles (centres x [dim n], radii r [n]) whose centres are closer than 1e-6 of
+   the smaller radius in every coordinate: 1 and the pair, 0 when none (-1 out of memory) */
+static int coincident(int dim, int n, const double *x, const double *r, int *pa, int *pb)
+{
+    by_x *order;
+    double rmin = HUGE_VAL;
+    int i, j, c, found = 0;
+    if (n < 2)
+        return 0;
+    if (!(order = malloc(sizeof *order * (size_t)n)))
+        return -1;
+    for (i = 0; i < n; ++i) {
+        order[i].x = x[dim * i];
+        order[i].k = i;
+        rmin = fmin(rmin, r[i]);
+    }
+    qsort(order, (size_t)n, sizeof *order, compare_x);
+    for (i = 0; i < n && !found; ++i)
+        for (j = i + 1; j < n && !found && order[j].x - order[i].x < 1e-6 * rmin; ++j) {
+            const int a = order[i].k < order[j].k ? order[i].k : order[j].k;
+            const int b = order[i].k < order[j].k ? order[j].k : order[i].k;
+            const double near = 1e-6 * fmin(r[a], r[b]);
+            for (c = 0; c < dim && fabs(x[dim * b + c] - x[dim * a + c]) < near; ++c)
+                ;
+            if (c == dim) {
+                *pa = a;
+                *pb = b;
+                found = 1;
+            }
+        }
+    free(order);
+    return found;
+}
+
 /* The rows of a packing file: dim coordinates and a radius per line (m) into
  * *x [dim n], *r [n], *n; a 'box' line into box (2D; NULL: no box line) */
 static sbc_status read_rows(FILE *fp, const char *path, int dim, sbc_packing *box, double **x, double **r, int *n,
@@ -121,7 +166,8 @@ static sbc_status read_rows(FILE *fp, const char *path, int dim, sbc_packing *bo
     const char *const expected = dim == 2 ? "x y r" : "x y z r";
     const int nv = dim + 1;
     char line[1024];
-    int lineno = 0, cap = 0, end = 0;
+    int lineno = 0, cap = 0, end = 0, *line_of = NULL, a = 0, b = 0, found;
+    long announced = -1; /* the count servo_bc's first line gives ("# servo_bc packing: 121 discs, ...") */
     sbc_status st = SBC_OK;
     while ((st = read_line(fp, line, sizeof line, path, lineno + 1, &end, expected, err)) == SBC_OK && !end) {
         char *tok[4], line_copy[1024];
@@ -129,6 +175,8 @@ static sbc_status read_rows(FILE *fp, const char *path, int dim, sbc_packing *bo
         double v[4];
         int nt, c;
         ++lineno;
+        if (lineno == 1 && sscanf(line, "# servo_bc packing: %ld", &announced) != 1)
+            announced = -1;
         memcpy(line_copy, line, sizeof line);
         nt = sbc_split_words(line, tok, nv);
         if (nt == 0)
@@ -161,16 +209,32 @@ static sbc_status read_rows(FILE *fp, const char *path, int dim, sbc_packing *bo
             break;
         }
         if (*n == cap) {
+            int *grown;
             cap = cap ? 2 * cap : 256;
             if ((st = reserve_arrays(dim, x, r, cap, err)) != SBC_OK)
                 break;
+            if (!(grown = realloc(line_of, sizeof *line_of * (size_t)cap))) {
+                st = sbc_fail(err, SBC_ERR_NOMEM, "read_packing: out of memory");
+                break;
+            }
+            line_of = grown;
         }
         for (c = 0; c < dim; ++c)
             (*x)[dim * *n + c] = v[c];
+        line_of[*n] = lineno;
         (*r)[(*n)++] = v[dim];
     }
     if (st == SBC_OK && *n == 0)
         st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s holds no particles", path);
+    if (st == SBC_OK && announced >= 0 && announced != *n)
+        st = sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s: its first line announces %ld particles and it holds %d (a "
+                      "torn or edited file: write it again, or correct the first line)", path, announced, *n);
+    if (st == SBC_OK && (found = coincident(dim, *n, *x, *r, &a, &b)) != 0)
+        st = found < 0 ? sbc_fail(err, SBC_ERR_NOMEM, "read_packing: out of memory")
+                       : sbc_fail(err, SBC_ERR_INPUT, "read_packing: %s lines %d and %d: %s %d and %d have coincident "
+                                  "centres (expected distinct particles: their contact would have no normal)", path,
+                                  line_of[a], line_of[b], dim == 3 ? "spheres" : "discs", a, b);
+    free(line_of);
     return st;
 }
 
@@ -200,17 +264,6 @@ sbc_status sbc_spheres_read(const char *path, int *n, double **x, double **r, sb
         *n = 0;
     }
     return st;
-}
-
-typedef struct by_x {
-    double x;
-    int k;
-} by_x;
-
-static int compare_x(const void *a, const void *b)
-{
-    double xa = ((const by_x *)a)->x, xb = ((const by_x *)b)->x;
-    return (xa > xb) - (xa < xb);
 }
 
 /* Sweep along x: pairs closer in x than r_i + r_max + tol only. */
@@ -256,32 +309,12 @@ sbc_status sbc_packing_contact_angles(const sbc_packing *p, double tol, double *
 
 sbc_status sbc_packing_distinct(int n, const double *x, const double *r, sbc_error *err)
 {
-    by_x *order;
-    double rmin = HUGE_VAL;
-    int i, j;
-    if (n < 2)
-        return SBC_OK;
-    if (!(order = malloc(sizeof *order * (size_t)n)))
+    int a = 0, b = 0;
+    const int found = coincident(2, n, x, r, &a, &b);
+    if (found < 0)
         return sbc_fail(err, SBC_ERR_NOMEM, "out of memory");
-    for (i = 0; i < n; ++i) {
-        order[i].x = x[2 * i];
-        order[i].k = i;
-        rmin = fmin(rmin, r[i]);
-    }
-    qsort(order, (size_t)n, sizeof *order, compare_x);
-    for (i = 0; i < n; ++i)
-        for (j = i + 1; j < n && order[j].x - order[i].x < 1e-6 * rmin; ++j) {
-            const int a = order[i].k < order[j].k ? order[i].k : order[j].k;
-            const int b = order[i].k < order[j].k ? order[j].k : order[i].k;
-            const double near = 1e-6 * fmin(r[a], r[b]);
-            if (fabs(x[2 * b] - x[2 * a]) < near && fabs(x[2 * b + 1] - x[2 * a + 1]) < near) {
-                free(order);
-                return sbc_fail(err, SBC_ERR_INPUT,
-                                "particles %d and %d have coincident centres (%g, %g) m (expected distinct particles; "
-                                "check the packing)",
-                                a, b, x[2 * a], x[2 * a + 1]);
-            }
-        }
-    free(order);
+    if (found)
+        return sbc_fail(err, SBC_ERR_INPUT, "particles %d and %d have coincident centres (%g, %g) m (expected distinct "
+                        "particles; check the packing)", a, b, x[2 * a], x[2 * a + 1]);
     return SBC_OK;
 }

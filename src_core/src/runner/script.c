@@ -351,6 +351,8 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
     if ((st = sbc_time_step_bound(s->dt, dtc, s->cohesive ? "2 sqrt(M_min / (2 kn)) or 2 sqrt(I_min / (2 kr))"
                                                           : "2 sqrt(M_min / (2 kn))",
                                   s->settings.max_relax_steps, err)) != SBC_OK) {
+        if (s->dt_line > 0) /* the error belongs to the timestep command */
+            s->line = s->dt_line;
         run_free(&r);
         return st;
     }
@@ -567,6 +569,9 @@ static sbc_status execute_3d(script *s, int nw, char **w, sbc_error *err)
         return cmd_snapshots(nw, w, &s->vtk_every, s->vtk_prefix, err);
     if (strcmp(c, "run") == 0 && s->servo_pending) {
         if ((st = sbc_script_expect_count(nw, w, 1, "run", err)) != SBC_OK) return st;
+        if (sbc_script_bpm_vtk(s)[0])
+            return sbc_fail(err, SBC_ERR_INPUT, "run: 'vtk %s' (one word) is the bonded model's snapshot of a 'test' "
+                            "run; a servo_bc run writes its snapshots with 'vtk EVERY PREFIX'", sbc_script_bpm_vtk(s));
         s->servo_pending = 0;
         if (s->decks_dir)
             return s->write_decks(s, s->decks_dir, err);
@@ -613,6 +618,7 @@ static sbc_status execute(script *s, int nw, char **w, sbc_error *err)
         if ((st = sbc_script_expect_count(nw, w, 2, "timestep DT", err)) != SBC_OK) return st;
         st = sbc_script_positive("timestep", "DT", w[1], &s->dt, err);
         s->have_dt = st == SBC_OK;
+        s->dt_line = s->line;
         return st;
     }
     if (strcmp(c, "servo_bc") == 0) return cmd_servo_bc(s, nw, w, err);

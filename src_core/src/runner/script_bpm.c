@@ -347,6 +347,8 @@ void sbc_script_bpm_material(const script *s, double *density, double *dt, doubl
     *dt_fraction = b && b->have_dt ? b->dt_fraction : 0.0;
 }
 
+const char *sbc_script_bpm_vtk(const script *s) { return s->bpm ? s->bpm->vtk : ""; }
+
 sbc_status sbc_script_bpm(script *s, int nw, char **w, sbc_error *err)
 {
     struct bpm_script *b = s->bpm;
@@ -365,6 +367,7 @@ sbc_status sbc_script_bpm(script *s, int nw, char **w, sbc_error *err)
         return st;
     }
     if (strcmp(c, "timestep") == 0) {
+        s->dt_line = s->line;
         if (nw == 3 && strcmp(w[1], "critical") == 0) {
             st = positive(nw, w, 1, &b->dt_fraction, err);
             b->have_dt = st == SBC_OK;

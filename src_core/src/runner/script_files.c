@@ -142,7 +142,8 @@ sbc_status sbc_script_outputs_check(script *s, sbc_error *err)
     }
     if (s->vtk_every) {
         out[n].what = "vtk", out[n].shown = s->vtk_prefix, out[n].kind = SBC_OUTPUT_VTK;
-        out[n].middle[0] = "_particles_", out[n].middle[1] = "_contacts_", out[n].suffix = ".vtk";
+        out[n].middle[0] = s->bpm ? "_spheres_" : "_particles_"; /* after 'dimension 3': the sphere run's family */
+        out[n].middle[1] = s->bpm ? "_frame_" : "_contacts_", out[n].suffix = ".vtk";
         ++n;
     }
     if (s->network_every) {

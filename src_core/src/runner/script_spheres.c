@@ -255,6 +255,8 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
         }
     }
     if ((st = sbc_time_step_bound(dt, dtc, "2 sqrt(M_min / (2 kn))", s->settings.max_relax_steps, err)) != SBC_OK) {
+        if (s->dt_line > 0) /* the error belongs to the timestep command */
+            s->line = s->dt_line;
         parts_free(&p, &r);
         return st;
     }

@@ -36,6 +36,7 @@ typedef struct sbc_script_case {
     double density, dt;
     sbc_settings settings;
     int servo_line;
+    int dt_line;           /* the line of the last 'timestep': a time step refused at the run is reported there */
     int vtk_every;
     char vtk_prefix[SBC_NAME_LEN];
     int network_every;
@@ -108,6 +109,9 @@ void sbc_script_bpm_free(script *s);
 /* The material of the 3D commands (script_bpm.c): density (kg/m^3) and time
  * step (s; or a fraction of the critical one), each 0 when not given. */
 void sbc_script_bpm_material(const script *s, double *density, double *dt, double *dt_fraction);
+
+/* The bonded model's one-word 'vtk PREFIX' (script_bpm.c), "" when not given. */
+const char *sbc_script_bpm_vtk(const script *s);
 
 /* The 3D servo_bc commands (script_spheres.c): 'lattice cubic NX NY NZ
  * spacing D radius R', and the run of a servo_bc line on the sphere engine

@@ -176,6 +176,14 @@ static const char *next_word(cursor *c, const char *what, sbc_status *st)
 }
 
 /* Reads a real for keyword c->key with lo < v (strict when lo_open) and v <= hi. */
+/* 1 when strtod reads the whole word (a number, inf or nan) */
+static int number_like(const char *w)
+{
+    char *end;
+    (void)strtod(w, &end);
+    return end != w && *end == '\0';
+}
+
 static sbc_status read_real(cursor *c, const char *what, double lo, int lo_open, double hi, const char *expect,
                             double *out)
 {
@@ -275,11 +283,14 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
                 snprintf(m->accuracy, sizeof m->accuracy, "%s", name);
         } else if (strcmp(key, "F") == 0) {
             /* nine numbers give a 3D F, row-major; otherwise the 2D one's four
-               (sbc_settings_check_dimension holds them to the host's packing) */
+               (sbc_settings_check_dimension holds them to the host's packing). A word strtod reads whole counts
+               (inf and nan too: read_real then names the component that holds it) */
             int numbers = 0, d;
-            double v;
-            while (numbers < 9 && c.i + numbers < c.n && sbc_parse_real(c.w[c.i + numbers], "F", &v, NULL) == SBC_OK)
+            while (numbers < 10 && c.i + numbers < c.n && number_like(c.w[c.i + numbers]))
                 ++numbers;
+            if (numbers > 4 && numbers != 9)
+                st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'F': %d values (expected 4 for a 2D F or 9 for a 3D F, "
+                              "row-major)", numbers);
             d = s->dim = numbers == 9 ? 3 : 2;
             sbc_tensor_identity(d, s->F);
             for (k = 0; k < d * d && st == SBC_OK; ++k) {

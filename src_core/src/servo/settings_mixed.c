@@ -40,7 +40,7 @@ void sbc_mixed_default(sbc_settings *s)
     memset(s->face_mode, SBC_MODE_D, sizeof s->face_mode);
     for (f = 0; f < 4; ++f)
         layer_face(2, f, s->face_mode[f]);
-    s->face_given = 0;
+    s->face_given = s->edge_given = 0;
     s->nstress = 0;
     s->stress_increments = 0;
 }
@@ -77,6 +77,8 @@ sbc_status sbc_mixed_parse_face(sbc_settings *s, const char *face, int nw, const
         s->face_mode[f][c] = (unsigned char)(m - mode_letters);
     }
     s->face_given |= (unsigned char)(1u << f);
+    if (n == 2)
+        s->edge_given |= (unsigned char)(1u << f);
     return SBC_OK;
 }
 
@@ -124,6 +126,9 @@ static sbc_status faces_of_dimension(const sbc_settings *s, sbc_error *err)
         if (s->dim == 2 && f >= 4)
             return sbc_fail(err, SBC_ERR_INPUT, "mixed: keyword '%s' names a 3D face, but the words are 2D (F with "
                             "nine values makes them 3D; the 2D edges are bottom, right, top, left)", face_names[f]);
+        if (s->dim == 3 && (s->edge_given >> f & 1))
+            return sbc_fail(err, SBC_ERR_INPUT, "mixed: keyword '%s' names a 2D edge, but the words are 3D (F has nine "
+                            "values); the 3D faces are xlo, xhi, ylo, yhi, zlo, zhi, each with three modes", edge_names[f]);
     }
     for (k = 0; k < s->nstress; ++k)
         if (s->stress[k].i >= s->dim || s->stress[k].j >= s->dim)

@@ -14,7 +14,7 @@ sbc_status sbc_time_step_bound(double dt, double dtc, const char *formula, long 
                         "time step to %g s or less", dt, dtc, formula, SBC_TIME_STEP_FRACTION * dtc);
     if (dt > SBC_TIME_STEP_FRACTION * dtc * (1.0 + 1e-5)) /* a fraction rounded to 5 digits passes */
         return sbc_fail(err, SBC_ERR_INPUT, "servo_bc: time step %g s is %.3g of the critical step %g s = %s; "
-                        "relaxations converge only up to %g of it (a disc with several contacts is stable only below "
+                        "relaxations converge only up to %g of it (a particle with several contacts is stable only below "
                         "a fraction of a contact pair's step: 1/sqrt(2) with the four contacts of a square lattice; "
                         "docs/stability.md); lower the time step to %g s or less", dt, dt / dtc, dtc, formula,
                         SBC_TIME_STEP_FRACTION, SBC_TIME_STEP_FRACTION * dtc);

@@ -15,7 +15,9 @@
  * the bonds between them span; for the cubic lattice this gives the thesis'
  * 3.14 GPa at every r_p), A = w0 h0 the specimen's cross-section, and w, h
  * the distances between the mean centres of the spheres within zone r_p of
- * the y and z faces (Fig. 26). At the end, the RVE stress of the whole
+ * the y and z faces (Fig. 26); a specimen one sphere across (those zones'
+ * centres closer than r_p) has no such distance, and its strain is then
+ * measured over the outer width, the centres' span plus 2 r_p. At the end, the RVE stress of the whole
  * specimen (eq. 54) and the boundary-load stress F_x / A (Sect. 5.3.1).
  *
  * Three-point flexural test (Fig. 28). Supports: the spheres within zone r_p
