@@ -131,6 +131,26 @@ else
   no "file size limit: $torn rows of the wrong width, last byte '$last'"
 fi
 
+# round 4: the tangent file and a VTK snapshot past the file size limit: the tangent file and the results file end
+# with whole rows, the snapshot is removed, and each message names the system's reason
+(cd "$TMP" && ulimit -f 100 && "$runner" r4_full_tangent.sbc > /dev/null 2> full_tangent.err); rc=$?
+torn=$(awk -F, 'FILENAME ~ /_t/ && NF != 82 { bad++ } FILENAME ~ /_u/ && NF != 39 { bad++ } END { print bad + 0 }' \
+       "$TMP/r4_full_t.csv" "$TMP/r4_full_u.csv")
+if [ "$torn" = 0 ] && [ "$(tail -c 1 "$TMP/r4_full_t.csv" | od -An -c | tr -d ' ')" = '\n' ]; then
+  refused_by "a tangent file past the file size limit ($(($(wc -l < "$TMP/r4_full_t.csv") - 1)) whole rows kept)" \
+    "keyword 'tangent': file './r4_full_t.csv': cannot write the row of increment [0-9]* (File too large); the file ends" \
+    $rc "$TMP/full_tangent.err"
+else
+  no "a tangent file past the file size limit: $torn torn rows"
+fi
+(cd "$TMP" && ulimit -f 20 && "$runner" r4_full_vtk.sbc > /dev/null 2> full_vtk.err); rc=$?
+if [ ! -e "$TMP/r4_full_spheres_000000.vtk" ]; then
+  refused_by "a VTK snapshot past the file size limit (the partial file removed)" \
+    "vtk: cannot write 'r4_full_spheres_000000.vtk' (File too large); the partial file is removed" $rc "$TMP/full_vtk.err"
+else
+  no "a VTK snapshot past the file size limit: the partial file is there"
+fi
+
 # the harnesses' replays (contract: a refusal names its cause; ASan, UBSan)
 replay() {  # NAME INPUT...
   local out

@@ -89,10 +89,7 @@ static sbc_status decks_folder(script *s, const char *dir, sbc_error *err)
 
 static sbc_status close_file(FILE *fp, const char *path, sbc_error *err)
 {
-    int bad = ferror(fp);
-    if (fclose(fp) != 0 || bad)
-        return sbc_fail(err, SBC_ERR_IO, "--decks: error writing '%s'", path);
-    return SBC_OK;
+    return sbc_output_close(fp, path, "--decks", err);
 }
 
 /* The frame words of a host: a periodic packing's frame is the flagged one

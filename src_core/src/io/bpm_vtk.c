@@ -48,7 +48,5 @@ sbc_status sbc_bpm_vtk_write(const char *prefix, const sbc_bpm *e, sbc_error *er
             fprintf(fp, "%.10g %.10g %.10g\n", sigma[9 * i + 3 * (size_t)q], sigma[9 * i + 3 * (size_t)q + 1],
                     sigma[9 * i + 3 * (size_t)q + 2]);
     free(sigma);
-    if (fclose(fp) != 0)
-        return sbc_fail(err, SBC_ERR_IO, "vtk: cannot finish '%s'", path);
-    return SBC_OK;
+    return sbc_output_close(fp, path, "vtk", err);
 }

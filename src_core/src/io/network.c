@@ -107,7 +107,5 @@ sbc_status sbc_network_svg(const char *path, const char *title, const sbc_engine
     fprintf(fp, "</svg>\n");
     free(fx);
     free(out);
-    if (ferror(fp) | (fclose(fp) != 0))
-        return sbc_fail(err, SBC_ERR_IO, "network: write to '%s' failed", path);
-    return SBC_OK;
+    return sbc_output_close(fp, path, "network", err);
 }

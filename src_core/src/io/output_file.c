@@ -232,3 +232,42 @@ sbc_status sbc_output_probe(const char *path, sbc_output_kind kind, const char *
     free(folder);
     return status;
 }
+
+sbc_status sbc_output_append(FILE *fp, const char *text, size_t n, const char *path, const char *what,
+                             const char *row, sbc_error *err)
+{
+    const int fd = fileno(fp);
+    size_t done = 0;
+    off_t at;
+    if (fflush(fp) != 0 || (at = lseek(fd, 0, SEEK_END)) < 0)
+        return sbc_fail(err, SBC_ERR_IO, "%s '%s': cannot write %s (%s)", what, path, row, strerror(errno));
+    while (done < n) {
+        const ssize_t w = write(fd, text + done, n - done);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0) {
+            const int why = w < 0 ? errno : ENOSPC;
+            if (ftruncate(fd, at) == 0)
+                lseek(fd, at, SEEK_SET);
+            return sbc_fail(err, SBC_ERR_IO, "%s '%s': cannot write %s (%s); the file ends with the rows before it",
+                            what, path, row, strerror(why));
+        }
+        done += (size_t)w;
+    }
+    return SBC_OK;
+}
+
+sbc_status sbc_output_close(FILE *fp, const char *path, const char *what, sbc_error *err)
+{
+    int why = 0;
+    errno = 0;
+    if (fflush(fp) != 0 || ferror(fp))
+        why = errno ? errno : EIO;
+    if (fclose(fp) != 0 && !why)
+        why = errno ? errno : EIO;
+    if (!why)
+        return SBC_OK;
+    remove(path);
+    return sbc_fail(err, SBC_ERR_IO, "%s: cannot write '%s' (%s); the partial file is removed", what, path,
+                    strerror(why));
+}

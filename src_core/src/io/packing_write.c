@@ -11,9 +11,7 @@
 
 static sbc_status finish(FILE *fp, const char *path, sbc_error *err)
 {
-    if (ferror(fp) | (fclose(fp) != 0))
-        return sbc_fail(err, SBC_ERR_IO, "write_packing: write to '%s' failed", path);
-    return SBC_OK;
+    return sbc_output_close(fp, path, "write_packing", err);
 }
 
 static sbc_status open_for_writing(FILE **fp, int n, const char *path, sbc_error *err)

@@ -137,7 +137,5 @@ sbc_status sbc_plot_svg(const char *path, const char *title, const char *xlabel,
 #undef PX
 #undef PY
     fprintf(fp, "</svg>\n");
-    if (fclose(fp) != 0)
-        return sbc_fail(err, SBC_ERR_IO, "plot: write to '%s' failed", path);
-    return SBC_OK;
+    return sbc_output_close(fp, path, "plot", err);
 }

@@ -57,7 +57,5 @@ sbc_status sbc_plot_rose(const char *path, const char *title, int n, const doubl
                 "normals per bin</text>\n", 2 * c + 30, n, bins, 360.0 / bins, top);
     fprintf(fp, "</svg>\n");
     free(count);
-    if (ferror(fp) | (fclose(fp) != 0))
-        return sbc_fail(err, SBC_ERR_IO, "rose: write to '%s' failed", path);
-    return SBC_OK;
+    return sbc_output_close(fp, path, "rose", err);
 }

@@ -14,33 +14,15 @@
 
 static const char what[] = "keyword 'file'";
 
-/* text[0..n) appended whole or not at all: a failed write (disk full, file
-   size limit) is cut back to where it began, so that the file never ends in
-   a torn row */
+/* text[0..n) appended whole or not at all (sbc_output_append): the file never ends in a torn row */
 static sbc_status put(sbc_csv *csv, const char *text, size_t n, int increment, sbc_error *err)
 {
-    const int fd = fileno(csv->fp);
-    size_t done = 0;
-    off_t at;
-    if (fflush(csv->fp) != 0 || (at = lseek(fd, 0, SEEK_END)) < 0)
-        return sbc_fail(err, SBC_ERR_IO, "results file '%s': cannot write (%s)", csv->path, strerror(errno));
-    while (done < n) {
-        const ssize_t w = write(fd, text + done, n - done);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0) {
-            const int why = w < 0 ? errno : ENOSPC;
-            if (ftruncate(fd, at) == 0)
-                lseek(fd, at, SEEK_SET);
-            if (increment < 0)
-                return sbc_fail(err, SBC_ERR_IO, "results file '%s': cannot write the header (%s)", csv->path,
-                                strerror(why));
-            return sbc_fail(err, SBC_ERR_IO, "results file '%s': cannot write the row of increment %d (%s); the file "
-                            "ends with the rows before it", csv->path, increment, strerror(why));
-        }
-        done += (size_t)w;
-    }
-    return SBC_OK;
+    char row[64];
+    if (increment < 0)
+        snprintf(row, sizeof row, "the header");
+    else
+        snprintf(row, sizeof row, "the row of increment %d", increment);
+    return sbc_output_append(csv->fp, text, n, csv->path, "results file", row, err);
 }
 
 static sbc_status begin(sbc_csv *csv, const char *path, int dim, FILE *fp, sbc_error *err)

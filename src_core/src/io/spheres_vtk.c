@@ -1,5 +1,6 @@
 /* VTK snapshots of a 3D servo_bc run (spheres_vtk.h). */
 #include "sbc/embedded/spheres_vtk.h"
+#include "sbc/embedded/output_file.h"
 #include "vtk_parts.h"
 
 #include <stdio.h>
@@ -15,9 +16,7 @@ static void vectors(FILE *fp, const char *name, int n, const double *v)
 
 static sbc_status close_file(FILE *fp, const char *name, sbc_error *err)
 {
-    if (ferror(fp) | fclose(fp))
-        return sbc_fail(err, SBC_ERR_IO, "vtk: write to '%s' failed", name);
-    return SBC_OK;
+    return sbc_output_close(fp, name, "vtk", err);
 }
 
 sbc_status sbc_spheres_vtk_write(const char *prefix, int increment, const sbc_spheres_view *w,

@@ -59,8 +59,8 @@ sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_vie
     fprintf(fp, "VECTORS velocity double\n");
     for (k = 0; k < w->n; ++k)
         fprintf(fp, "%.12g %.12g 0\n", w->v[2 * k], w->v[2 * k + 1]);
-    if (fclose(fp) != 0)
-        return sbc_fail(err, SBC_ERR_IO, "vtk: write to '%s' failed", name);
+    if (sbc_output_close(fp, name, "vtk", err) != SBC_OK)
+        return err->status;
 
     for (k = 0; k < w->pair_count; ++k)
         nc += carries(w, k);
@@ -88,7 +88,5 @@ sbc_status sbc_vtk_write(const char *prefix, int increment, const sbc_engine_vie
     for (k = 0; k < w->pair_count; ++k)
         if (carries(w, k))
             fprintf(fp, "%d\n", bonded(w, k));
-    if (fclose(fp) != 0)
-        return sbc_fail(err, SBC_ERR_IO, "vtk: write to '%s' failed", name);
-    return SBC_OK;
+    return sbc_output_close(fp, name, "vtk", err);
 }

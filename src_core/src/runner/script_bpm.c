@@ -333,8 +333,10 @@ static sbc_status cmd_run(script *s, struct bpm_script *b, sbc_error *err)
     if (st == SBC_OK && b->vtk[0] && (st = sbc_bpm_vtk_write(b->vtk, e, err)) == SBC_OK && s->log)
         fprintf(s->log, "bpm: spheres with their stress (eq. 62) in %s_spheres.vtk\n", b->vtk);
 done:
-    if (series && fclose(series) != 0 && st == SBC_OK)
-        st = sbc_fail(err, SBC_ERR_IO, "test: cannot finish '%s'", b->series);
+    if (series && st == SBC_OK)
+        st = sbc_output_close(series, b->series, "test: keyword 'file'", err);
+    else if (series)
+        fclose(series);
     sbc_bpm_free(e);
     return st;
 }

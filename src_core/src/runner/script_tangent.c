@@ -11,10 +11,14 @@
 
 /* central differences of this step on each F_kl (docs/fe2.md) */
 #define PERTURBATION_STEP 1e-6
+/* the file in messages; a row: 81 values of 25 characters at most */
+#define WHAT "servo_bc keyword 'tangent': file"
+#define ROW_CHARS (16 + 81 * 26)
 
 sbc_status sbc_script_tangent_open(const script *s, int dim, sbc_script_tangent *t, sbc_error *err)
 {
-    int i, j, k, l;
+    char line[ROW_CHARS];
+    int i, j, k, l, n;
     memset(t, 0, sizeof *t);
     t->dim = dim;
     if (s->settings.tangent == SBC_TANGENT_NONE)
@@ -30,15 +34,14 @@ sbc_status sbc_script_tangent_open(const script *s, int dim, sbc_script_tangent 
         return SBC_OK;
     if (!(t->fp = sbc_output_open(s->settings.tangent_file, SBC_OUTPUT_RESULTS, "servo_bc keyword 'tangent'", err)))
         return err->status;
-    fputs("increment", t->fp);
+    n = snprintf(line, sizeof line, "increment");
     for (i = 0; i < dim; ++i)
         for (j = 0; j < dim; ++j)
             for (k = 0; k < dim; ++k)
                 for (l = 0; l < dim; ++l)
-                    fprintf(t->fp, ",C%d%d%d%d", i + 1, j + 1, k + 1, l + 1);
-    fputc('\n', t->fp);
-    fflush(t->fp);
-    return SBC_OK;
+                    n += snprintf(line + n, sizeof line - (size_t)n, ",C%d%d%d%d", i + 1, j + 1, k + 1, l + 1);
+    line[n++] = '\n';
+    return sbc_output_append(t->fp, line, (size_t)n, s->settings.tangent_file, WHAT, "the header", err);
 }
 
 sbc_status sbc_script_tangent_row(const script *s, sbc_script_tangent *t, const sbc_aggregate *a,
@@ -47,7 +50,8 @@ sbc_status sbc_script_tangent_row(const script *s, sbc_script_tangent *t, const 
 {
     const int dim = t->dim;
     double C[81], norm = 0.0;
-    int mechanisms = 0, i, j, k, l;
+    char line[ROW_CHARS], which[64];
+    int mechanisms = 0, i, j, k, l, n;
     sbc_status st;
     if (!t->fp)
         return SBC_OK;
@@ -68,19 +72,19 @@ sbc_status sbc_script_tangent_row(const script *s, sbc_script_tangent *t, const 
         return sbc_fail(err, st, "servo_bc keyword 'tangent' (%s), increment %d: %s",
                         sbc_tangent_name(s->settings.tangent), row->increment, message);
     }
-    fprintf(t->fp, "%d", row->increment);
+    n = snprintf(line, sizeof line, "%d", row->increment);
     for (i = 0; i < dim; ++i)
         for (j = 0; j < dim; ++j)
             for (k = 0; k < dim; ++k)
                 for (l = 0; l < dim; ++l) {
                     const double c = C[9 * SBC_IJ(i, j) + SBC_IJ(k, l)];
-                    fprintf(t->fp, ",%.17g", c);
+                    n += snprintf(line + n, sizeof line - (size_t)n, ",%.17g", c);
                     norm += c * c;
                 }
-    fputc('\n', t->fp);
-    if (fflush(t->fp) != 0)
-        return sbc_fail(err, SBC_ERR_IO, "servo_bc keyword 'tangent': cannot write '%s'",
-                        s->settings.tangent_file);
+    line[n++] = '\n';
+    snprintf(which, sizeof which, "the row of increment %d", row->increment);
+    if (sbc_output_append(t->fp, line, (size_t)n, s->settings.tangent_file, WHAT, which, err) != SBC_OK)
+        return err->status;
     if (s->log) {
         fprintf(s->log, "  tangent %s: C1111 %.6g, |C| %.6g", sbc_tangent_name(s->settings.tangent), C[0],
                 sqrt(norm));

@@ -50,6 +50,19 @@ sbc_status sbc_output_probe(const char *path, sbc_output_kind kind, const char *
  * one of servo_bc's files of that kind); SBC_OK for a missing or empty file. */
 sbc_status sbc_output_owned(const char *path, sbc_output_kind kind, const char *what, sbc_error *err);
 
+/* Appends text [n] to fp (opened by sbc_output_open) whole or not at all: a
+ * failed write (disk full, file size limit) is cut back to where it began,
+ * so that the file ends with its last whole row. The message: "WHAT 'path':
+ * cannot write ROW (the system's reason); the file ends with the rows before
+ * it", e.g. WHAT "results file", ROW "the row of increment 53". */
+sbc_status sbc_output_append(FILE *fp, const char *text, size_t n, const char *path, const char *what,
+                             const char *row, sbc_error *err);
+
+/* Closes a whole-file output (a VTK snapshot, an SVG, a packing): when any
+ * write to it failed, the partial file is removed and the message names the
+ * system's reason, so that an output is whole or absent. */
+sbc_status sbc_output_close(FILE *fp, const char *path, const char *what, sbc_error *err);
+
 /* Creates the folder path and its missing parents; 0 on success. */
 int sbc_output_folder(const char *path);
 
