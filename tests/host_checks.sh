@@ -123,6 +123,28 @@ host_refusals_3d() {
     "2 atoms outside group part are integrated by no fix: the fix's group holds the whole specimen"
 }
 
+# thermo3d_check: the fix's vector in 3d holds the components a 3d path adds: f_servo[26] (F33), f_servo[36]
+# (sigma33) and f_servo[31] (P33), printed after the run, equal the CSV's last row
+thermo3d_check() {
+  deck_with 's/^thermo_style .*/thermo_style    custom step f_servo[26] f_servo[36] f_servo[31]\nthermo_modify   format float %.15g/' \
+    "$TMP/thermo3d.in"
+  printf 'variable a equal f_servo[26]\nvariable b equal f_servo[36]\nvariable c equal f_servo[31]\nprint "thermo3d ${a} ${b} ${c}"\n' \
+    >> "$TMP/thermo3d.in"
+  run_deck 1 thermo3d.in "$TMP/thermo3d.csv" "$TMP/thermo3d.log" bc P kt 5e3 mu 0.5
+  local got
+  got=$(awk -F, "$COLUMNS_AWK"'FNR == NR { if (FNR > 1) { f = $col("F33"); s = $col("sigma33"); p = $col("P33") }; next }
+      NF == 4 && ($1 ~ /^[0-9]+$/ || $1 == "thermo3d") { t1 = $2; t2 = $3; t3 = $4 }
+      END { d = (t1 - f) / f; e = (t2 - s) / s; g = (t3 - p) / p; d = d < 0 ? -d : d; e = e < 0 ? -e : e; g = g < 0 ? -g : g
+            m = d > e ? d : e; m = m > g ? m : g; printf "%s %s %.2g", f, s, (s != 0 && t2 != "" ? m : 1) }' \
+      "$TMP/thermo3d.csv" FS=' ' "$TMP/thermo3d.log" 2>/dev/null)
+  set -- $got
+  if [ -n "${3:-}" ] && awk -v m="$3" 'BEGIN { exit !(m <= 1e-9) }'; then
+    ok "3d thermo: f_servo[26] F33 $1, f_servo[36] sigma33 $2 Pa and f_servo[31] P33 as the CSV's last row (to $3)"
+  else
+    no "3d thermo: f_servo[26], [36], [31] against the CSV's last row: ${got:-nothing read}"; grep -m1 ERROR "$TMP/thermo3d.log"
+  fi
+}
+
 # screen_none_check: a results file that cannot be written, under -screen
 # none: the fix's ERROR line in the log file (LIGGGHTS' Error::one writes the
 # screen only), exit 1
@@ -292,12 +314,12 @@ outputs_checks() {
     "cannot write 'self.in': it exists and is not a servo_bc results file"
   if [ "$(md5sum < "$TMP/self.in")" = "$sum" ]; then ok "the deck named as the results file is intact"
   else no "the deck named as the results file was changed"; fi
-  # an output index past the fix's 21: the host itself refuses it
-  deck_with 's/^thermo_style .*/thermo_style    custom step f_servo[22]/' "$TMP/index.in"
+  # an output index past the fix's 36: the host itself refuses it
+  deck_with 's/^thermo_style .*/thermo_style    custom step f_servo[37]/' "$TMP/index.in"
   run_deck 1 index.in "$TMP/index.csv" "$TMP/index.log"
   local rc=$?
   if [ $rc -ne 0 ] && grep -q "ERROR.*Thermo fix vector is accessed out-of-range" "$TMP/index.log"; then
-    ok "refuses an output index that does not exist (f_servo[22], by the host)"
+    ok "refuses an output index that does not exist (f_servo[37], by the host)"
   else
     no "an output index that does not exist (exit $rc):"; grep -m1 ERROR "$TMP/index.log"
   fi

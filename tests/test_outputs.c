@@ -42,6 +42,26 @@ static void thermo_vector(void)
     CHECK(sbc_thermo_value(NULL, &r, 0, 18) == 1e-5 && sbc_thermo_value(NULL, &r, 0, 19) == 2e-5 &&
           sbc_thermo_value(NULL, &r, 0, 20) == -3e-9);
     CHECK(sbc_thermo_value(NULL, &r, 0, SBC_THERMO_COUNT) == 0.0 && sbc_thermo_value(NULL, &r, 0, -1) == 0.0);
+    CHECK(sbc_thermo_value(NULL, &r, 0, 25) == 0.0); /* F33 of a 2D row: not in its columns */
+    /* 3D: the nine components of F, P, sigma, each at its documented index (docs/lammps/fix_servo_bc.rst) */
+    r.dim = 3;
+    {
+        static const char *const name[9] = {"11", "12", "13", "21", "22", "23", "31", "32", "33"};
+        int all = 0;
+        for (k = 0; k < 9; ++k) {
+            char c[16];
+            snprintf(c, sizeof c, "F%s", name[k]);
+            all += sbc_thermo_value(NULL, &r, 0, sbc_thermo_index(c) - 1) == r.F[k];
+            snprintf(c, sizeof c, "P%s", name[k]);
+            all += sbc_thermo_value(NULL, &r, 0, sbc_thermo_index(c) - 1) == r.P[k];
+            snprintf(c, sizeof c, "sigma%s", name[k]);
+            all += sbc_thermo_value(NULL, &r, 0, sbc_thermo_index(c) - 1) == r.sigma[k];
+        }
+        CHECK(all == 27);
+        CHECK(sbc_thermo_index("F13") == 22 && sbc_thermo_index("F33") == 26 && sbc_thermo_index("P33") == 31 &&
+              sbc_thermo_index("sigma33") == 36 && sbc_thermo_index("sigma12") == 11 && sbc_thermo_index("x") == 0);
+    }
+    r.dim = 2;
     /* the one log line of every host (results.h): the component of F farthest from I */
     {
         static const double shear[9] = {0.999, 0.02, 0.03, -0.01, 0.999, 0, 0, 0, 1};

@@ -11,7 +11,9 @@
  * cohesive in LAMMPS and LIGGGHTS, servo_bc.Cohesive in YADE. */
 #include "decks.h"
 #include "runner/script_state.h"
+#include "sbc/columns.h"
 #include "sbc/embedded/output_file.h"
+#include "sbc/tensor.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -134,6 +136,38 @@ static double cohesive_reach(const script *s, double skin, double rmax)
     return 1.001 * (2.0 * rmax + (stretch > skin ? stretch : skin));
 }
 
+/* the thermo columns of a host deck: the increment, the path's own components (those of F that leave the identity,
+   else the stress components of a stress path; at most three) with their Cauchy stress, the servo iterations */
+typedef struct thermo_text {
+    char s[256];
+} thermo_text;
+
+static thermo_text thermo_columns(const script *s, int dim)
+{
+    thermo_text t;
+    int n = snprintf(t.s, sizeof t.s, "f_servo[1]"), i, j, k, shown = 0;
+    for (k = 0; k < dim * dim && shown < 3; ++k) {
+        char F[32], sigma[40];
+        i = k / dim, j = k % dim;
+        snprintf(F, sizeof F, "F%d%d", i + 1, j + 1);
+        snprintf(sigma, sizeof sigma, "sigma%d%d", i + 1, j + 1);
+        if (s->settings.F[SBC_IJ(i, j)] != (i == j ? 1.0 : 0.0)) {
+            n += snprintf(t.s + n, sizeof t.s - (size_t)n, " f_servo[%d] f_servo[%d]", sbc_thermo_index(F),
+                          sbc_thermo_index(sigma));
+            ++shown;
+        }
+    }
+    for (k = 0; k < s->settings.nstress && shown < 3; ++k, ++shown) {
+        char sigma[40];
+        snprintf(sigma, sizeof sigma, "sigma%d%d", s->settings.stress[k].i + 1, s->settings.stress[k].j + 1);
+        n += snprintf(t.s + n, sizeof t.s - (size_t)n, " f_servo[%d]", sbc_thermo_index(sigma));
+    }
+    if (!shown)
+        n += snprintf(t.s + n, sizeof t.s - (size_t)n, " f_servo[10]");
+    snprintf(t.s + n, sizeof t.s - (size_t)n, " f_servo[17]");
+    return t;
+}
+
 static sbc_status write_lammps(const script *s, const case_material *c, const char *dir, double skin, double rmax,
                                sbc_error *err)
 {
@@ -163,9 +197,9 @@ static sbc_status write_lammps(const script *s, const case_material *c, const ch
     fprintf(fp, c->dim == 3 ? "fix             integrate servo_interior nve/sphere\n"
                             : "fix             integrate servo_interior nve/sphere disc\nfix             plane all "
                               "enforce2d\n");
-    fprintf(fp, "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]%s\n"
+    fprintf(fp, "thermo_style    custom step %s%s\n"
                 "thermo          100000\nrun             2000000000    # the fix ends the run\n",
-            s->cohesive ? " f_bonds[1]" : "");
+            thermo_columns(s, c->dim).s, s->cohesive ? " f_bonds[1]" : "");
     return close_file(fp, path, err);
 }
 
@@ -210,14 +244,14 @@ static sbc_status write_liggghts(const script *s, const case_material *c, const 
     fprintf(fp, c->dim == 3 ? "fix             integrate servo_interior nve/sphere\n"
                             : "fix             integrate servo_interior nve/sphere\nfix             plane all "
                               "enforce2d\n");
-    fprintf(fp, "thermo_style    custom step f_servo[1] f_servo[3] f_servo[10] f_servo[11] f_servo[17]%s\n"
+    fprintf(fp, "thermo_style    custom step %s%s\n"
                 "thermo          100000\n"
                 "variable        done equal f_servo[18]    # LIGGGHTS cannot end a run from a fix\n"
                 "run             0\n"
                 "label           loop    # pieces without a setup between them: the uninterrupted run's results\n"
                 "run             10000 pre no post no\n"
                 "if              \"${done} == 0\" then \"jump SELF loop\"\n",
-            s->cohesive ? " f_bonds[1]" : "");
+            thermo_columns(s, c->dim).s, s->cohesive ? " f_bonds[1]" : "");
     return close_file(fp, path, err);
 }
 

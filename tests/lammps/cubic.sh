@@ -26,6 +26,7 @@ cubic_restart_check "$TMP/cubic_head.in"
 restart_corruption_check
 host_refusals_3d
 screen_none_check
+thermo3d_check
 { cat "$DECK"; echo "write_dump all custom $TMP/cubic_atoms.txt id f_servo[1] f_servo[2] f_servo[3] f_servo[4] modify sort id"; } \
   > "$TMP/cubic_dump.in"
 run_deck 1 cubic_dump.in "$TMP/cubic_dump.csv" "$TMP/cubic_dump.log" bc P kt 5e3 mu 0.5

@@ -43,6 +43,7 @@ cubic_restart_check "$TMP/cubic_head.in"
 restart_corruption_check
 host_refusals_3d
 screen_none_check
+thermo3d_check
 rm -rf "$TMP"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

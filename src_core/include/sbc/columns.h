@@ -79,8 +79,13 @@ typedef struct sbc_thermo_entry {
     const char *column; /* SBC_THERMO_COLUMN: the column's name */
 } sbc_thermo_entry;
 
-#define SBC_THERMO_COUNT 21
+#define SBC_THERMO_COUNT 36
 extern const sbc_thermo_entry sbc_thermo_vector[SBC_THERMO_COUNT];
+
+/* The 1-based index in the thermo vector (f_ID[index]) of the result column
+ * called column (F11 ... F33, P.., sigma.., unbalanced, ...), 0 when the
+ * vector does not hold it. */
+int sbc_thermo_index(const char *column);
 
 /* Entry k (0-based: f_ID[k + 1]) for a controller c whose last converged row
  * is last; 0 outside the vector. */

@@ -140,7 +140,20 @@ const sbc_thermo_entry sbc_thermo_vector[SBC_THERMO_COUNT] = {
     {SBC_THERMO_R_FORCE, NULL}, {SBC_THERMO_R_MOMENT, NULL}, {SBC_THERMO_R_DEFORMATION, NULL},
     {SBC_THERMO_ITERATION, NULL}, {SBC_THERMO_FINISHED, NULL},
     COLUMN("unbalanced"), COLUMN("frame_residual"), COLUMN("hill_mandel"),
+    /* 0.3.0: the components a 3D path adds (0 in 2D) */
+    COLUMN("F13"), COLUMN("F23"), COLUMN("F31"), COLUMN("F32"), COLUMN("F33"),
+    COLUMN("P13"), COLUMN("P23"), COLUMN("P31"), COLUMN("P32"), COLUMN("P33"),
+    COLUMN("sigma13"), COLUMN("sigma23"), COLUMN("sigma31"), COLUMN("sigma32"), COLUMN("sigma33"),
 };
+
+int sbc_thermo_index(const char *column)
+{
+    int k;
+    for (k = 0; k < SBC_THERMO_COUNT; ++k)
+        if (sbc_thermo_vector[k].kind == SBC_THERMO_COLUMN && strcmp(sbc_thermo_vector[k].column, column) == 0)
+            return k + 1;
+    return 0;
+}
 
 double sbc_thermo_value(const sbc_controller *c, const sbc_result *last, int finished, int k)
 {
