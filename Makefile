@@ -12,6 +12,8 @@
 #   make fe2-patch   the FE^2 patch test on GetFEM (docs/fe2.md)
 #   make fe2-demo    the FE^2 biaxial test with (D), (P), (T) points beside a DNS: out/fe2/biaxial.csv, .svg
 #   make fuzz     libFuzzer campaigns over the core's input surfaces (FUZZ_RUNS per harness; docs/reliability.md)
+#   make install PREFIX=/usr/local   the library, headers, runner, Python modules, docs, pkg-config and CMake
+#                 files (DESTDIR too); make uninstall PREFIX=... removes them (docs/core.md, "Installing")
 
 CC      ?= cc
 CSTD     = -std=c11 -Wall -Wextra -pedantic -Werror
@@ -49,7 +51,7 @@ FUZZ_RUNS  ?= 1000000
 # under the sanitizers (a legitimate large packing is no finding)
 FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src -DSBC_PACKING_MAX=64L
 
-.PHONY: all demo compare check deps check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
+.PHONY: all demo compare check deps install uninstall check-install check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
   check-yade fe2-patch fe2-demo lammps liggghts fuzz figures \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
@@ -68,8 +70,26 @@ figures: all
 $(B)/libservo_bc.a: $(CORE_OBJ)
 	rm -f $@ && ar rcs $@ $^
 
+# the shared library's SONAME names its major version (make install links libservo_bc.so.MAJOR to it)
+VERSION := $(shell sed -n 's/^\#define SBC_VERSION "\(.*\)"/\1/p' src_core/include/sbc/version.h)
 $(B)/libservo_bc.so: $(CORE_OBJ)
-	$(CC) -shared -o $@ $^ $(LDLIBS)
+	$(CC) -shared -Wl,-soname,libservo_bc.so.$(firstword $(subst ., ,$(VERSION))) -o $@ $^ $(LDLIBS)
+
+PREFIX ?= /usr/local
+install: all
+	bash scripts/install.sh install $(PREFIX) $(B) $(VERSION) "$(LDLIBS)"
+
+uninstall:
+	bash scripts/install.sh uninstall $(PREFIX)
+
+# make install into a temporary prefix, used with pkg-config, CMake and pip (tests/install.sh)
+$(B)/install-deps.installed:
+	@mkdir -p $(B)
+	@bash scripts/install-deps.sh install
+	@touch $@
+
+check-install: all $(B)/install-deps.installed
+	bash tests/install.sh $(B) $(VERSION) "$(LDLIBS)"
 
 $(B)/servo-bc: src_core/runner/main.c $(RUNNER_SRC) src_core/runner/decks.h $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -o $@ $< $(RUNNER_SRC) $(B)/libservo_bc.a $(LDLIBS)
@@ -91,7 +111,8 @@ demo: all
 	$(B)/servo-bc inputs/demo_D_25.sbc
 
 # each part's wall time is printed after it (CI's budget is 30 minutes for all of them)
-CHECK_PARTS = check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host check-yade fe2-patch
+CHECK_PARTS = check-core check-sanitize check-valgrind check-install check-lammps check-liggghts check-cross-host check-yade \
+  fe2-patch
 check: deps
 	@start=$$(date +%s); failed=; for part in $(CHECK_PARTS); do begun=$$(date +%s); \
 	  $(MAKE) --no-print-directory $$part || { failed="$$failed $$part"; [ -n "$(findstring k,$(firstword -$(MAKEFLAGS)))" ] || \

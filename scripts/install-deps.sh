@@ -7,6 +7,7 @@
 #   scripts/install-deps.sh yade     the Debian YADE package (make yade, make check)
 #   scripts/install-deps.sh fuzz     clang with libFuzzer (make fuzz)
 #   scripts/install-deps.sh fe2      GetFEM's Python module, NumPy, SciPy (make fe2-patch, make fe2-demo)
+#   scripts/install-deps.sh install  pkg-config, CMake, pip and setuptools (make check-install)
 # Already-installed tools are left alone; without root or apt-get it only reports.
 set -euo pipefail
 need=()
@@ -45,10 +46,17 @@ for what in "$@"; do
       /usr/bin/python3 -c 'import mpi4py' 2>/dev/null || need+=(python3-mpi4py)
       command -v mpirun >/dev/null || need+=(openmpi-bin)
       ;;
+    install)
+      command -v pkg-config >/dev/null || need+=(pkgconf)
+      command -v cmake >/dev/null || need+=(cmake)
+      /usr/bin/python3 -c 'import setuptools' 2>/dev/null || need+=(python3-setuptools)
+      /usr/bin/python3 -m pip --version >/dev/null 2>&1 || need+=(python3-pip)
+      /usr/bin/python3 -c 'import wheel' 2>/dev/null || need+=(python3-wheel)
+      ;;
     yade)
       command -v yade >/dev/null || need+=(yade python3-yade)
       ;;
-    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev, liggghts-dev, yade, fuzz or fe2)" >&2; exit 2 ;;
+    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev, liggghts-dev, yade, fuzz, fe2 or install)" >&2; exit 2 ;;
   esac
 done
 [ ${#need[@]} -eq 0 ] && exit 0

@@ -9,7 +9,8 @@ built on it, and so can another host or a script.
     lib = core.library()
     h = lib.sbc_host_create(b'D F 0.99 0 0 0.99', 2, n, xy, r, m, 0, None, dt, kn, msg, len(msg))
 
-The library is found at $SERVO_BC_LIB, beside this file, or in ../build/.
+The library is found at $SERVO_BC_LIB, beside this file, in the folder `make install` or `pip install .` recorded
+(servo_bc_paths.py), or in ../build/.
 """
 import ctypes
 import os
@@ -70,16 +71,28 @@ class ServoBCError(RuntimeError):
     """A servo_bc message: bad words, a frame that cannot be built, a diverging controller."""
 
 
+def _installed_libdir():
+    """The library folder `make install` or `pip install .` recorded (servo_bc_paths.py), or ''."""
+    try:
+        import servo_bc_paths
+        return servo_bc_paths.LIBDIR
+    except ImportError:
+        return ''
+
+
 def _load():
     here = os.path.dirname(os.path.abspath(__file__))
+    libdir = _installed_libdir()
     candidates = [os.environ.get('SERVO_BC_LIB', ''), os.path.join(here, 'libservo_bc.so'),
+                  os.path.join(libdir, 'libservo_bc.so') if libdir else '',
                   os.path.join(here, '..', 'build', 'libservo_bc.so')]
     for path in candidates:
         if path and os.path.exists(path):
             lib = ctypes.CDLL(os.path.abspath(path))
             break
     else:
-        raise ServoBCError('servo_bc: libservo_bc.so not found (run `make yade`, or set SERVO_BC_LIB)')
+        raise ServoBCError('servo_bc: libservo_bc.so not found (run `make yade` or `make install`, or set '
+                           'SERVO_BC_LIB)')
     D, I, P = ctypes.c_double, ctypes.c_int, ctypes.c_void_p
     pd, pi = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_int)
     sig = {

@@ -4,7 +4,10 @@
  * stored as doubles and restored into a new point. Built and run by make
  * check (it prints "material point example: ..." and exits 0).
  *
- *   cc -std=c11 -Isrc_core/include inputs/fe2/material_point.c build/libservo_bc.a -lm */
+ *   cc -std=c11 -Isrc_core/include inputs/fe2/material_point.c build/libservo_bc.a -lumfpack -lm
+ * (-lumfpack where the core was built with UMFPACK, the default when libsuitesparse-dev is installed), or
+ * after make install, with the shared library:
+ *   cc -std=c11 inputs/fe2/material_point.c $(pkg-config --cflags --libs servo_bc) */
 #include "sbc/material_point.h"
 
 #include <math.h>
