@@ -138,6 +138,7 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B
 	$(B)/cxx_headers
 	bash tests/headers.sh
 	bash tests/tables.sh $(B)
+	python3 tests/docs_check.py .
 	python3 tests/python_core.py $(B)/libservo_bc.so $(B)/servo-bc
 	python3 tests/tangent_irregular.py $(B)/libservo_bc.so $(B)/servo-bc
 	python3 tests/tangent_runner.py $(B)/servo-bc

@@ -181,6 +181,8 @@ refused('pickle', lambda: pickle.dumps(deep), 'not pickled')
 refused('F of 4 values', lambda: deep.integrate([0.999, 0.001, 0, 0.999]), 'F has 4 values (expected 9)')
 refused('x two values short', lambda: core.MaterialPoint(**dict(lattice, x=lattice['x'][:-2], words='P')),
         'x has %d values (expected %d)' % (len(lattice['x']) - 2, len(lattice['x'])))
+refused('a periodic packing without its box', lambda: core.MaterialPoint(x, r, 'P', kn=1e4, density=2e3, dt=1e-5),
+        "needs its box: sbc_point_def.box, MaterialPoint(box=[xlo, xhi, ylo, yhi])")
 refused('a box of 3 values', lambda: core.MaterialPoint(**dict(lattice, box=[0, 1, 0], words='P')),
         'box has 3 values (expected 4)')
 refused('a batch of 3 points and 1 F', lambda: core.integrate_points([shallow, deep, shallow], [G]),

@@ -417,6 +417,12 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
         st = sbc_packing_distinct(d->n, d->x, d->r, err);
         if (st == SBC_OK)
             st = sbc_frame_detect_packing(&p->frame, &pk, err);
+        if (st == SBC_ERR_FRAME && !d->box && strstr(err->message, "corner")) { /* the likely cause, named */
+            char message[SBC_ERROR_LEN];
+            snprintf(message, sizeof message, "%s", err->message);
+            sbc_fail(err, st, "material point: %s (a geometrically periodic packing, as 'generate' writes it, "
+                     "needs its box: sbc_point_def.box, MaterialPoint(box=[xlo, xhi, ylo, yhi]))", message);
+        }
     }
     if (st != SBC_OK || !(p->a.engine = p->a.ops->create(d, &p->settings, err)) ||
         sbc_time_step_bound(d->dt, p->a.ops->critical_dt(p->a.engine), "2 sqrt(M_min / (2 kn))",
