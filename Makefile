@@ -261,6 +261,7 @@ check-liggghts: $(B)/liggghts_servo $(B)/servo-bc
 check-cross-host: $(B)/servo-bc $(B)/servo-bc-plot $(B)/lmp_servo $(B)/liggghts_servo yade
 	B=$(abspath $(B)) bash tests/cross_host.sh
 	bash tests/mixed_layer.sh $(B)/servo-bc $(B)/lmp_servo $(B)/liggghts_servo
+	bash tests/restart_irregular_3d.sh $(B)/servo-bc $(B)/lmp_servo $(B)/liggghts_servo
 
 # make compare CASE=inputs/compare/regular_P_30.sbc: one case on every engine
 # there is (hosts that cannot be built or installed are skipped); report in
