@@ -37,6 +37,7 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include <cstdint>
 #include <algorithm>
 
 #include <cmath>
@@ -239,11 +240,11 @@ namespace {
 // marks fix servo_bc/bonds' restart block (bump on any change of its layout);
 // the bonds' states moved into per-atom data with the layout after BONDS_GATHERED;
 // the cohesive contacts' states, with model COHESIVE after COHESIVE_GATHERED
-const double BONDS_MAGIC = 8.020006e7, BONDS_GATHERED = 8.020005e7;
+const double BONDS_MAGIC = 8.020007e7, BONDS_UNSEALED = 8.020006e7, BONDS_GATHERED = 8.020005e7;
 const int COHESIVE_GATHERED = 3, COHESIVE = 4;
 }
 
-/* rank 0: the marker, the block's length, then
+/* rank 0: the marker, the seal's head (the block's length, its seal, the checksum of what follows: sbc/saved.h), then
    beam | parallel: model (1 | 2), E, nu, alpha, failure, strength[5], r_min,
    slots per atom, doubles per bond state, eq. 48's step, the bonds formed,
    the spheres, the longest bond at creation (the bonds' states are per-atom
@@ -257,15 +258,15 @@ void FixServoBCBonds::write_restart(FILE *fp)
   if (comm->me != 0 || (!bonds && !have_contacts)) return;
   std::vector<double> list;
   if (have_contacts) {
-    list = {BONDS_MAGIC, 0.0, (double) COHESIVE, law.kn, law.ks, law.kr, law.fn_u, law.fs_u, law.m_u, law.mu,
+    list = {BONDS_MAGIC, 0.0, 0.0, 0.0, (double) COHESIVE, law.kn, law.ks, law.kr, law.fn_u, law.fs_u, law.m_u, law.mu,
             rmin, (double) maxb, (double) formed, (double) n};
   } else {
-    list = {BONDS_MAGIC, 0.0, model == "beam" ? 1.0 : 2.0, E, nu, alpha, failure ? 1.0 : 0.0};
+    list = {BONDS_MAGIC, 0.0, 0.0, 0.0, model == "beam" ? 1.0 : 2.0, E, nu, alpha, failure ? 1.0 : 0.0};
     list.insert(list.end(), strength, strength + 5);
     list.insert(list.end(),
                 {rmin, (double) maxb, (double) per, critical_dt, (double) formed, (double) n, longest});
   }
-  list[1] = (double) list.size();
+  sbc_saved_seal(&list[1], list.size() - 1);
   int size = (int) (list.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(list.data(), sizeof(double), list.size(), fp);
@@ -283,12 +284,14 @@ void FixServoBCBonds::restart(char *raw)
          "this version keeps each bond with its atoms and cannot read it (run the loading again from its data "
          "file, or read the file with the version that wrote it)");
   if (list[0] != BONDS_MAGIC)
-    fail("restart: this fix's block in the restart file is not this version's fix servo_bc/bonds' (write the "
-         "restart file again)");
-  sbc_saved_start(&rd, list + 1, 1, "restart data", &err);
-  const long total = sbc_saved_int(&rd, "length", 4, 1000000000L);
-  if (rd.st != SBC_OK) fail(err.message);
-  sbc_saved_start(&rd, list + 2, (size_t) total - 2, "restart data", &err);
+    fail(std::string("restart: this fix's block in the restart file is not this version's fix servo_bc/bonds'") +
+         (list[0] == BONDS_UNSEALED ? " (an earlier 0.3.0 block, without its seal)" : "") +
+         " (write the restart file again)");
+  size_t sealed = 0;
+  if (sbc_saved_open(list + 1, SIZE_MAX, &sealed, "restart: fix servo_bc/bonds data", &err) != SBC_OK)
+    fail(err.message);
+  const long total = (long) sealed + 1;    // with the marker
+  sbc_saved_start(&rd, list + 1 + SBC_SEALED_HEAD, sealed - SBC_SEALED_HEAD, "restart data", &err);
   const int code = (int) sbc_saved_int(&rd, "model", 1, COHESIVE);
   if (rd.st != SBC_OK) fail(err.message);
   if (code == COHESIVE_GATHERED)
@@ -317,8 +320,8 @@ void FixServoBCBonds::restart(char *raw)
     formed = (int) sbc_saved_int(&rd, "bonds formed", 1, 2000000000L);
     n = (int) sbc_saved_int(&rd, "disc count", 2, 2000000000L);
     if (rd.st != SBC_OK) fail(err.message);
-    if ((long) rd.at != total - 2)
-      fail("restart: the block holds " + std::to_string(total) + " values, its contents " + std::to_string(rd.at + 2));
+    if ((long) rd.at != total - 1 - SBC_SEALED_HEAD)
+      fail("restart: the block holds " + std::to_string(total) + " values, its contents " + std::to_string(rd.at + 1 + SBC_SEALED_HEAD));
     per = SBC_COHESIVE_PAIR_STATE;
     size_slots();
     have_contacts = true;
@@ -347,8 +350,8 @@ void FixServoBCBonds::restart(char *raw)
   n = (int) sbc_saved_int(&rd, "sphere count", 2, 2000000000L);
   longest = sbc_saved_positive(&rd, "longest bond");
   if (rd.st != SBC_OK) fail(err.message);
-  if ((long) rd.at != total - 2)
-    fail("restart: the block holds " + std::to_string(total) + " values, its contents " + std::to_string(rd.at + 2));
+  if ((long) rd.at != total - 1 - SBC_SEALED_HEAD)
+    fail("restart: the block holds " + std::to_string(total) + " values, its contents " + std::to_string(rd.at + 1 + SBC_SEALED_HEAD));
   char msg[512] = "";
   bonds = sbc_bpm_host_law(model.c_str(), E, nu, alpha, failure ? strength : nullptr, rmin, msg, sizeof msg);
   if (!bonds) fail(std::string("restart: ") + msg);

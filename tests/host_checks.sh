@@ -408,21 +408,16 @@ lattice_checks() {
 # (TMP/part2.in) writes the same CSV as the uninterrupted run (TMP/full.in),
 # byte for byte; part2 with another F is refused (decks from restart_decks)
 # corrupt_restart FILE WHICH VALUE: overwrite one double of fix servo_bc's
-# restart block (found by its marker, fix_servo_bc.cpp RESTART_MAGIC): WHICH
-# is an offset from the marker, or corner (the frame's first corner index),
-# mass (the first frame mass), last (the block's last value). perl-base is in
-# every Debian.
+# restart block (found by its marker, fix_servo_bc.cpp RESTART_MAGIC; marker,
+# length, seal, checksum, the frame's length, the frame (2D: Q, then 8 values
+# per particle, the corners), the IDs, the masses, ...) and seal it again
+# (tests/restart_edit.py): WHICH is an offset from the marker, or corner (the
+# frame's first corner index), mass (the first frame mass), last (the block's
+# last value)
 corrupt_restart() {
-  perl -e '
-    my ($file, $which, $value) = @ARGV;
-    open(my $f, "+<", $file) or exit 1; binmode $f; local $/; my $d = <$f>;
-    my $at = index($d, pack("d", 8.020001e7)); exit 1 if $at < 0;
-    my $get = sub { unpack("d", substr($d, $at + 8 * $_[0], 8)) };
-    my $nf = $get->(2), $q = $get->(3);
-    my %offset = (corner => 3 + 1 + 8 * $q, mass => 3 + $nf + $q, last => $get->(1) - 1);
-    my $k = exists $offset{$which} ? $offset{$which} : $which;
-    substr($d, $at + 8 * $k, 8) = pack("d", $value eq "nan" ? 9**9**9 / 9**9**9 : $value);
-    seek($f, 0, 0); print $f $d; close $f;' "$1" "$2" "$3"
+  local which=$2
+  case $which in corner) which='5 + 1 + 8 * v(5)' ;; mass) which='5 + v(4) + v(5)' ;; last) which='v(1)' ;; esac
+  python3 "$(dirname "${BASH_SOURCE[0]}")/restart_edit.py" "$1" 8.020002e7 "$which" "$3"
 }
 
 restart_check() {
@@ -437,7 +432,7 @@ restart_check() {
   fi
   # corrupted restart files (sbc/saved.h): each value checked, named, never a crash
   local what k v expect
-  for what in "length:1:1e300:'length'" "frame length:2:-5:'frame length'" "corner:corner:1e9:'corner'" \
+  for what in "length:1:1e300:its length is 1.0000000000000001e+300" "frame length:4:-5:'frame length'" "corner:corner:1e9:'corner'" \
               "mass:mass:nan:'frame mass'" "FIRE:last:-1:'FIRE steps'"; do
     IFS=: read -r label k v expect <<< "$what"
     cp "$TMP/half.restart" "$TMP/bad.restart"

@@ -342,21 +342,18 @@ cutoff_case() {  # LABEL CUTOFF EXPECTED
 cutoff_case "a ghost cutoff shorter than a bond" 0.1 "the ghost cutoff 0.100000 m is shorter than a bond at creation (2 r_max = 0.200000 m)"
 cutoff_case "a bond stretched past the ghost cutoff" 0.25 "nor one of its ghosts (ghost cutoff 0.250000 m; the longest bond at creation 0.200000 m)"
 # the bonds fix's restart block and its per-atom data checked value by value
+# the bonds fix's restart block and its per-atom data checked value by value
 # (sbc/saved.h): corrupted counts, sizes and values are refused by name, never
-# a crash or a NaN output. corrupt_bonds FILE OFFSET VALUE overwrites one
-# double of the block (found by its marker, BONDS_MAGIC of
-# fix_servo_bc_bonds.cpp); OFFSET may be "last". corrupt_atom FILE OFFSET VALUE
-# overwrites one double of atom 1's per-atom data (size 33, work, fracture,
-# 1 bond, partner 2, its 28 beam values: fix_servo_bc_bonds_slots.cpp)
-corrupt_bonds() {
-  perl -e '
-    my ($file, $k, $value) = @ARGV;
-    open(my $f, "+<", $file) or exit 1; binmode $f; local $/; my $d = <$f>;
-    my $at = index($d, pack("d", 8.020006e7)); exit 1 if $at < 0;
-    $k = unpack("d", substr($d, $at + 8, 8)) - 1 if $k eq "last";
-    substr($d, $at + 8 * $k, 8) = pack("d", $value eq "nan" ? 9**9**9 / 9**9**9 : $value);
-    seek($f, 0, 0); print $f $d; close $f;' "$1" "$2" "$3"
-}
+# a crash or a NaN output. The block is sealed (its length's seal, a checksum
+# of its values): a changed value is refused by the checksum, and, sealed again
+# after the change (as a writer that computed a wrong value would), by its own
+# check. corrupt_bonds FILE OFFSET VALUE [unsealed] overwrites one double of
+# the block (found by its marker, BONDS_MAGIC of fix_servo_bc_bonds.cpp:
+# marker, length, seal, checksum, then the fields) and seals it again unless
+# "unsealed" (tests/restart_edit.py). corrupt_atom FILE OFFSET VALUE overwrites one double of atom 1's
+# per-atom data (size 33, work, fracture, 1 bond, partner 2, its 28 beam
+# values: fix_servo_bc_bonds_slots.cpp)
+corrupt_bonds() { python3 "$here/../restart_edit.py" "$1" 8.020007e7 "$2" "$3" ${4:-}; }
 corrupt_atom() {
   perl -e '
     my ($file, $k, $value) = @ARGV;
@@ -370,7 +367,8 @@ corrupt_atom() {
     substr($d, $at + 8 * $k, 8) = pack("d", $value eq "nan" ? 9**9**9 / 9**9**9 : $value);
     seek($f, 0, 0); print $f $d; close $f;' "$1" "$2" "$3"
 }
-refused_restart() {  # LABEL OFFSET VALUE EXPECTED [corrupt_atom]
+corrupt_unsealed() { corrupt_bonds "$@" unsealed; }
+refused_restart() {  # LABEL OFFSET VALUE EXPECTED [corrupt_atom | corrupt_unsealed]
   cp "$tmp/split.restart" "$tmp/bad.restart"
   ${5:-corrupt_bonds} "$tmp/bad.restart" "$2" "$3" || { bad "restart: no fix servo_bc/bonds data in the file"; return; }
   sed 's/read_restart split.restart/read_restart bad.restart/' "$tmp/split.in" > "$tmp/bad.in"
@@ -382,14 +380,15 @@ refused_restart() {  # LABEL OFFSET VALUE EXPECTED [corrupt_atom]
     bad "restart file with $1 (exit $status): $(grep -m1 -E 'ERROR|terminate|signal' "$tmp/bad.log")"
   fi
 }
-refused_restart "a length of 1e12" 1 1e12 "'length'"
-refused_restart "1e10 spheres" 17 1e10 "'sphere count'"
-refused_restart "1e6 doubles per bond" 14 1e6 "'doubles per bond'"
-refused_restart "29 doubles per beam bond" 14 29 "29 doubles per bond state; this version's beam bonds have 28"
-refused_restart "1e4 bonds per sphere" 13 1e4 "'slots per atom'"
-refused_restart "a smallest radius 0" 12 0 "'smallest radius'"
-refused_restart "a NaN critical time step" 15 nan "'critical time step'"
-refused_restart "another E" 3 5e9 "the file's bonds are beam 5000000000"
+refused_restart "a length of 1e12" 1 1e12 "its length 1000000000000 does not match its seal"
+refused_restart "1e10 spheres, unsealed" 19 1e10 "do not match their checksum" corrupt_unsealed
+refused_restart "1e10 spheres" 19 1e10 "'sphere count'"
+refused_restart "1e6 doubles per bond" 16 1e6 "'doubles per bond'"
+refused_restart "29 doubles per beam bond" 16 29 "29 doubles per bond state; this version's beam bonds have 28"
+refused_restart "1e4 bonds per sphere" 15 1e4 "'slots per atom'"
+refused_restart "a smallest radius 0" 14 0 "'smallest radius'"
+refused_restart "a NaN critical time step" 17 nan "'critical time step'"
+refused_restart "another E" 5 5e9 "the file's bonds are beam 5000000000"
 refused_restart "an atom with 7 bonds" 3 7 "'bond count'" corrupt_atom
 refused_restart "an atom whose size does not fit its bonds" 0 34 "34 values for 1 bonds" corrupt_atom
 refused_restart "a partner ID 0" 4 0 "'partner ID'" corrupt_atom
@@ -569,10 +568,10 @@ if "$servo_bc" --decks "$tmp/coh" "$here/../../inputs/compare/cohesive_layer_sho
   }
   coh_refused "another law after read_restart" - - "the file's cohesive law differs: kn" \
     's/servo_bc\/bonds cohesive kn \([0-9.e+]*\)/servo_bc\/bonds cohesive kn 2\1/'
-  coh_refused "a smallest radius 0" 10 0 "'smallest radius'"
-  coh_refused "1e4 slots per atom" 11 1e4 "'slots per atom'"
-  coh_refused "a disc count of 1" 13 1 "'disc count'"
-  coh_refused "the gathered layout of 0.2.0 (model 3)" 2 3 "kept every contact on every rank"
+  coh_refused "a smallest radius 0" 12 0 "'smallest radius'"
+  coh_refused "1e4 slots per atom" 13 1e4 "'slots per atom'"
+  coh_refused "a disc count of 1" 15 1 "'disc count'"
+  coh_refused "the gathered layout of 0.2.0 (model 3)" 4 3 "kept every contact on every rank"
   coh_refused "an intact flag 0.5" 5 0.5 "intact flag 0.5" "" corrupt_pair
   coh_refused "a NaN tangential spring" 6 nan "'bond state value'" "" corrupt_pair
   res=$(paste -d, "$tmp/coh/$host.csv" "$tmp/coh/split.csv" 2>/dev/null | awk -F, -f "$here/../sigma_diff.awk")
