@@ -56,13 +56,13 @@ fi
 # Python: the installed modules, and pip's, each finding the prefix's library (not build/)
 probe='import servo_bc_core as c; print(c.version(), c.library()._name, len(c.columns()))'
 got=$(cd "$T" && PYTHONPATH=$prefix/lib/python3/dist-packages $py -c "$probe" 2>&1)
-case $got in "$version $prefix/lib/libservo_bc.so 24") ok "servo_bc_core from the installed tree: $got" ;;
+case $got in "$version $prefix/lib/libservo_bc.so 25") ok "servo_bc_core from the installed tree: $got" ;;
   *) no "servo_bc_core from the installed tree: $got" ;; esac
 (cd "$top" && SERVO_BC_PREFIX=$prefix $py -m pip install --no-build-isolation --no-deps --no-index --quiet \
   --prefix "$T/pip" . > "$T/pip.log" 2>&1)
 site=$(dirname "$(find "$T/pip" -name servo_bc_core.py | head -n 1)")
 got=$(cd "$T" && PYTHONPATH=$site $py -c "$probe" 2>&1)
-case $got in "$version $prefix/lib/libservo_bc.so 24") ok "pip install --no-build-isolation . (in $site): $got" ;;
+case $got in "$version $prefix/lib/libservo_bc.so 25") ok "pip install --no-build-isolation . (in $site): $got" ;;
   *) no "pip install: $got"; tail -n 5 "$T/pip.log" ;; esac
 
 # uninstall

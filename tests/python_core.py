@@ -41,7 +41,7 @@ with tempfile.TemporaryDirectory() as tmp:
     subprocess.run([runner, os.path.join(tmp, 'run.sbc')], capture_output=True, check=True)
     with open(csv) as f:
         header = f.readline().strip()
-check(','.join(core.columns()) == header and len(core.columns()) == 24,
+check(','.join(core.columns()) == header and len(core.columns()) == 25,
       '%d columns, the results file\'s header' % len(core.columns()))
 
 lib = core.library()

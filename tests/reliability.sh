@@ -122,7 +122,7 @@ refused_by "a second writer of a results file" "cannot write 'shared.csv': proce
   "$TMP/concurrent.err"
 # the file size limit: a message naming the file and the reason, and no torn row
 (cd "$TMP" && ulimit -f 20 && "$runner" r3_full_disk.sbc > /dev/null 2> full_disk.err); rc=$?
-torn=$(awk -F, '{ if (NF != 24) bad++ } END { print bad + 0 }' "$TMP/full_disk.csv")
+torn=$(awk -F, '{ if (NF != 25) bad++ } END { print bad + 0 }' "$TMP/full_disk.csv")
 last=$(tail -c 1 "$TMP/full_disk.csv" | od -An -c | tr -d ' ')
 if [ "$torn" = 0 ] && [ "$last" = '\n' ]; then
   refused_by "a results file past the file size limit ($(($(wc -l < "$TMP/full_disk.csv") - 1)) whole rows kept)" \
@@ -134,7 +134,7 @@ fi
 # round 4: the tangent file and a VTK snapshot past the file size limit: the tangent file and the results file end
 # with whole rows, the snapshot is removed, and each message names the system's reason
 (cd "$TMP" && ulimit -f 100 && "$runner" r4_full_tangent.sbc > /dev/null 2> full_tangent.err); rc=$?
-torn=$(awk -F, 'FILENAME ~ /_t/ && NF != 82 { bad++ } FILENAME ~ /_u/ && NF != 39 { bad++ } END { print bad + 0 }' \
+torn=$(awk -F, 'FILENAME ~ /_t/ && NF != 82 { bad++ } FILENAME ~ /_u/ && NF != 40 { bad++ } END { print bad + 0 }' \
        "$TMP/r4_full_t.csv" "$TMP/r4_full_u.csv")
 if [ "$torn" = 0 ] && [ "$(tail -c 1 "$TMP/r4_full_t.csv" | od -An -c | tr -d ' ')" = '\n' ]; then
   refused_by "a tangent file past the file size limit ($(($(wc -l < "$TMP/r4_full_t.csv") - 1)) whole rows kept)" \

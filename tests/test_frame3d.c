@@ -695,7 +695,7 @@ static void columns(void)
     static const char *const head3 =
         "increment,F11,F12,F13,F21,F22,F23,F31,F32,F33,P11,P12,P13,P21,P22,P23,P31,P32,P33,sigma11,sigma12,sigma13,"
         "sigma21,sigma22,sigma23,sigma31,sigma32,sigma33,overlap_mean,rotation_mean,iterations,relax_steps,r_force,"
-        "r_moment,r_deformation,unbalanced,frame_residual,hill_mandel,newton_iterations";
+        "r_moment,r_deformation,unbalanced,frame_residual,hill_mandel,newton_iterations,newton_held";
     char line[2048];
     double v[SBC_COLUMNS];
     sbc_result r;
@@ -710,11 +710,12 @@ static void columns(void)
     n = sbc_columns_header(3, line, sizeof line);
     CHECK(n == (int)strlen(head3) && strcmp(line, head3) == 0);
     r.newton_iterations = 7;
-    CHECK(sbc_column_values(&r, v) == 39 && v[0] == 4.0 && v[3] == 3.0 && v[9] == 9.0 && v[12] == 12.0 &&
-          v[27] == 28.0 && v[37] == -1e-9 && v[38] == 7.0);
+    r.newton_held = 3;
+    CHECK(sbc_column_values(&r, v) == 40 && v[0] == 4.0 && v[3] == 3.0 && v[9] == 9.0 && v[12] == 12.0 &&
+          v[27] == 28.0 && v[37] == -1e-9 && v[38] == 7.0 && v[39] == 3.0);
     CHECK(sbc_column_index(3, "F13") == 3 && sbc_column_index(2, "F13") == -1 && sbc_column_index(2, "F21") == 3 &&
           strcmp(sbc_column_name(3, 37), "hill_mandel") == 0 && strcmp(sbc_column_name(3, 38), "newton_iterations") == 0 &&
-          sbc_column_name(3, 39) == NULL);
+          strcmp(sbc_column_name(3, 39), "newton_held") == 0 && sbc_column_name(3, 40) == NULL);
 }
 
 void test_frame_3d(void)

@@ -102,6 +102,8 @@ static void lattices(void)
             worst = fmax(worst, fmax(fabs(rows[k][COL("P11")] - P11), fabs(rows[k][COL("P22")] - P22)) / fabs(P11));
             worst = fmax(worst, fmax(fabs(rows[k][COL("P12")]), fabs(rows[k][COL("P21")])) / fabs(P11));
             CHECK(rows[k][COL("newton_iterations")] <= 2.0); /* the affine start is the answer: 0 */
+            if (bcs[b][0] == 'D') /* the frictional lattice: every interior dof stiffened, none held */
+                CHECK(rows[k][COL("newton_held")] == 0.0);
         }
         CHECK(n == 3 && worst <= 1e-6);
         printf("  interior: frictional 5 x 5 lattice (%s), newton: closed form to %.2e of |P11|, %g Newton iterations "
@@ -127,11 +129,14 @@ static void lattices(void)
         n = run_case("D_frictionless", script, "D F 0.999 0 0 0.998 increments 3 accuracy tight interior newton",
                      rows, 8, csv, sizeof csv);
         CHECK(n == 4);
-        for (k = 1; k < n; ++k)
+        for (k = 1; k < n; ++k) {
             most = fmax(most, rows[k][COL("newton_iterations")]);
+            /* no contact turns an interior disc: its rotation is held, (N - 2)^2 of them */
+            CHECK(rows[k][COL("newton_held")] == (N - 2) * (N - 2));
+        }
         CHECK(n == 4 && most <= 2.0);
-        printf("  interior: frictionless prestressed lattice (D), newton: at most %g Newton iterations an increment\n",
-               most);
+        printf("  interior: frictionless prestressed lattice (D), newton: at most %g Newton iterations an increment, "
+               "%g rotations held ((N - 2)^2 = %d)\n", most, n == 4 ? rows[1][COL("newton_held")] : -1.0, (N - 2) * (N - 2));
     }
 }
 

@@ -175,7 +175,7 @@ except servo_bc.ServoBCError as e:
 # the module's COLUMNS are the library's (columns.h): the results file's header
 with open(escape_csv) as f:
     header = f.readline().strip()
-check(header == ','.join(servo_bc.COLUMNS) and len(servo_bc.COLUMNS) == 24,
+check(header == ','.join(servo_bc.COLUMNS) and len(servo_bc.COLUMNS) == 25,
       'COLUMNS from the library: %d names, the results file\'s header' % len(servo_bc.COLUMNS))
 
 # the documented 0.1 call forms (CHANGELOG.md): ServoBC(words, ids, dt) takes kn from

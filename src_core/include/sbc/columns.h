@@ -37,8 +37,8 @@ typedef struct sbc_column {
 /* The columns of both dimensions, in the files' order: a 2D file has those
  * marked 2D (SBC_COLUMNS_2D), a 3D file those marked 3D (F, P and sigma with
  * nine components each). */
-#define SBC_COLUMNS 39
-#define SBC_COLUMNS_2D 24
+#define SBC_COLUMNS 40
+#define SBC_COLUMNS_2D 25
 extern const sbc_column sbc_columns[SBC_COLUMNS];
 
 /* Column k of a results file of dimension dim (NULL outside). */

@@ -71,6 +71,8 @@ typedef struct sbc_result {
     double frame_residual; /* frame force residual relative to the frame's forces (servo.h), 0 for D */
     long newton_iterations; /* interior newton: Newton iterations of the increment's static solves (the host
                                fills it; the controller leaves 0) */
+    long newton_held;       /* interior newton: degrees of freedom held for want of stiffness (rattlers, free
+                               rotations) at the increment's last solve (the host fills it; 0 otherwise) */
 } sbc_result;
 
 typedef struct sbc_controller sbc_controller;

@@ -527,6 +527,7 @@ typedef struct linear_system {
     double *tv;     /* [nt] */
     long nt;
     double scale;   /* the largest contact stiffness entry */
+    int unstiff;    /* with the pseudo-time term: the unknowns no contact stiffens, which it alone holds */
 } linear_system;
 
 static void system_free(linear_system *y)
@@ -547,7 +548,7 @@ static sbc_status system_build(const sbc_network *net, const sbc_frame *f, sbc_b
     const int dim = net->dim, nd = dofs_of(dim), nb = 2 * nd, ndof = nd * net->n, nc = dim * dim;
     const int extra = bc == SBC_BC_T ? nc + dim : 0;
     int *frame_of = NULL, k, s, u, v, q, p;
-    long cap;
+    long cap, contact_nt;
     sbc_status st = SBC_OK;
     memset(y, 0, sizeof *y);
     if (dim != f->dim || (dim != 2 && dim != 3))
@@ -606,6 +607,7 @@ static sbc_status system_build(const sbc_network *net, const sbc_frame *f, sbc_b
             }
         }
     }
+    contact_nt = y->nt; /* the contacts' entries end here */
     if (bc == SBC_BC_T) /* a_q = P A_q + m on the frame; sum_q x_q (x) A_q = F G (eq. 15); sum_q u_q = 0 */
         for (q = 0; q < f->n; ++q) {
             const int p0 = f->particle[q];
@@ -623,10 +625,17 @@ static sbc_status system_build(const sbc_network *net, const sbc_frame *f, sbc_b
                                rotation (the loads' derivative is negative where the network is stable), once per
                                unknown (at its first dof) */
         unsigned char *done = calloc((size_t)(y->nu > 0 ? y->nu : 1), 1);
+        long t;
         if (!done) {
             st = sbc_fail(err, SBC_ERR_NOMEM, "%s: out of memory (%d unknowns)", what, y->nu);
             goto done;
         }
+        for (t = 0; t < contact_nt; ++t) /* 2: a contact stiffens the unknown (its row has an entry) */
+            if (y->ti[t] < y->L)
+                done[y->ti[t]] = 2;
+        for (u = 0; u < y->L; ++u)
+            y->unstiff += done[u] != 2;
+        memset(done, 0, (size_t)(y->nu > 0 ? y->nu : 1));
         for (p = 0; p < ndof; ++p)
             if ((u = y->unk[p]) >= 0 && !done[u]) {
                 done[u] = 1;
@@ -783,6 +792,7 @@ sbc_status sbc_condensed_newton_step(const sbc_network *net, const sbc_frame *f,
     for (u = 0; u < y.nu; ++u)
         dy[u] = -residual[u];
     st = solve_unknowns(y.nu, y.nt, y.ti, y.tj, y.tv, 1, dy, 1e-12 * y.scale, net->dense, mechanisms, err);
+    *mechanisms += y.unstiff; /* held by the pseudo-time term, as the pivots hold those they find */
     system_free(&y);
     return st;
 }

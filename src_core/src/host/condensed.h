@@ -85,7 +85,9 @@ int sbc_condensed_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc
  * residual [nu] the net loads summed over each unknown's dofs (N, N m) and
  * under (T) the rows of the multipliers, K their derivative (the contact
  * blocks of the condensed tangent, bordered by net->border under (T)).
- * *mechanisms: the unknowns found to carry no stiffness, held (dy 0). */
+ * *mechanisms: the unknowns found to carry no stiffness, held (dy 0): those
+ * the pivots find, and with net->shift those no contact stiffens (which the
+ * pseudo-time term alone holds). */
 sbc_status sbc_condensed_newton_step(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const double *residual,
                                      double *dy, int *mechanisms, sbc_error *err);
 

@@ -340,6 +340,18 @@ done:
 }
 
 /* one solve from p's committed state (sbc_statics_solve, without the substeps) */
+/* the contact network of the iterate x for a Newton step under the pseudo-time term shift (of kn) */
+static void network_at(sbc_network *net, const statics_work *w, const sbc_statics_problem *p, double *x,
+                       double shift)
+{
+    net->shift = shift * p->law.kn;
+    net->x = x;
+    net->npair = w->cand.count;
+    net->i = w->cand.i;
+    net->j = w->cand.j;
+    net->fs = p->fs0 ? w->fsv : NULL;
+}
+
 static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
                              sbc_error *err)
 {
@@ -367,12 +379,7 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
     for (it = 0; it < p->max_iterations && !(res->residual <= p->tol); ++it) {
         double alpha = 1.0, step = 0.0, best_alpha = 0.0, lambda_keep[6], merit_before = merit;
         int h, k;
-        net.shift = shift * p->law.kn;
-        net.x = x;
-        net.npair = w.cand.count;
-        net.i = w.cand.i;
-        net.j = w.cand.j;
-        net.fs = p->fs0 ? w.fsv : NULL;
+        network_at(&net, &w, p, x, shift);
         if ((st = sbc_condensed_newton_step(&net, p->frame, p->bc, w.R, w.dy, &res->mechanisms, err)) != SBC_OK)
             break;
         for (q = 0; q < 3 * p->n; q += 3)
@@ -441,6 +448,10 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
             st = sbc_fail(err, SBC_ERR_NUMERIC, "interior newton: the residual is not finite at iteration %d", it + 1);
             break;
         }
+    }
+    if (st == SBC_OK && it == 0 && res->residual <= p->tol) { /* the start was the answer: the held dofs counted */
+        network_at(&net, &w, p, x, shift);
+        st = sbc_condensed_newton_step(&net, p->frame, p->bc, w.R, w.dy, &res->mechanisms, err);
     }
     if (st == SBC_OK) {
         res->converged = res->residual <= p->tol;

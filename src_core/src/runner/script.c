@@ -272,6 +272,7 @@ static int engine_row(void *user_data, const sbc_result *row, const char *line, 
     sbc_result filled = *row;
     r->increment_now = row->increment + 1;
     filled.newton_iterations = r->tally.iterations;
+    filled.newton_held = r->tally.mechanisms;
     row = &filled;
     if ((st = keep_row(r, row, &err)) != SBC_OK || (r->csv.fp && (st = sbc_csv_write(&r->csv, row, &err)) != SBC_OK) ||
         (st = write_snapshots(s, r->engine, &r->frame, row->increment, last, &err)) != SBC_OK) {

@@ -54,6 +54,9 @@ const sbc_column sbc_columns[SBC_COLUMNS] = {
     MEASURE("hill_mandel", hill_mandel, "-", "residual of eq. 30 relative to the work scale"),
     COUNT("newton_iterations", newton_iterations, 'l', "-",
           "interior newton: Newton iterations of the increment's static solves, 0 with interior dynamic"),
+    COUNT("newton_held", newton_held, 'l', "-",
+          "interior newton: degrees of freedom held for want of stiffness (rattlers, free rotations) at the "
+          "increment's last static solve, 0 with interior dynamic"),
 };
 
 static unsigned in_dim(int dim) { return dim == 2 || dim == 3 ? 1u << dim : 0u; }
