@@ -204,7 +204,7 @@ check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 # Debian's liblammps-dev lacks are shipped in lammps_fix/debian_headers/ (README there).
 LMP_HDR = lammps_fix/debian_headers
 LMP_DEV = $(B)/lammps-dev.installed
-LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h lammps_fix/fix_servo_bc_lammps.h lammps_fix/lmp_servo.cpp \
+LMP_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_restart.cpp lammps_fix/fix_servo_bc.h lammps_fix/fix_servo_bc_lammps.h lammps_fix/lmp_servo.cpp \
   lammps_fix/fix_servo_bc_bonds.cpp lammps_fix/fix_servo_bc_bonds_slots.cpp lammps_fix/fix_servo_bc_bonds_contacts.cpp lammps_fix/fix_servo_bc_bonds.h
 
 lammps: $(B)/lmp_servo $(B)/servo_bc_plugin.so
@@ -216,13 +216,13 @@ $(LMP_DEV):
 
 $(B)/lmp_servo: $(LMP_SRC) $(B)/libservo_bc.a $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
-	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_bonds.cpp lammps_fix/fix_servo_bc_bonds_slots.cpp lammps_fix/fix_servo_bc_bonds_contacts.cpp \
+	  -Isrc_core/include -o $@ lammps_fix/lmp_servo.cpp lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_restart.cpp lammps_fix/fix_servo_bc_bonds.cpp lammps_fix/fix_servo_bc_bonds_slots.cpp lammps_fix/fix_servo_bc_bonds_contacts.cpp \
 	  $(B)/libservo_bc.a -llammps $(LDLIBS)
 
 # the plugin: for `plugin load` in LAMMPS builds with the PLUGIN package
 $(B)/servo_bc_plugin.so: $(LMP_SRC) lammps_fix/plugin.cpp $(B)/libservo_bc.a $(LMP_DEV)
 	mpicxx -std=c++11 -O2 -g -fPIC -shared -DOMPI_SKIP_MPICXX -Wall -Wextra -I/usr/include/lammps -I$(LMP_HDR) \
-	  -Isrc_core/include -o $@ lammps_fix/plugin.cpp lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_bonds.cpp lammps_fix/fix_servo_bc_bonds_slots.cpp lammps_fix/fix_servo_bc_bonds_contacts.cpp \
+	  -Isrc_core/include -o $@ lammps_fix/plugin.cpp lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_restart.cpp lammps_fix/fix_servo_bc_bonds.cpp lammps_fix/fix_servo_bc_bonds_slots.cpp lammps_fix/fix_servo_bc_bonds_contacts.cpp \
 	  $(B)/libservo_bc.a $(LDLIBS)
 
 $(B)/plugin_driver: tests/lammps/plugin_driver.cpp $(LMP_DEV)
@@ -238,7 +238,7 @@ check-lammps: $(B)/lmp_servo $(B)/servo-bc $(B)/servo_bc_plugin.so $(B)/plugin_d
 # LIGGGHTS adapter: the LAMMPS fix source compiled against LIGGGHTS 3.8
 # (lammps_fix/fix_servo_bc.cpp with -DSERVO_BC_LIGGGHTS; the differences are in
 # liggghts_fix/fix_servo_bc_liggghts.h)
-LIG_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc.h liggghts_fix/fix_servo_bc_liggghts.h \
+LIG_SRC = lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_restart.cpp lammps_fix/fix_servo_bc.h liggghts_fix/fix_servo_bc_liggghts.h \
   liggghts_fix/liggghts_servo.cpp lammps_fix/fix_servo_bc_bonds.cpp lammps_fix/fix_servo_bc_bonds_slots.cpp lammps_fix/fix_servo_bc_bonds_contacts.cpp lammps_fix/fix_servo_bc_bonds.h
 
 liggghts: $(B)/liggghts_servo
@@ -248,7 +248,7 @@ liggghts: $(B)/liggghts_servo
 
 $(B)/liggghts_servo: $(LIG_SRC) $(B)/libservo_bc.a /usr/include/liggghts/pair_gran.h
 	mpicxx -std=c++11 -O2 -g -DOMPI_SKIP_MPICXX -DSERVO_BC_LIGGGHTS -Wall -Wextra -isystem /usr/include/liggghts \
-	  -Iliggghts_fix -Ilammps_fix -Isrc_core/include -o $@ liggghts_fix/liggghts_servo.cpp lammps_fix/fix_servo_bc.cpp \
+	  -Iliggghts_fix -Ilammps_fix -Isrc_core/include -o $@ liggghts_fix/liggghts_servo.cpp lammps_fix/fix_servo_bc.cpp lammps_fix/fix_servo_bc_restart.cpp \
 	  lammps_fix/fix_servo_bc_bonds.cpp lammps_fix/fix_servo_bc_bonds_slots.cpp lammps_fix/fix_servo_bc_bonds_contacts.cpp $(B)/libservo_bc.a -lliggghts $(LDLIBS)
 
 check-liggghts: $(B)/liggghts_servo $(B)/servo-bc

@@ -408,7 +408,7 @@ lattice_checks() {
 # (TMP/part2.in) writes the same CSV as the uninterrupted run (TMP/full.in),
 # byte for byte; part2 with another F is refused (decks from restart_decks)
 # corrupt_restart FILE WHICH VALUE: overwrite one double of fix servo_bc's
-# restart block (found by its marker, fix_servo_bc.cpp RESTART_MAGIC; marker,
+# restart block (found by its marker, fix_servo_bc_restart.cpp RESTART_MAGIC; marker,
 # length, seal, checksum, the frame's length, the frame (2D: Q, then 8 values
 # per particle, the corners), the IDs, the masses, ...) and seal it again
 # (tests/restart_edit.py): WHICH is an offset from the marker, or corner (the
