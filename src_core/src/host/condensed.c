@@ -780,6 +780,17 @@ int sbc_condensed_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc
     return count;
 }
 
+int sbc_condensed_unstiffened(const sbc_network *net, const sbc_frame *f, sbc_bc bc, sbc_error *err)
+{
+    linear_system y;
+    int count;
+    if (system_build(net, f, bc, "interior newton", &y, err) != SBC_OK)
+        return -1;
+    count = y.unstiff;
+    system_free(&y);
+    return count;
+}
+
 sbc_status sbc_condensed_newton_step(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const double *residual,
                                      double *dy, int *mechanisms, sbc_error *err)
 {

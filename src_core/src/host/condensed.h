@@ -88,6 +88,10 @@ int sbc_condensed_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc
  * *mechanisms: the unknowns found to carry no stiffness, held (dy 0): those
  * the pivots find, and with net->shift those no contact stiffens (which the
  * pseudo-time term alone holds). */
+/* interior newton: the unknowns no contact stiffens (net->shift > 0), counted from the assembled system without
+ * a solve; -1 on failure (err). */
+int sbc_condensed_unstiffened(const sbc_network *net, const sbc_frame *f, sbc_bc bc, sbc_error *err);
+
 sbc_status sbc_condensed_newton_step(const sbc_network *net, const sbc_frame *f, sbc_bc bc, const double *residual,
                                      double *dy, int *mechanisms, sbc_error *err);
 

@@ -451,7 +451,8 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
     }
     if (st == SBC_OK && it == 0 && res->residual <= p->tol) { /* the start was the answer: the held dofs counted */
         network_at(&net, &w, p, x, shift);
-        st = sbc_condensed_newton_step(&net, p->frame, p->bc, w.R, w.dy, &res->mechanisms, err);
+        if ((res->mechanisms = sbc_condensed_unstiffened(&net, p->frame, p->bc, err)) < 0)
+            st = err->status;
     }
     if (st == SBC_OK) {
         res->converged = res->residual <= p->tol;
