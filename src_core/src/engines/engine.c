@@ -140,7 +140,7 @@ sbc_engine *sbc_engine_create(const sbc_engine_def *d, sbc_error *err)
     e->beta = d->beta;
     e->fire = d->fire;
     sbc_fire_start(&e->fire_state);
-    if (sbc_pairs_init(&e->pairs, d->n, skin, e->history, e->bonded, err) != SBC_OK ||
+    if (sbc_pairs_init(&e->pairs, 2, d->n, skin, e->history, e->bonded, err) != SBC_OK ||
         sbc_pairs_build(&e->pairs, e->x, e->r, e->rmax, err) != SBC_OK) {
         sbc_engine_free(e);
         return NULL;

@@ -7,9 +7,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-sbc_status sbc_pairs_init(sbc_pairs *p, int n, double skin, int history, int bonds, sbc_error *err)
+sbc_status sbc_pairs_init(sbc_pairs *p, int dim, int n, double skin, int history, int bonds, sbc_error *err)
 {
     memset(p, 0, sizeof *p);
+    if (dim != 2 && dim != 3)
+        return sbc_fail(err, SBC_ERR_INPUT, "neighbour list: dimension %d (expected 2 or 3)", dim);
+    p->dim = dim;
     p->n = n;
     p->skin = skin;
     p->capacity = 4 * n + 16;
@@ -22,7 +25,7 @@ sbc_status sbc_pairs_init(sbc_pairs *p, int n, double skin, int history, int bon
     p->bond = bonds ? calloc((size_t)p->capacity, 1) : NULL;
     p->cell_of = malloc(sizeof(int) * (size_t)n);
     p->cell_order = malloc(sizeof(int) * (size_t)n);
-    p->x_build = malloc(sizeof(double) * 2 * (size_t)n);
+    p->x_build = malloc(sizeof(double) * (size_t)dim * (size_t)n);
     if (!p->start || !p->i || !p->j || (history && !p->fs) || (bonds && (!p->m || !p->bond)) || !p->cell_of ||
         !p->cell_order || !p->x_build) {
         sbc_pairs_free(p);
@@ -91,31 +94,37 @@ static void new_list_free(new_list *q)
 
 sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, double rmax, sbc_error *err)
 {
-    double lo[2] = {DBL_MAX, DBL_MAX}, hi[2] = {-DBL_MAX, -DBL_MAX}, h, cut_extra = p->skin;
-    long ncx, ncy, ncell;
-    int n = p->n, k, count = 0;
+    const int dim = p->dim;
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, h, cut_extra = p->skin;
+    long nc[3] = {1, 1, 1}, ncell;
+    int n = p->n, k, c, count = 0;
     new_list q;
 
-    for (k = 0; k < n; ++k) {
-        if (x[2 * k] < lo[0]) lo[0] = x[2 * k];
-        if (x[2 * k] > hi[0]) hi[0] = x[2 * k];
-        if (x[2 * k + 1] < lo[1]) lo[1] = x[2 * k + 1];
-        if (x[2 * k + 1] > hi[1]) hi[1] = x[2 * k + 1];
+    for (c = 0; c < dim; ++c) {
+        lo[c] = DBL_MAX;
+        hi[c] = -DBL_MAX;
     }
+    for (k = 0; k < n; ++k)
+        for (c = 0; c < dim; ++c) {
+            lo[c] = fmin(lo[c], x[dim * k + c]);
+            hi[c] = fmax(hi[c], x[dim * k + c]);
+        }
     h = 2.0 * rmax + p->skin;
     /* keep the grid O(N) even when particles are scattered far apart, or tiny
        against their spacing (counted in doubles: the cell counts of a tiny h
        overflow a long) */
     for (;;) {
-        const double nx = floor((hi[0] - lo[0]) / h) + 1.0, ny = floor((hi[1] - lo[1]) / h) + 1.0;
-        if (nx * ny <= 4.0 * n + 64.0) {
-            ncx = (long)nx;
-            ncy = (long)ny;
+        double cells = 1.0, along[3] = {1, 1, 1};
+        for (c = 0; c < dim; ++c)
+            cells *= along[c] = floor((hi[c] - lo[c]) / h) + 1.0;
+        if (cells <= 4.0 * n + 64.0) {
+            for (c = 0; c < dim; ++c)
+                nc[c] = (long)along[c];
             break;
         }
         h *= 1.5;
     }
-    ncell = ncx * ncy;
+    ncell = nc[0] * nc[1] * nc[2];
     if (ncell + 1 > p->cell_capacity) {
         free(p->cell_start);
         free(p->cell_cursor);
@@ -129,10 +138,12 @@ sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, doubl
     }
     memset(p->cell_start, 0, sizeof(int) * (size_t)(ncell + 1));
     for (k = 0; k < n; ++k) {
-        long cx = (long)((x[2 * k] - lo[0]) / h), cy = (long)((x[2 * k + 1] - lo[1]) / h);
-        if (cx >= ncx) cx = ncx - 1;
-        if (cy >= ncy) cy = ncy - 1;
-        p->cell_of[k] = (int)(cy * ncx + cx);
+        long cell = 0;
+        for (c = dim - 1; c >= 0; --c) {
+            long b = (long)((x[dim * k + c] - lo[c]) / h);
+            cell = cell * nc[c] + (b >= nc[c] ? nc[c] - 1 : b);
+        }
+        p->cell_of[k] = (int)cell;
         p->cell_start[p->cell_of[k] + 1]++;
     }
     for (k = 0; k < ncell; ++k)
@@ -152,31 +163,37 @@ sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, doubl
         goto nomem;
 
     for (k = 0; k < n; ++k) {
-        long cx = p->cell_of[k] % ncx, cy = p->cell_of[k] / ncx, ax, ay;
+        long b[3] = {p->cell_of[k] % nc[0], (p->cell_of[k] / nc[0]) % nc[1], p->cell_of[k] / (nc[0] * nc[1])};
+        long d[3];
         int first = count, m;
         q.start[k] = count;
-        for (ay = cy - 1; ay <= cy + 1; ++ay) {
-            if (ay < 0 || ay >= ncy) continue;
-            for (ax = cx - 1; ax <= cx + 1; ++ax) {
-                long c;
-                int s;
-                if (ax < 0 || ax >= ncx) continue;
-                c = ay * ncx + ax;
-                for (s = p->cell_start[c]; s < p->cell_start[c + 1]; ++s) {
-                    int j = p->cell_order[s];
-                    double dx, dy, cut;
-                    if (j <= k) continue;
-                    dx = x[2 * j] - x[2 * k];
-                    dy = x[2 * j + 1] - x[2 * k + 1];
-                    cut = r[k] + r[j] + cut_extra;
-                    if (dx * dx + dy * dy >= cut * cut) continue;
-                    if (count >= p->capacity && !grow(p, count + 1, &q))
-                        goto nomem;
-                    q.i[count] = k;
-                    q.j[count++] = j;
+        for (d[2] = dim == 3 ? -1 : 0; d[2] <= (dim == 3 ? 1 : 0); ++d[2])
+            for (d[1] = -1; d[1] <= 1; ++d[1])
+                for (d[0] = -1; d[0] <= 1; ++d[0]) {
+                    long cell = 0;
+                    int s, inside = 1;
+                    for (c = 2; c >= 0; --c) {
+                        inside &= b[c] + d[c] >= 0 && b[c] + d[c] < nc[c];
+                        cell = cell * nc[c] + b[c] + d[c];
+                    }
+                    if (!inside)
+                        continue;
+                    for (s = p->cell_start[cell]; s < p->cell_start[cell + 1]; ++s) {
+                        const int j = p->cell_order[s];
+                        double d2 = 0.0, cut;
+                        if (j <= k)
+                            continue;
+                        for (c = 0; c < dim; ++c)
+                            d2 += (x[dim * j + c] - x[dim * k + c]) * (x[dim * j + c] - x[dim * k + c]);
+                        cut = r[k] + r[j] + cut_extra;
+                        if (d2 >= cut * cut)
+                            continue;
+                        if (count >= p->capacity && !grow(p, count + 1, &q))
+                            goto nomem;
+                        q.i[count] = k;
+                        q.j[count++] = j;
+                    }
                 }
-            }
-        }
         /* insertion sort of k's partners by j (few per particle) */
         for (m = first + 1; m < count; ++m) {
             int v = q.j[m], t = m;
@@ -230,7 +247,7 @@ sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, doubl
     p->m = q.m;
     p->bond = q.bond;
     p->count = count;
-    memcpy(p->x_build, x, sizeof(double) * 2 * (size_t)n);
+    memcpy(p->x_build, x, sizeof(double) * (size_t)dim * (size_t)n);
     return SBC_OK;
 dropped_bond:
     new_list_free(&q);
@@ -261,7 +278,7 @@ int sbc_pairs_bond_touching(sbc_pairs *p, const double *x, const double *r, doub
 size_t sbc_pairs_state_size(const sbc_pairs *p)
 {
     const size_t per = 2 + (p->fs ? 1 : 0) + (p->bond ? 2 : 0);
-    return 1 + (size_t)p->n + 1 + per * (size_t)p->count + 2 * (size_t)p->n;
+    return 1 + (size_t)p->n + 1 + per * (size_t)p->count + (size_t)p->dim * (size_t)p->n;
 }
 
 double *sbc_pairs_save(const sbc_pairs *p, double *out)
@@ -280,7 +297,7 @@ double *sbc_pairs_save(const sbc_pairs *p, double *out)
             *out++ = p->bond[k];
         }
     }
-    for (k = 0; k < 2 * p->n; ++k)
+    for (k = 0; k < p->dim * p->n; ++k)
         *out++ = p->x_build[k];
     return out;
 }
@@ -317,7 +334,7 @@ sbc_status sbc_pairs_load(sbc_pairs *p, sbc_saved *s)
             p->bond[k] = (unsigned char)sbc_saved_int(s, "pair bond flag", 0, 1);
         }
     }
-    for (k = 0; k < 2 * p->n; ++k)
+    for (k = 0; k < p->dim * p->n; ++k)
         p->x_build[k] = sbc_saved_real(s, "pair list build position");
     if (s->st == SBC_OK)
         p->count = count;

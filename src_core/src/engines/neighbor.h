@@ -10,6 +10,7 @@
 #include "sbc/status.h"
 
 typedef struct sbc_pairs {
+    int dim;        /* 2 or 3 */
     int n;          /* particles */
     int count;      /* pairs */
     int capacity;
@@ -20,15 +21,15 @@ typedef struct sbc_pairs {
     unsigned char *bond; /* [capacity] 1 while the pair's bond is intact; NULL without bonds */
     /* cell grid scratch */
     int *cell_of, *cell_start, *cell_cursor, *cell_order, cell_capacity;
-    double *x_build; /* [2n] positions at the last build, m */
+    double *x_build; /* [dim n] positions at the last build, m */
     double skin;     /* m */
 } sbc_pairs;
 
 /* history: keep fs per pair; bonds: keep m and bond per pair (implies history). */
-sbc_status sbc_pairs_init(sbc_pairs *p, int n, double skin, int history, int bonds, sbc_error *err);
+sbc_status sbc_pairs_init(sbc_pairs *p, int dim, int n, double skin, int history, int bonds, sbc_error *err);
 void sbc_pairs_free(sbc_pairs *p);
 
-/* Rebuilds the list for positions x [2n] and radii r [n], keeping the
+/* Rebuilds the list for positions x [dim n] and radii r [n], keeping the
  * tangential history and bond state of pairs present before and after. An
  * intact bond is never dropped as long as its stretch stays below the skin. */
 sbc_status sbc_pairs_build(sbc_pairs *p, const double *x, const double *r, double rmax, sbc_error *err);

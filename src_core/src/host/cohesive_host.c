@@ -180,7 +180,7 @@ long sbc_cohesive_host_pairs(int n, const double *xy, const double *r, double re
         if (r[k] > rmax)
             rmax = r[k];
     }
-    if (sbc_pairs_init(&p, n, reach, 0, 0, &err) != SBC_OK || sbc_pairs_build(&p, xy, r, rmax, &err) != SBC_OK) {
+    if (sbc_pairs_init(&p, 2, n, reach, 0, 0, &err) != SBC_OK || sbc_pairs_build(&p, xy, r, rmax, &err) != SBC_OK) {
         sbc_pairs_free(&p);
         snprintf(msg, cap, "%s", err.message);
         return -1;

@@ -250,7 +250,7 @@ static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_e
     for (i = 0; i < p->n; ++i)
         w->start0[i + 1] += w->start0[i];
     /* reach: the pairs within a smallest radius of touching */
-    return sbc_pairs_init(&w->cand, p->n, w->rmin, 0, 0, err);
+    return sbc_pairs_init(&w->cand, 2, p->n, w->rmin, 0, 0, err);
 }
 
 /* the end state's touching pairs as pair records (engine.h) */
