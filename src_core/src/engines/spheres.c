@@ -598,6 +598,37 @@ void sbc_spheres_pair(const sbc_spheres *e, int k, int ij[2], double fs[3])
     memcpy(fs, p->c.fs, sizeof p->c.fs);
 }
 
+sbc_status sbc_spheres_place(sbc_spheres *e, const double *x, const double *theta, const double *records, int count,
+                             sbc_error *err)
+{
+    const size_t n3 = 3 * (size_t)e->n;
+    int k, q;
+    memcpy(e->x, x, sizeof(double) * n3);
+    memcpy(e->theta, theta, sizeof(double) * n3);
+    memset(e->v, 0, sizeof(double) * n3);
+    memset(e->w, 0, sizeof(double) * n3);
+    if (e->stream)
+        memset(e->stream, 0, sizeof(double) * n3);
+    e->streaming = 0;
+    if (build_pairs(e, err) != SBC_OK)
+        return err->status;
+    for (k = 0; k < e->npair; ++k)
+        memset(e->pairs[k].c.fs, 0, sizeof e->pairs[k].c.fs);
+    for (k = 0; k < count; ++k) {
+        pair key, *hit;
+        const double *rec = &records[5 * k];
+        key.i = (int)rec[0];
+        key.j = (int)rec[1];
+        hit = e->npair ? bsearch(&key, e->pairs, (size_t)e->npair, sizeof(pair), by_pair) : NULL;
+        if (!hit)
+            return sbc_fail(err, SBC_ERR_INPUT, "engine: a spring for spheres %d and %d, which are not within reach",
+                            key.i, key.j);
+        for (q = 0; q < 3; ++q)
+            hit->c.fs[q] = rec[2 + q];
+    }
+    return SBC_OK;
+}
+
 /* ---- the state (sbc_spheres_save, sbc_spheres_load) ---- */
 
 #define SPHERES_STATE_HEAD 10 /* n, stale, builds, step, Ep, overlaps, forces, contacts, rotations, pairs */

@@ -27,8 +27,10 @@ typedef struct sbc_network {
     const double *fs;   /* [3 npair] the tangential spring's force on i, N, in the contact plane (the force on
                            i is -fn n + fs, n from i to j); NULL without friction */
     sbc_frictional law; /* eq. 6 */
-    const double *x0;   /* [dim n] 2D: the centres where the increment started (a material point's committed
+    const double *x0;   /* [dim n] the centres where the increment started (a material point's committed
                            state), or NULL; see sbc_condensed_tangent */
+    const double *theta0, *theta; /* 3D with x0: [3n] the rotations where the increment started and now, rad */
+    const double *fs0;  /* 3D with x0: [3 npair] each pair's committed spring (sbc_spring_3d_at), N; NULL: none */
     int dense;          /* 1: solved densely even where the core has a sparse solver (tests compare the two) */
     const unsigned char *mode; /* mixed: the frame particles' component modes [3Q] (sbc_mixed_modes), D or P
                                   (T is not linearized here); NULL otherwise */
@@ -45,7 +47,7 @@ typedef struct sbc_network {
  * law of sliding ones, the terms of the forces turning with their contacts)
  * with the interior's and the free frame's degrees of freedom condensed out
  * and the frame's kinematics of bc applied. *mechanisms: the degrees of
- * freedom found to carry no stiffness (set to zero). With net->x0 (2D), a
+ * freedom found to carry no stiffness (set to zero). With net->x0, a
  * sticking contact's tangential spring is differentiated as the increment
  * from x0 loaded it, along the straight path from x0's branch to the
  * current one, instead of at the current state alone: the derivative of

@@ -120,6 +120,49 @@ static int block_2d(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_
     return 1;
 }
 
+void sbc_spring_3d_at(const double xi[3], const double xj[3], double Ri, double Rj, const double l0[3],
+                      const double dthi[3], const double dthj[3], const double fs0[3], const sbc_frictional *law,
+                      sbc_spring_3d *out)
+{
+    double l[3], ri[3], rj[3], ti[3], tj[3], vn, mag, limit;
+    int p;
+    memset(out, 0, sizeof *out);
+    out->c = 1.0;
+    for (p = 0; p < 3; ++p)
+        l[p] = xj[p] - xi[p];
+    out->L = sqrt(sbc_dot3(l, l));
+    out->dn = Ri + Rj - out->L;
+    if (!(out->dn > 0.0) || !(out->L > 0.0)) {
+        out->open = 1;
+        return;
+    }
+    out->s = Ri - 0.5 * out->dn;
+    for (p = 0; p < 3; ++p) {
+        out->n[p] = l[p] / out->L;
+        ri[p] = out->s * out->n[p];
+        rj[p] = (out->s - out->L) * out->n[p];
+    }
+    if (!fs0 || !(law->ks > 0.0))
+        return;
+    ti[0] = ti[1] = ti[2] = tj[0] = tj[1] = tj[2] = 0.0;
+    if (dthi)
+        sbc_cross3(dthi, ri, ti);
+    if (dthj)
+        sbc_cross3(dthj, rj, tj);
+    for (p = 0; p < 3; ++p) /* v = fs0 - ks du, du = -(l - l0) + dtheta_i x r_i - dtheta_j x r_j */
+        out->v[p] = fs0[p] - law->ks * ((l0 ? l0[p] - l[p] : 0.0) + ti[p] - tj[p]);
+    vn = sbc_dot3(out->v, out->n);
+    for (p = 0; p < 3; ++p)
+        out->fs[p] = out->v[p] - vn * out->n[p];
+    mag = sqrt(sbc_dot3(out->fs, out->fs));
+    limit = law->mu * law->kn * out->dn;
+    if (mag > limit) {
+        out->c = limit / mag;
+        for (p = 0; p < 3; ++p)
+            out->fs[p] *= out->c;
+    }
+}
+
 /* [v]x w = v x w */
 static void cross_matrix(const double v[3], double X[3][3])
 {
@@ -132,16 +175,17 @@ static void cross_matrix(const double v[3], double X[3][3])
     X[2][1] = v[0];
 }
 
-/* 3D: the same over (u_i, theta_i, u_j, theta_j), each 3 (spheres.c and
- * bpm_bond.c's sbc_broken_bond_increment). With l, L, n, overlap dn as in
- * 2D, P = I - n n, the contact point halfway across the overlap
- * (r_i = s n, r_j = (s - L) n, s = R_i - dn/2) and the force on i
- * f = -kn dn n + fs (fs the spring, in the contact plane):
- *   d f = [kn n n - (kn dn / L) P] dl + dfs
- *   dfs = ks P dl + ks s [n]x dtheta_i - ks (s - L) [n]x dtheta_j - n (fs . dl) / L   sticking
- * (the spring loads with the contact point's tangential slip and is kept in
- * the turning plane), and sliding (|fs| at mu fn, direction e):
- *   dfs = -mu kn (n . dl) e + (I - e e) (the sticking dfs);
+/* 3D: the same over (u_i, theta_i, u_j, theta_j), each 3, for the spring of
+ * sbc_spring_3d_at (with net->x0 the increment's; without, the current
+ * spring as its own trial, v = fs, dtheta = 0: the linearization of the
+ * sphere engine's incremental law, spheres.c). With A_i = n n^T / 2 +
+ * (s / L) P and A_j = -n n^T / 2 + ((s - L) / L) P (d r_i = A_i dl,
+ * d r_j = A_j dl, dl = du_j - du_i) and the force on i f = -kn dn n + fs:
+ *   d f  = [kn n n^T - (kn dn / L) P] dl + d fs
+ *   d(P v) = -[ks P (-I + [dtheta_i]x A_i - [dtheta_j]x A_j) + (n . v / L) P
+ *           + n (P v)^T / L] dl + ks s [n]x dtheta_i - ks (s - L) [n]x dtheta_j
+ *   d fs = d(P v)                                                  sticking
+ *   d fs = -mu kn e n^T dl + c (I - e e^T) d(P v)                  sliding (e = fs / |fs|)
  * the loads are f on i, -f on j, the moments r_i x f and f x r_j, whose
  * arms change with dl too. */
 static int block_3d(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_BLOCK_MOST])
@@ -149,57 +193,79 @@ static int block_3d(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_
     const int a = net->i[k], b = net->j[k];
     const double *xa = &net->x[3 * a], *xb = &net->x[3 * b];
     const sbc_frictional *law = &net->law;
-    double l[3], n[3], L = 0.0, dn, s, fn, fs[3] = {0, 0, 0}, f[3], e[3] = {0, 0, 0}, mag;
+    sbc_spring_3d sp;
+    double n[3], L, dn, s, fn, fs[3], f[3], e[3] = {0, 0, 0}, mag, vn, c, Pv[3];
     double P[3][3], N[3][3], Fx[3][3], M[3][3], Wa[3][3], Wb[3][3], Ra[3][3], Rb[3][3], Ga[3][3], Gb[3][3];
-    double D[3][3]; /* rows of df over (u_i, theta_i, u_j, theta_j) as 3 x 12 */
+    double D[3][3], Aa[3][3], Ab[3][3], J[3][3], Ta[3][3], Tb[3][3];
     double row[3][SBC_BLOCK_MOST];
     int p, q, m, stick, slide;
-    for (p = 0; p < 3; ++p) {
-        l[p] = xb[p] - xa[p];
-        L += l[p] * l[p];
+    if (net->dim == 3 && net->x0) { /* the increment's spring from the committed state */
+        double l0[3], dta[3], dtb[3];
+        for (p = 0; p < 3; ++p) {
+            l0[p] = net->x0[3 * b + p] - net->x0[3 * a + p];
+            dta[p] = net->theta[3 * a + p] - net->theta0[3 * a + p];
+            dtb[p] = net->theta[3 * b + p] - net->theta0[3 * b + p];
+        }
+        sbc_spring_3d_at(xa, xb, net->r[a], net->r[b], l0, dta, dtb, net->fs0 ? &net->fs0[3 * k] : NULL, law, &sp);
+        cross_matrix(dta, Ta);
+        cross_matrix(dtb, Tb);
+    } else {
+        sbc_spring_3d_at(xa, xb, net->r[a], net->r[b], NULL, NULL, NULL, net->fs ? &net->fs[3 * k] : NULL, law, &sp);
+        memset(Ta, 0, sizeof Ta);
+        memset(Tb, 0, sizeof Tb);
     }
-    L = sqrt(L);
-    dn = net->r[a] + net->r[b] - L;
-    if (!(dn > 0.0) || !(L > 0.0))
-        return 0; /* open */
-    for (p = 0; p < 3; ++p)
-        n[p] = l[p] / L;
-    s = net->r[a] - 0.5 * dn;
+    if (sp.open)
+        return 0;
+    L = sp.L;
+    dn = sp.dn;
+    s = sp.s;
+    memcpy(n, sp.n, sizeof n);
     fn = law->kn * dn;
-    if (net->fs)
-        for (p = 0; p < 3; ++p)
-            fs[p] = net->fs[3 * k + p];
-    mag = sqrt(sbc_dot3(fs, fs));
+    vn = sbc_dot3(sp.v, n);
+    for (p = 0; p < 3; ++p)
+        Pv[p] = sp.v[p] - vn * n[p];
+    memcpy(fs, sp.fs, sizeof fs);
+    mag = sqrt(sbc_dot3(Pv, Pv));
     slide = law->ks > 0.0 && mag >= law->mu * fn * (1.0 - SBC_SLIDING_BAND);
     stick = law->ks > 0.0 && !slide;
+    c = slide && mag > law->mu * fn ? law->mu * fn / mag : 1.0;
     for (p = 0; p < 3; ++p) {
         f[p] = -fn * n[p] + fs[p];
         if (slide && mag > 0.0)
-            e[p] = fs[p] / mag;
+            e[p] = Pv[p] / mag;
     }
     cross_matrix(n, N);
     cross_matrix(f, Fx);
     for (p = 0; p < 3; ++p)
         for (q = 0; q < 3; ++q) {
-            const double I = p == q ? 1.0 : 0.0;
-            double tan_dl, tan_a, tan_b; /* the sticking dfs */
-            P[p][q] = I - n[p] * n[q];
-            tan_dl = (law->ks > 0.0 ? law->ks * P[p][q] : 0.0) - n[p] * fs[q] / L;
-            tan_a = law->ks * s * N[p][q];
-            tan_b = -law->ks * (s - L) * N[p][q];
-            M[p][q] = law->kn * n[p] * n[q] - law->kn * dn / L * P[p][q] + (stick ? tan_dl : 0.0);
-            Wa[p][q] = stick ? tan_a : 0.0;
-            Wb[p][q] = stick ? tan_b : 0.0;
-            D[p][q] = tan_dl; /* kept for the sliding projection */
-            Ra[p][q] = tan_a;
-            Rb[p][q] = tan_b;
+            P[p][q] = (p == q ? 1.0 : 0.0) - n[p] * n[q];
+            Aa[p][q] = 0.5 * n[p] * n[q] + s / L * P[p][q];
+            Ab[p][q] = -0.5 * n[p] * n[q] + (s - L) / L * P[p][q];
         }
-    if (slide) /* (I - e e) (sticking dfs) - mu kn e n^T */
+    for (p = 0; p < 3; ++p) /* J = d(du)/dl = -I + [dtheta_i]x A_i - [dtheta_j]x A_j */
+        for (q = 0; q < 3; ++q) {
+            J[p][q] = p == q ? -1.0 : 0.0;
+            for (m = 0; m < 3; ++m)
+                J[p][q] += Ta[p][m] * Aa[m][q] - Tb[p][m] * Ab[m][q];
+        }
+    for (p = 0; p < 3; ++p)
+        for (q = 0; q < 3; ++q) {
+            double tan_dl = -vn / L * P[p][q] - n[p] * Pv[q] / L; /* d(P v)/dl */
+            for (m = 0; m < 3; ++m)
+                tan_dl -= law->ks * P[p][m] * J[m][q];
+            D[p][q] = tan_dl;
+            Ra[p][q] = law->ks * s * N[p][q];
+            Rb[p][q] = -law->ks * (s - L) * N[p][q];
+            M[p][q] = law->kn * n[p] * n[q] - law->kn * dn / L * P[p][q] + (stick ? tan_dl : 0.0);
+            Wa[p][q] = stick ? Ra[p][q] : 0.0;
+            Wb[p][q] = stick ? Rb[p][q] : 0.0;
+        }
+    if (slide) /* c (I - e e) d(P v) - mu kn e n^T */
         for (p = 0; p < 3; ++p)
             for (q = 0; q < 3; ++q) {
                 double pd = 0.0, pa = 0.0, pb = 0.0;
                 for (m = 0; m < 3; ++m) {
-                    const double Pe = (p == m ? 1.0 : 0.0) - e[p] * e[m];
+                    const double Pe = c * ((p == m ? 1.0 : 0.0) - e[p] * e[m]);
                     pd += Pe * D[m][q];
                     pa += Pe * Ra[m][q];
                     pb += Pe * Rb[m][q];
@@ -208,13 +274,13 @@ static int block_3d(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_
                 Wa[p][q] = pa;
                 Wb[p][q] = pb;
             }
-    /* the moments' arms: d r_i = (n n^T / 2 + (s / L) P) dl, d r_j = (-n n^T / 2 + ((s - L) / L) P) dl */
+    /* the moments' arms: d r_i x f = -[f]x A_i dl, f x d r_j = [f]x A_j dl */
     for (p = 0; p < 3; ++p)
         for (q = 0; q < 3; ++q) {
             double ga = 0.0, gb = 0.0;
             for (m = 0; m < 3; ++m) {
-                ga += -Fx[p][m] * (0.5 * n[m] * n[q] + s / L * P[m][q]); /* d r_i x f = -[f]x d r_i */
-                gb += Fx[p][m] * (-0.5 * n[m] * n[q] + (s - L) / L * P[m][q]); /* f x d r_j */
+                ga += -Fx[p][m] * Aa[m][q];
+                gb += Fx[p][m] * Ab[m][q];
             }
             Ga[p][q] = ga;
             Gb[p][q] = gb;

@@ -9,6 +9,8 @@
 
 #include "../engines/neighbor.h"
 #include "condensed.h"
+#include "contact_blocks.h"
+#include "sbc/tensor.h"
 #include "sbc/embedded/engine.h"
 
 /* the largest move of a disc in one Newton iteration, in smallest radii: a
@@ -34,30 +36,30 @@ typedef struct statics_work {
     const sbc_statics_problem *p;
     sbc_pairs cand;          /* candidate pairs, within reach at the last build */
     int *start0;             /* [n + 1] the committed pairs of disc i: start0[i] .. start0[i + 1] - 1 */
-    double *fs;              /* [cand capacity] the springs of the iterate (N) */
-    double *fsv;             /* [3 cand capacity] ... as vectors in the plane (condensed.h's sbc_network) */
-    double *res;             /* [3n] net loads of the iterate on each dof, N and N m */
-    int *unk;                /* [3n] each dof's unknown, -1 prescribed (condensed.h) */
+    int dim, rd, nd;         /* 2 or 3; rotations per particle (1 or 3); dofs per particle */
+    double *fs;              /* [cand capacity] 2D: the springs of the iterate along t (N) */
+    double *fsv;             /* [3 cand capacity] ... as vectors in the contact plane (condensed.h's sbc_network) */
+    double *fs0c;            /* [3 cand capacity] 3D: each candidate's committed spring (N) */
+    double *res;             /* [nd n] net loads of the iterate on each dof, N and N m */
+    int *unk;                /* [nd n] each dof's unknown, -1 prescribed (condensed.h) */
     int L, nu;               /* the dofs' unknowns, and all unknowns with (T)'s multipliers */
     double *R;               /* [nu] the residual of each unknown */
     double *row_scale;       /* [nu] 1, or 1/R for a rotation's row (the merit in N) */
     double *dy;              /* [nu] Newton's correction */
     double *lambda;          /* [dim^2 + dim] (T): the multipliers (P, m over border) */
-    double *xe;              /* [2n] the state on entry (T: the frame's place for eq. 15 and its mean) */
+    double *xe;              /* [dim n] the state on entry (T: the frame's place for eq. 15 and its mean) */
     double border;           /* (T): the multipliers' scale, kn */
-    double *xt, *tt;         /* [2n], [n] a trial state of the line search */
+    double *xt, *tt;         /* [dim n], [rd n] a trial state of the line search */
     double rmax, rmin;
     double mean_force;       /* mean |contact force| of the last evaluation, N */
     int contacts;            /* ... touching pairs */
     int built;               /* the candidates have been built once */
 } statics_work;
 
-/* the committed spring of pair (a, b), a < b; 0 for a pair that had none */
-static double committed_fs(const statics_work *w, int a, int b)
+/* the committed pair (a, b), a < b: its index, -1 for a pair that was not committed */
+static int committed_pair(const statics_work *w, int a, int b)
 {
     int lo = w->start0[a], hi = w->start0[a + 1];
-    if (!w->p->fs0)
-        return 0.0;
     while (lo < hi) {
         const int mid = lo + (hi - lo) / 2;
         if (w->p->j0[mid] < b)
@@ -65,7 +67,41 @@ static double committed_fs(const statics_work *w, int a, int b)
         else
             hi = mid;
     }
-    return lo < w->start0[a + 1] && w->p->j0[lo] == b ? w->p->fs0[lo] : 0.0;
+    return lo < w->start0[a + 1] && w->p->j0[lo] == b ? lo : -1;
+}
+
+/* 3D: candidate k's contact at (x, theta), its loads added to w->res; returns |f| (N), or -1 when open */
+static double contact_3d(statics_work *w, int k, const double *x, const double *theta)
+{
+    const sbc_statics_problem *p = w->p;
+    const int a = w->cand.i[k], b = w->cand.j[k], c0 = committed_pair(w, a, b);
+    double l0[3], dta[3], dtb[3], f[3], ra[3], rb[3], ma[3], mb[3], *F0 = &w->fs0c[3 * k];
+    sbc_spring_3d sp;
+    int q;
+    for (q = 0; q < 3; ++q) {
+        l0[q] = p->x0[3 * b + q] - p->x0[3 * a + q];
+        dta[q] = theta[3 * a + q] - p->theta0[3 * a + q];
+        dtb[q] = theta[3 * b + q] - p->theta0[3 * b + q];
+        F0[q] = p->fs0 && c0 >= 0 ? p->fs0[3 * c0 + q] : 0.0;
+    }
+    sbc_spring_3d_at(&x[3 * a], &x[3 * b], p->r[a], p->r[b], l0, dta, dtb, p->fs0 ? F0 : NULL, &p->law, &sp);
+    memcpy(&w->fsv[3 * k], sp.fs, sizeof sp.fs);
+    if (sp.open)
+        return -1.0;
+    for (q = 0; q < 3; ++q) {
+        f[q] = -p->law.kn * sp.dn * sp.n[q] + sp.fs[q]; /* the force on a */
+        ra[q] = sp.s * sp.n[q];
+        rb[q] = (sp.s - sp.L) * sp.n[q];
+    }
+    sbc_cross3(ra, f, ma); /* the moments about the centres, as spheres.c */
+    sbc_cross3(f, rb, mb);
+    for (q = 0; q < 3; ++q) {
+        w->res[6 * a + q] += f[q];
+        w->res[6 * a + 3 + q] += ma[q];
+        w->res[6 * b + q] -= f[q];
+        w->res[6 * b + 3 + q] += mb[q];
+    }
+    return sqrt(sbc_dot3(f, f));
 }
 
 /* net loads on every dof at (x, theta), the springs of the end state by
@@ -77,10 +113,19 @@ static double evaluate(statics_work *w, const double *x, const double *theta)
     const sbc_frictional *law = &p->law;
     double sum_f = 0.0, merit = 0.0;
     int k, q;
-    memset(w->res, 0, sizeof(double) * 3 * (size_t)p->n);
+    memset(w->res, 0, sizeof(double) * (size_t)w->nd * (size_t)p->n);
     w->contacts = 0;
     for (k = 0; k < w->cand.count; ++k) {
         const int a = w->cand.i[k], b = w->cand.j[k];
+        if (w->dim == 3) {
+            const double f = contact_3d(w, k, x, theta);
+            if (f >= 0.0) {
+                sum_f += f;
+                ++w->contacts;
+            }
+            continue;
+        }
+        {
         const double lx = x[2 * b] - x[2 * a], ly = x[2 * b + 1] - x[2 * a + 1], rs = p->r[a] + p->r[b];
         const double d2 = lx * lx + ly * ly;
         double d, nx, ny, dn, fn, fs = 0.0, fx, fy;
@@ -96,7 +141,8 @@ static double evaluate(statics_work *w, const double *x, const double *theta)
             double g[2];
             const double slip = sbc_path_slip(&p->x0[2 * a], &p->x0[2 * b], lx, ly, g) -
                                 (p->r[a] * (theta[a] - p->theta0[a]) + p->r[b] * (theta[b] - p->theta0[b]));
-            fs = committed_fs(w, a, b);
+            const int c0 = committed_pair(w, a, b);
+            fs = c0 >= 0 ? p->fs0[c0] : 0.0;
             fn = sbc_frictional_force(law, dn, slip, &fs, NULL);
         } else
             fn = law->kn * dn;
@@ -113,27 +159,28 @@ static double evaluate(statics_work *w, const double *x, const double *theta)
         w->res[3 * b + 2] += p->r[b] * fs;
         sum_f += sqrt(fn * fn + fs * fs);
         ++w->contacts;
+        }
     }
     w->mean_force = w->contacts ? sum_f / w->contacts : 0.0;
     memset(w->R, 0, sizeof(double) * (size_t)(w->nu > 0 ? w->nu : 1));
-    for (q = 0; q < 3 * p->n; ++q)
+    for (q = 0; q < w->nd * p->n; ++q)
         if (w->unk[q] >= 0)
             w->R[w->unk[q]] += w->res[q];
     if (p->bc == SBC_BC_T) { /* a_q = P A_q + m on the frame; eq. 15 and the mean translation (condensed.c) */
         const sbc_frame *f = p->frame;
-        const int L = w->L;
+        const int L = w->L, dim = w->dim, nc = dim * dim;
         for (q = 0; q < f->n; ++q) {
             const int i = f->particle[q];
             int c, s2;
-            for (c = 0; c < 2; ++c) {
-                const double u = x[2 * i + c] - w->xe[2 * i + c];
-                double tr = w->lambda[4 + c];
-                for (s2 = 0; s2 < 2; ++s2) {
-                    tr += f->A[3 * q + s2] * w->lambda[2 * c + s2];
-                    w->R[L + 2 * c + s2] += f->A[3 * q + s2] * w->border / f->V * u;
+            for (c = 0; c < dim; ++c) {
+                const double u = x[dim * i + c] - w->xe[dim * i + c];
+                double tr = w->lambda[nc + c];
+                for (s2 = 0; s2 < dim; ++s2) {
+                    tr += f->A[3 * q + s2] * w->lambda[dim * c + s2];
+                    w->R[L + dim * c + s2] += f->A[3 * q + s2] * w->border / f->V * u;
                 }
-                w->R[w->unk[3 * i + c]] += w->border * tr;
-                w->R[L + 4 + c] += w->border * u;
+                w->R[w->unk[w->nd * i + c]] += w->border * tr;
+                w->R[L + nc + c] += w->border * u;
             }
         }
     }
@@ -159,10 +206,13 @@ static double relative_residual(const statics_work *w)
 static sbc_status keep_candidates(statics_work *w, const double *x, sbc_error *err)
 {
     const double lim = 0.25 * w->cand.skin * w->cand.skin;
-    int i, stale = !w->built;
+    const int dim = w->dim;
+    int i, c, stale = !w->built;
     for (i = 0; i < w->p->n && !stale; ++i) {
-        const double dx = x[2 * i] - w->cand.x_build[2 * i], dy = x[2 * i + 1] - w->cand.x_build[2 * i + 1];
-        stale = dx * dx + dy * dy > lim;
+        double d2 = 0.0;
+        for (c = 0; c < dim; ++c)
+            d2 += (x[dim * i + c] - w->cand.x_build[dim * i + c]) * (x[dim * i + c] - w->cand.x_build[dim * i + c]);
+        stale = d2 > lim;
     }
     if (!stale)
         return SBC_OK;
@@ -172,11 +222,14 @@ static sbc_status keep_candidates(statics_work *w, const double *x, sbc_error *e
     if (w->cand.capacity > 0) {
         double *fs = realloc(w->fs, sizeof(double) * (size_t)w->cand.capacity);
         double *fsv = fs ? realloc(w->fsv, sizeof(double) * 3 * (size_t)w->cand.capacity) : NULL;
+        double *fs0c = fsv ? realloc(w->fs0c, sizeof(double) * 3 * (size_t)w->cand.capacity) : NULL;
         if (fs)
             w->fs = fs;
         if (fsv)
             w->fsv = fsv;
-        if (!fs || !fsv)
+        if (fs0c)
+            w->fs0c = fs0c;
+        if (!fs || !fsv || !fs0c)
             return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d pairs", w->cand.capacity);
     }
     return SBC_OK;
@@ -188,6 +241,7 @@ static void work_free(statics_work *w)
     free(w->start0);
     free(w->fs);
     free(w->fsv);
+    free(w->fs0c);
     free(w->res);
     free(w->unk);
     free(w->R);
@@ -205,30 +259,33 @@ static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_e
     int i, k;
     memset(w, 0, sizeof *w);
     w->p = p;
+    w->dim = p->dim == 3 ? 3 : 2;
+    w->rd = w->dim == 3 ? 3 : 1;
+    w->nd = w->dim + w->rd;
     w->rmin = DBL_MAX;
     for (i = 0; i < p->n; ++i) {
         w->rmax = fmax(w->rmax, p->r[i]);
         w->rmin = fmin(w->rmin, p->r[i]);
     }
     w->start0 = calloc(n + 1, sizeof(int));
-    w->res = malloc(sizeof(double) * 3 * n);
-    w->unk = malloc(sizeof(int) * 3 * n);
-    w->xt = malloc(sizeof(double) * 2 * n);
-    w->tt = malloc(sizeof(double) * n);
-    w->lambda = calloc(6, sizeof(double));
-    w->xe = malloc(sizeof(double) * 2 * n);
+    w->res = malloc(sizeof(double) * (size_t)w->nd * n);
+    w->unk = malloc(sizeof(int) * (size_t)w->nd * n);
+    w->xt = malloc(sizeof(double) * (size_t)w->dim * n);
+    w->tt = malloc(sizeof(double) * (size_t)w->rd * n);
+    w->lambda = calloc(12, sizeof(double));
+    w->xe = malloc(sizeof(double) * (size_t)w->dim * n);
     if (!w->start0 || !w->res || !w->unk || !w->xt || !w->tt || !w->lambda || !w->xe)
         return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d discs", p->n);
     {
         sbc_network net;
         memset(&net, 0, sizeof net);
-        net.dim = 2;
+        net.dim = w->dim;
         net.n = p->n;
         net.frame_rotation_zero = p->bc == SBC_BC_T && p->rotation_zero;
         if ((w->L = sbc_condensed_unknowns(&net, p->frame, p->bc, w->unk, err)) < 0)
             return err->status;
     }
-    w->nu = w->L + (p->bc == SBC_BC_T ? 6 : 0);
+    w->nu = w->L + (p->bc == SBC_BC_T ? w->dim * w->dim + w->dim : 0);
     w->border = p->law.kn;
     w->R = malloc(sizeof(double) * (size_t)(w->nu > 0 ? w->nu : 1));
     w->row_scale = malloc(sizeof(double) * (size_t)(w->nu > 0 ? w->nu : 1));
@@ -237,9 +294,9 @@ static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_e
         return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d unknowns", w->nu);
     for (k = 0; k < w->nu; ++k)
         w->row_scale[k] = 1.0;
-    for (k = 3 * p->n - 1; k >= 0; --k) /* a rotation's row in N: over the (first member's) radius */
-        if (k % 3 == 2 && w->unk[k] >= 0)
-            w->row_scale[w->unk[k]] = 1.0 / p->r[k / 3];
+    for (k = w->nd * p->n - 1; k >= 0; --k) /* a rotation's row in N: over the (first member's) radius */
+        if (k % w->nd >= w->dim && w->unk[k] >= 0)
+            w->row_scale[w->unk[k]] = 1.0 / p->r[k / w->nd];
     for (k = 0; k < p->npair0; ++k) {
         if (p->i0[k] < 0 || p->i0[k] >= p->j0[k] || p->j0[k] >= p->n || (k > 0 && (p->i0[k] < p->i0[k - 1] ||
             (p->i0[k] == p->i0[k - 1] && p->j0[k] <= p->j0[k - 1]))))
@@ -250,7 +307,7 @@ static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_e
     for (i = 0; i < p->n; ++i)
         w->start0[i + 1] += w->start0[i];
     /* reach: the pairs within a smallest radius of touching */
-    return sbc_pairs_init(&w->cand, 2, p->n, w->rmin, 0, 0, err);
+    return sbc_pairs_init(&w->cand, w->dim, p->n, w->rmin, 0, 0, err);
 }
 
 /* the end state's touching pairs as pair records (engine.h) */
@@ -263,17 +320,24 @@ static sbc_status take_records(statics_work *w, const double *x, const double *t
     if (!(res->records = malloc(sizeof(double) * SBC_PAIR_RECORD * (size_t)(w->contacts > 0 ? w->contacts : 1))))
         return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d contacts", w->contacts);
     for (k = 0; k < w->cand.count; ++k) {
-        const int a = w->cand.i[k], b = w->cand.j[k];
-        const double lx = x[2 * b] - x[2 * a], ly = x[2 * b + 1] - x[2 * a + 1], rs = w->p->r[a] + w->p->r[b];
-        double *o;
-        if (lx * lx + ly * ly >= rs * rs)
+        const int a = w->cand.i[k], b = w->cand.j[k], dim = w->dim;
+        const double rs = w->p->r[a] + w->p->r[b];
+        double *o, d2 = 0.0;
+        int q;
+        for (q = 0; q < dim; ++q)
+            d2 += (x[dim * b + q] - x[dim * a + q]) * (x[dim * b + q] - x[dim * a + q]);
+        if (d2 >= rs * rs)
             continue;
         o = &res->records[SBC_PAIR_RECORD * c++];
         o[0] = a;
         o[1] = b;
-        o[2] = 0.0;
-        o[3] = w->fs[k];
-        o[4] = 0.0;
+        if (dim == 3) /* the spring as a vector (sbc_spheres_place) */
+            memcpy(&o[2], &w->fsv[3 * k], sizeof(double) * 3);
+        else {
+            o[2] = 0.0;
+            o[3] = w->fs[k];
+            o[4] = 0.0;
+        }
     }
     return SBC_OK;
 }
@@ -281,14 +345,15 @@ static sbc_status take_records(statics_work *w, const double *x, const double *t
 /* the iterate moved by alpha dy from (x, theta, lambda) into (xt, tt) and, with keep, lambda */
 static void move(statics_work *w, const double *x, const double *theta, double alpha, double *xt, double *tt)
 {
-    const int n = w->p->n;
+    const int n = w->p->n, dim = w->dim, rd = w->rd, nd = w->nd;
     int q;
-    for (q = 0; q < 3 * n; ++q) {
+    for (q = 0; q < nd * n; ++q) {
         const double d = w->unk[q] >= 0 ? alpha * w->dy[w->unk[q]] : 0.0;
-        if (q % 3 == 2)
-            tt[q / 3] = theta[q / 3] + d;
+        const int i = q / nd, c = q % nd;
+        if (c >= dim)
+            tt[rd * i + c - dim] = theta[rd * i + c - dim] + d;
         else
-            xt[2 * (q / 3) + q % 3] = x[2 * (q / 3) + q % 3] + d;
+            xt[dim * i + c] = x[dim * i + c] + d;
     }
 }
 
@@ -297,44 +362,61 @@ static void move(statics_work *w, const double *x, const double *theta, double a
  * centroid: M = (sum dn do^T)(sum do do^T)^-1, do, dn the frame's centres
  * about their centroid before and after), as `remap x` carries it during a
  * dynamic move: a lattice's increment is then solved by one Newton step, an
- * irregular packing's starts near its answer. x0 [2n] before, x [2n] after
- * the frame's move (its interior still at x0), overwritten. */
-static void affine_start(const sbc_frame *f, int n, const double *x0, double *x)
+ * irregular packing's starts near its answer. x0 [dim n] before, x [dim n]
+ * after the frame's move (its interior still at x0), overwritten. */
+static void affine_start(const sbc_frame *f, int dim, int n, const double *x0, double *x)
 {
-    double co[2] = {0, 0}, cn[2] = {0, 0}, A[2][2] = {{0, 0}, {0, 0}}, B[2][2] = {{0, 0}, {0, 0}}, M[2][2], det;
-    int q, i, k, l;
+    double co[3] = {0, 0, 0}, cn[3] = {0, 0, 0}, A[3][3] = {{0}}, B[3][3] = {{0}}, M[3][3], adj[3][3], det;
+    int q, i, k, l, m;
     unsigned char *in_frame = calloc((size_t)n, 1);
-    if (!in_frame || f->n < 3)
+    if (!in_frame || f->n < dim + 1)
         goto done;
     for (q = 0; q < f->n; ++q) {
         const int p = f->particle[q];
         in_frame[p] = 1;
-        for (k = 0; k < 2; ++k) {
-            co[k] += x0[2 * p + k] / f->n;
-            cn[k] += x[2 * p + k] / f->n;
+        for (k = 0; k < dim; ++k) {
+            co[k] += x0[dim * p + k] / f->n;
+            cn[k] += x[dim * p + k] / f->n;
         }
     }
     for (q = 0; q < f->n; ++q) {
         const int p = f->particle[q];
-        for (k = 0; k < 2; ++k)
-            for (l = 0; l < 2; ++l) {
-                A[k][l] += (x[2 * p + k] - cn[k]) * (x0[2 * p + l] - co[l]);
-                B[k][l] += (x0[2 * p + k] - co[k]) * (x0[2 * p + l] - co[l]);
+        for (k = 0; k < dim; ++k)
+            for (l = 0; l < dim; ++l) {
+                A[k][l] += (x[dim * p + k] - cn[k]) * (x0[dim * p + l] - co[l]);
+                B[k][l] += (x0[dim * p + k] - co[k]) * (x0[dim * p + l] - co[l]);
             }
     }
-    det = B[0][0] * B[1][1] - B[0][1] * B[1][0];
+    if (dim == 2) {
+        det = B[0][0] * B[1][1] - B[0][1] * B[1][0];
+        adj[0][0] = B[1][1];
+        adj[0][1] = -B[0][1];
+        adj[1][0] = -B[1][0];
+        adj[1][1] = B[0][0];
+    } else {
+        for (k = 0; k < 3; ++k) /* adj = cofactors transposed */
+            for (l = 0; l < 3; ++l)
+                adj[l][k] = B[(k + 1) % 3][(l + 1) % 3] * B[(k + 2) % 3][(l + 2) % 3] -
+                            B[(k + 1) % 3][(l + 2) % 3] * B[(k + 2) % 3][(l + 1) % 3];
+        det = B[0][0] * adj[0][0] + B[0][1] * adj[1][0] + B[0][2] * adj[2][0];
+    }
     if (!(fabs(det) > 0.0))
         goto done;
-    for (k = 0; k < 2; ++k) { /* M = A B^-1 */
-        M[k][0] = (A[k][0] * B[1][1] - A[k][1] * B[1][0]) / det;
-        M[k][1] = (A[k][1] * B[0][0] - A[k][0] * B[0][1]) / det;
-    }
-    for (i = 0; i < n; ++i)
-        if (!in_frame[i]) {
-            const double dx = x0[2 * i] - co[0], dy = x0[2 * i + 1] - co[1];
-            x[2 * i] = cn[0] + M[0][0] * dx + M[0][1] * dy;
-            x[2 * i + 1] = cn[1] + M[1][0] * dx + M[1][1] * dy;
+    for (k = 0; k < dim; ++k) /* M = A B^-1 = A adj / det */
+        for (l = 0; l < dim; ++l) {
+            double sum = 0.0;
+            for (m = 0; m < dim; ++m)
+                sum += A[k][m] * adj[m][l];
+            M[k][l] = sum / det;
         }
+    for (i = 0; i < n; ++i)
+        if (!in_frame[i])
+            for (k = 0; k < dim; ++k) {
+                double y = cn[k];
+                for (l = 0; l < dim; ++l)
+                    y += M[k][l] * (x0[dim * i + l] - co[l]);
+                x[dim * i + k] = y;
+            }
 done:
     free(in_frame);
 }
@@ -342,14 +424,16 @@ done:
 /* one solve from p's committed state (sbc_statics_solve, without the substeps) */
 /* the contact network of the iterate x for a Newton step under the pseudo-time term shift (of kn) */
 static void network_at(sbc_network *net, const statics_work *w, const sbc_statics_problem *p, double *x,
-                       double shift)
+                       const double *theta, double shift)
 {
     net->shift = shift * p->law.kn;
     net->x = x;
+    net->theta = w->dim == 3 ? theta : NULL;
     net->npair = w->cand.count;
     net->i = w->cand.i;
     net->j = w->cand.j;
     net->fs = p->fs0 ? w->fsv : NULL;
+    net->fs0 = p->fs0 ? w->fs0c : NULL;
 }
 
 static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
@@ -365,28 +449,31 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
         work_free(&w);
         return st;
     }
-    memcpy(w.xe, x, sizeof(double) * 2 * (size_t)p->n);
+    memcpy(w.xe, x, sizeof(double) * (size_t)w.dim * (size_t)p->n);
     memset(&net, 0, sizeof net);
-    net.dim = 2;
+    net.dim = w.dim;
     net.n = p->n;
     net.r = p->r;
     net.law = p->law;
     net.x0 = p->x0;
+    net.theta0 = w.dim == 3 ? p->theta0 : NULL;
     net.border = w.border;
     net.frame_rotation_zero = p->bc == SBC_BC_T && p->rotation_zero;
     merit = evaluate(&w, x, theta);
     res->residual = relative_residual(&w);
     for (it = 0; it < p->max_iterations && !(res->residual <= p->tol); ++it) {
-        double alpha = 1.0, step = 0.0, best_alpha = 0.0, lambda_keep[6], merit_before = merit;
+        double alpha = 1.0, step = 0.0, best_alpha = 0.0, lambda_keep[12], merit_before = merit;
         int h, k;
-        network_at(&net, &w, p, x, shift);
+        network_at(&net, &w, p, x, theta, shift);
         if ((st = sbc_condensed_newton_step(&net, p->frame, p->bc, w.R, w.dy, &res->mechanisms, err)) != SBC_OK)
             break;
-        for (q = 0; q < 3 * p->n; q += 3)
-            if (w.unk[q] >= 0 || w.unk[q + 1] >= 0) {
-                const double dx = w.unk[q] >= 0 ? w.dy[w.unk[q]] : 0.0, dy = w.unk[q + 1] >= 0 ? w.dy[w.unk[q + 1]] : 0.0;
-                step = fmax(step, sqrt(dx * dx + dy * dy));
-            }
+        for (q = 0; q < w.nd * p->n; q += w.nd) { /* the largest translation */
+            double d2 = 0.0;
+            for (k = 0; k < w.dim; ++k)
+                if (w.unk[q + k] >= 0)
+                    d2 += w.dy[w.unk[q + k]] * w.dy[w.unk[q + k]];
+            step = fmax(step, sqrt(d2));
+        }
         if (step > STEP_CAP * w.rmin)
             alpha = STEP_CAP * w.rmin / step;
         memcpy(lambda_keep, w.lambda, sizeof lambda_keep);
@@ -450,7 +537,7 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
         }
     }
     if (st == SBC_OK && it == 0 && res->residual <= p->tol) { /* the start was the answer: the held dofs counted */
-        network_at(&net, &w, p, x, shift);
+        network_at(&net, &w, p, x, theta, shift);
         if ((res->mechanisms = sbc_condensed_unstiffened(&net, p->frame, p->bc, err)) < 0)
             st = err->status;
     }
@@ -486,21 +573,23 @@ static sbc_status substep_commit(sbc_statics_problem *q, substep_state *c, const
                                  const sbc_statics_result *res, sbc_error *err)
 {
     const size_t n = (size_t)q->n, m = (size_t)(res->contacts > 0 ? res->contacts : 1);
-    int k;
+    const size_t dim = q->dim == 3 ? 3 : 2, rd = dim == 3 ? 3 : 1;
+    int k, s;
     substep_free(c);
-    c->x0 = malloc(sizeof(double) * 2 * n);
-    c->theta0 = malloc(sizeof(double) * n);
-    c->fs0 = malloc(sizeof(double) * m);
+    c->x0 = malloc(sizeof(double) * dim * n);
+    c->theta0 = malloc(sizeof(double) * rd * n);
+    c->fs0 = malloc(sizeof(double) * rd * m);
     c->i0 = malloc(sizeof(int) * m);
     c->j0 = malloc(sizeof(int) * m);
     if (!c->x0 || !c->theta0 || !c->fs0 || !c->i0 || !c->j0)
         return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for a substep of %d discs", q->n);
-    memcpy(c->x0, x, sizeof(double) * 2 * n);
-    memcpy(c->theta0, theta, sizeof(double) * n);
-    for (k = 0; k < res->contacts; ++k) {
+    memcpy(c->x0, x, sizeof(double) * dim * n);
+    memcpy(c->theta0, theta, sizeof(double) * rd * n);
+    for (k = 0; k < res->contacts; ++k) { /* the records' springs: 2D along t (slot 3), 3D a vector (2 .. 4) */
         c->i0[k] = (int)res->records[SBC_PAIR_RECORD * k];
         c->j0[k] = (int)res->records[SBC_PAIR_RECORD * k + 1];
-        c->fs0[k] = res->records[SBC_PAIR_RECORD * k + 3];
+        for (s = 0; s < (int)rd; ++s)
+            c->fs0[rd * k + s] = res->records[SBC_PAIR_RECORD * k + (rd == 3 ? 2 + s : 3)];
     }
     q->x0 = c->x0;
     q->theta0 = c->theta0;
@@ -517,24 +606,26 @@ static void substep_start(const sbc_statics_problem *p, const sbc_statics_proble
                           const double *tht, double t, double *x, double *theta)
 {
     const sbc_frame *f = p->frame;
+    const int dim = p->dim == 3 ? 3 : 2, rd = dim == 3 ? 3 : 1;
     int k, c;
-    memcpy(x, q->x0, sizeof(double) * 2 * (size_t)p->n);
-    memcpy(theta, q->theta0, sizeof(double) * (size_t)p->n);
+    memcpy(x, q->x0, sizeof(double) * (size_t)dim * (size_t)p->n);
+    memcpy(theta, q->theta0, sizeof(double) * (size_t)rd * (size_t)p->n);
     for (k = 0; k < f->n; ++k) {
         const int i = f->particle[k];
-        for (c = 0; c < 2; ++c)
-            x[2 * i + c] = p->x0[2 * i + c] + t * (xt[2 * i + c] - p->x0[2 * i + c]);
-        theta[i] = p->theta0[i] + t * (tht[i] - p->theta0[i]);
+        for (c = 0; c < dim; ++c)
+            x[dim * i + c] = p->x0[dim * i + c] + t * (xt[dim * i + c] - p->x0[dim * i + c]);
+        for (c = 0; c < rd; ++c)
+            theta[rd * i + c] = p->theta0[rd * i + c] + t * (tht[rd * i + c] - p->theta0[rd * i + c]);
     }
-    affine_start(f, p->n, q->x0, x);
+    affine_start(f, dim, p->n, q->x0, x);
 }
 
 sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
                              sbc_error *err)
 {
-    const size_t n = (size_t)p->n;
-    double *xt = malloc(sizeof(double) * 2 * n), *tht = malloc(sizeof(double) * n);
-    double *xf = malloc(sizeof(double) * 2 * n), *thf = malloc(sizeof(double) * n), *x1 = NULL;
+    const size_t dim = p->dim == 3 ? 3 : 2, rd = dim == 3 ? 3 : 1, n = (size_t)p->n, nx = dim * n, nt = rd * n;
+    double *xt = malloc(sizeof(double) * nx), *tht = malloc(sizeof(double) * nt);
+    double *xf = malloc(sizeof(double) * nx), *thf = malloc(sizeof(double) * nt), *x1 = NULL;
     sbc_statics_result first, part;
     substep_state c;
     sbc_status st;
@@ -548,8 +639,8 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d discs", p->n);
         goto done;
     }
-    memcpy(xt, x, sizeof(double) * 2 * n); /* the frame's target (its commands) */
-    memcpy(tht, theta, sizeof(double) * n);
+    memcpy(xt, x, sizeof(double) * nx); /* the frame's target (its commands) */
+    memcpy(tht, theta, sizeof(double) * nt);
     substep_start(p, p, xt, tht, 1.0, x, theta);
     if ((st = solve_once(p, x, theta, &first, err)) != SBC_OK || first.converged) {
         *res = first;
@@ -557,12 +648,12 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         goto done;
     }
     iterations = first.iterations;
-    if (!(x1 = malloc(sizeof(double) * 3 * n))) {
+    if (!(x1 = malloc(sizeof(double) * (nx + nt)))) {
         st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d discs", p->n);
         goto done;
     }
-    memcpy(x1, x, sizeof(double) * 2 * n); /* the first attempt's iterate, for the relaxation if no cut helps */
-    memcpy(x1 + 2 * n, theta, sizeof(double) * n);
+    memcpy(x1, x, sizeof(double) * nx); /* the first attempt's iterate, for the relaxation if no cut helps */
+    memcpy(x1 + nx, theta, sizeof(double) * nt);
     /* substeps: the frame's move in 2, 4, 8 equal parts, each solved from the last, until every part
        converges; else the first attempt stands (the relaxation finishes it) */
     for (parts = 2; parts <= SUBSTEPS_MOST && !ok && st == SBC_OK; parts *= 2) {
@@ -579,8 +670,8 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         }
         substep_free(&c);
         if (ok && st == SBC_OK) {
-            memcpy(x, xf, sizeof(double) * 2 * n);
-            memcpy(theta, thf, sizeof(double) * n);
+            memcpy(x, xf, sizeof(double) * nx);
+            memcpy(theta, thf, sizeof(double) * nt);
             *res = part;
             memset(&part, 0, sizeof part);
             res->iterations = (int)iterations;
@@ -591,8 +682,8 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
         *res = first;
         memset(&first, 0, sizeof first);
         res->iterations = (int)iterations;
-        memcpy(x, x1, sizeof(double) * 2 * n);
-        memcpy(theta, x1 + 2 * n, sizeof(double) * n);
+        memcpy(x, x1, sizeof(double) * nx);
+        memcpy(theta, x1 + nx, sizeof(double) * nt);
     }
 done:
     sbc_statics_result_free(&first);

@@ -1,12 +1,13 @@
 /* Private: keyword interior newton (docs/servo_bc.md, "Interior"): the
- * static equilibrium of a 2D disc aggregate whose frame stands at given
+ * static equilibrium of a disc (2D) or sphere (3D) aggregate whose frame stands at given
  * positions, reached from its committed state by Newton on the contact
  * network. The contact law of eq. 6 is integrated over the increment by
  * backward Euler: the normal force from the end state, the tangential
  * spring from its committed value by the slip of the increment (elastic
  * trial, then the Coulomb cap, the return map of a sliding contact), the
  * slip being t . dl along the straight path of the branch (sbc_path_slip)
- * less R_i dtheta_i + R_j dtheta_j. Contacts open and close between
+ * less R_i dtheta_i + R_j dtheta_j (in 3D the spring of sbc_spring_3d_at,
+ * contact_blocks.h). Contacts open and close between
  * iterations; the Jacobian is the condensed tangent's contact blocks
  * (condensed.h), so each Newton step is exact where no contact changes
  * status. The frame's condition is part of the system, with the condensed
@@ -33,17 +34,18 @@
 #define SBC_STATICS_ITERATIONS 60
 
 typedef struct sbc_statics_problem {
-    int n;                      /* discs */
+    int dim;                    /* 2 (discs) or 3 (spheres) */
+    int n;                      /* particles */
     const double *r;            /* [n] radii, m */
     sbc_frictional law;         /* eq. 6 */
     const sbc_frame *frame;     /* the aggregate's frame */
     sbc_bc bc;                  /* D, P or T (rotation_zero: T's frame rotations held) */
     int rotation_zero;
-    const double *x0, *theta0;  /* [2n], [n] the committed centres (m) and rotations (rad) */
+    const double *x0, *theta0;  /* [dim n], [n] (2D) or [3n] (3D) the committed centres (m) and rotations (rad) */
     int npair0;                 /* the committed pairs, sorted by i then j, i < j */
     const int *i0, *j0;
-    const double *fs0;          /* [npair0] their tangential springs (N, the force on i along t); NULL: no
-                                   tangential history (frictionless) */
+    const double *fs0;          /* 2D [npair0] their tangential springs (N, the force on i along t), 3D [3 npair0]
+                                   (the force on i, a vector); NULL: no tangential history (frictionless) */
     double tol;                 /* converged: every free dof's net force, and net moment over R, at most tol
                                    times the mean contact force */
     int max_iterations;
@@ -57,11 +59,12 @@ typedef struct sbc_statics_result {
     int contacts;     /* touching pairs at the end */
     int substeps;     /* 0: one solve; else the parts the frame's move was cut into, each solved from the last
                          (a solve that stalled is tried again in 2, 4, 8 parts) */
-    double *records;  /* [SBC_PAIR_RECORD contacts] (i, j, 0, fs, 0) of the end state (engine.h) */
+    double *records;  /* [SBC_PAIR_RECORD contacts] of the end state: 2D (i, j, 0, fs, 0) (engine.h), 3D
+                         (i, j, fs_x, fs_y, fs_z) (sbc_spheres_place) */
     char why[200];    /* not converged: why */
 } sbc_statics_result;
 
-/* Solves for the unknowns of x [2n] and theta [n], which hold on entry the
+/* Solves for the unknowns of x [dim n] and theta [n or 3n], which hold on entry the
  * committed state with the frame at its commands for the increment (which
  * satisfy eq. 15 under (T)) and on return the solution or the last iterate.
  * The iteration starts with the interior carried by the affine map that

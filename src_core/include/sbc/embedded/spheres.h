@@ -94,6 +94,14 @@ sbc_spheres_view sbc_spheres_get_view(const sbc_spheres *e);
  * an open pair. */
 void sbc_spheres_pair(const sbc_spheres *e, int k, int ij[2], double fs[3]);
 
+/* Every sphere put at x [3n] (m) with rotations theta [3n] (rad), at rest,
+ * the pair list rebuilt there, and each contact's tangential spring from
+ * records: count records of (i, j, fs_x, fs_y, fs_z), i < j (N, the spring's
+ * force on i); the pairs not listed have none (the static solves of
+ * interior newton, statics.h). */
+sbc_status sbc_spheres_place(sbc_spheres *e, const double *x, const double *theta, const double *records, int count,
+                             sbc_error *err);
+
 /* The engine's state as doubles, as sbc_engine_save's (positions,
  * velocities, rotations, the last loads, the pair list with each contact's
  * spring, the step count): sbc_spheres_load reads it into an engine created
