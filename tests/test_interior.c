@@ -17,11 +17,12 @@
  *   condensed tangent after three shear steps against central differences
  *   of the increment's map from the committed state (the FE code's
  *   derivative) to 1e-4 of |C|.
- * - Refusals by name: mixed, remap x, speed > 0, cohesive bonds, spheres,
+ * - Refusals by name: mixed, remap x, speed > 0, cohesive bonds,
  *   a host driver that does not solve its interior. */
 #include "check.h"
 #include "csv_read.h"
 #include "layer.h"
+#include "packing_file.h"
 #include "tests.h"
 
 #include "sbc/driver.h"
@@ -41,24 +42,11 @@
 #define KN 1e4
 
 /* the 55-disc irregular periodic packing of the FE^2 points (docs/fe2.md) */
-static const char generate_script[] = "dimension 2\ngenerate periodic n0 40 rmin 1e-3 polydispersity 1.5 seed 3 strain "
-                                      "0.01\nwrite_packing text %s\n";
-
 static int packing_path(char *path, size_t cap)
 {
     static int made = 0;
-    char text[512];
-    sbc_error err;
-    snprintf(path, cap, "%s/interior_disc55.txt", test_tmpdir);
-    if (made)
-        return 1;
-    snprintf(text, sizeof text, generate_script, path);
-    if (sbc_script_run_string(text, "interior_generate", NULL, &err) != SBC_OK) {
-        printf("  interior: generate: %s\n", err.message);
-        return 0;
-    }
-    made = 1;
-    return 1;
+    return packing_file("interior_disc55", "dimension 2\ngenerate periodic n0 40 rmin 1e-3 polydispersity 1.5 seed 3 "
+                        "strain 0.01\n", path, cap, &made);
 }
 
 /* the script (its last "%s" the csv path, before it the words) into rows; the row count or -1 */
@@ -352,11 +340,6 @@ static void refusals(void)
                                 "timestep 1e-5\nservo_bc D interior newton\nrun\n",
                                 "interior_cohesive", NULL, &err) == SBC_ERR_INPUT &&
           strstr(err.message, "keyword 'interior': newton integrates eq. 6, not the cohesive bonds") != NULL);
-    CHECK(sbc_script_run_string("dimension 3\nlattice cubic 3 3 3 spacing 2e-3 radius 1.01e-3\n"
-                                "contact frictional kn 1e4 ks 2e3 mu 0.4\ndensity 2650\ntimestep 2e-6\n"
-                                "servo_bc P interior newton\nrun\n",
-                                "interior_spheres", NULL, &err) == SBC_ERR_INPUT &&
-          strstr(err.message, "keyword 'interior': newton solves discs (2D) in this version") != NULL);
 }
 
 /* a core built without UMFPACK (make SPARSE=no) refuses the keyword by name and keeps the points dynamic */

@@ -100,12 +100,17 @@ static void spheres_pair(const void *e, int k, int ij[2], double fs[3]) { sbc_sp
 static const double *spheres_centres(const void *e) { return sbc_spheres_get_view(e).x; }
 static const double *spheres_radii(const void *e) { return sbc_spheres_get_view(e).r; }
 static const double *spheres_rotations(const void *e) { return sbc_spheres_get_view(e).theta; }
+static sbc_status spheres_place(void *e, const double *x, const double *theta, const double *records, int count,
+                                sbc_error *err)
+{
+    return sbc_spheres_place(e, x, theta, records, count, err);
+}
 
 const sbc_engine_ops sbc_engine_ops_spheres = {3, spheres_create, spheres_free, spheres_set_frame, spheres_seal,
                                      spheres_callbacks,
                                      spheres_forces, spheres_move, spheres_masses, spheres_dt, spheres_size,
                                      spheres_save, spheres_load, spheres_pairs, spheres_pair, spheres_centres,
-                                     spheres_radii, spheres_rotations, NULL};
+                                     spheres_radii, spheres_rotations, spheres_place};
 
 sbc_status sbc_aggregate_network(const sbc_aggregate *a, sbc_network *net, int **ij, double **fs, sbc_error *err)
 {
@@ -173,6 +178,7 @@ sbc_driver_callbacks sbc_aggregate_callbacks(const sbc_aggregate *a)
 static int frame_moves(const sbc_aggregate *a, const sbc_commands *cmd)
 {
     const sbc_frame *f = a->frame;
+    const int rd = SBC_ROTATIONS(f->dim);
     const double *x = a->ops->centres(a->engine), *theta = a->ops->rotations(a->engine);
     int q, k;
     for (q = 0; q < f->n; ++q) {
@@ -180,10 +186,71 @@ static int frame_moves(const sbc_aggregate *a, const sbc_commands *cmd)
         for (k = 0; k < f->dim; ++k)
             if (cmd->x[3 * q + k] != x[f->dim * p + k])
                 return 1;
-        if (!cmd->free_rotation[q] && cmd->theta[q] != theta[p])
-            return 1;
+        for (k = 0; k < rd && !cmd->free_rotation[q]; ++k)
+            if (cmd->theta[rd * q + k] != theta[rd * p + k])
+                return 1;
     }
     return 0;
+}
+
+/* The committed springs in the form statics.h reads: 2D the component along
+   t = (-l_y, l_x) / |l| of the committed branch l (N), 3D the force on i (N) */
+static void committed_springs(const sbc_aggregate *a, const double *x0, int npair, int *ij0, double *fs0)
+{
+    const int dim = a->frame->dim;
+    int k;
+    for (k = 0; k < npair; ++k) {
+        double fv[3];
+        int ij[2];
+        a->ops->pair(a->engine, k, ij, fv);
+        ij0[k] = ij[0];
+        ij0[npair + k] = ij[1];
+        if (dim == 3)
+            memcpy(&fs0[3 * k], fv, sizeof fv);
+        else {
+            const double *xa = &x0[2 * ij[0]], *xb = &x0[2 * ij[1]];
+            const double lx = xb[0] - xa[0], ly = xb[1] - xa[1], d = sqrt(lx * lx + ly * ly);
+            fs0[k] = d > 0.0 ? (-fv[0] * ly + fv[1] * lx) / d : 0.0;
+        }
+    }
+}
+
+/* The frame where the solve put it, as the controller's commands */
+static sbc_status adopt_frame(const sbc_aggregate *a, sbc_controller *ctl, const double *x, const double *th,
+                              sbc_error *err)
+{
+    const sbc_frame *f = a->frame;
+    const int dim = f->dim, rd = SBC_ROTATIONS(dim);
+    double *xq = calloc(3 * (size_t)f->n, sizeof *xq), *tq = calloc((size_t)(rd * f->n), sizeof *tq);
+    int q, k;
+    if (!xq || !tq) {
+        free(xq);
+        free(tq);
+        return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for a frame of %d", f->n);
+    }
+    for (q = 0; q < f->n; ++q) {
+        for (k = 0; k < dim; ++k)
+            xq[3 * q + k] = x[dim * f->particle[q] + k];
+        for (k = 0; k < rd; ++k)
+            tq[rd * q + k] = th[rd * f->particle[q] + k];
+    }
+    sbc_controller_adopt(ctl, xq, tq);
+    free(xq);
+    free(tq);
+    return SBC_OK;
+}
+
+static void tally_solve(sbc_statics_tally *t, const sbc_statics_result *res)
+{
+    t->iterations += res->iterations;
+    t->solves++;
+    t->mechanisms = res->mechanisms;
+    t->residual = res->residual;
+    if (!res->converged) {
+        t->unconverged++;
+        t->fallback = 1;
+        snprintf(t->why, sizeof t->why, "%s", res->why);
+    }
 }
 
 /* interior newton: the frame moved by cmd from the committed state (x0, theta0, the engine's pairs), the
@@ -191,39 +258,30 @@ static int frame_moves(const sbc_aggregate *a, const sbc_commands *cmd)
 static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, const sbc_commands *cmd,
                                  sbc_error *err)
 {
-    const int n = a->n, npair = a->ops->pair_count(a->engine), history = sbc_frictional_has_history(&a->law);
     const sbc_frame *f = a->frame;
-    double *x0 = malloc(sizeof(double) * 2 * (size_t)n), *th0 = malloc(sizeof(double) * (size_t)n);
-    double *x = malloc(sizeof(double) * 2 * (size_t)n), *th = malloc(sizeof(double) * (size_t)n);
-    double *fs0 = malloc(sizeof(double) * (size_t)(npair > 0 ? npair : 1));
-    int *ij0 = malloc(sizeof(int) * 2 * (size_t)(npair > 0 ? npair : 1)); /* i0 [npair], then j0 */
+    const int n = a->n, dim = f->dim, rd = SBC_ROTATIONS(dim), npair = a->ops->pair_count(a->engine);
+    const int history = sbc_frictional_has_history(&a->law), cap = npair > 0 ? npair : 1;
+    const size_t nx = (size_t)(dim * n), nt = (size_t)(rd * n);
+    double *x0 = malloc(sizeof(double) * nx), *th0 = malloc(sizeof(double) * nt);
+    double *x = malloc(sizeof(double) * nx), *th = malloc(sizeof(double) * nt);
+    double *fs0 = malloc(sizeof(double) * (size_t)(dim == 3 ? 3 : 1) * (size_t)cap);
+    int *ij0 = malloc(sizeof(int) * 2 * (size_t)cap); /* i0 [npair], then j0 */
     sbc_statics_problem p;
     sbc_statics_result res;
     sbc_status st = SBC_OK;
-    int k, q;
     memset(&res, 0, sizeof res);
     if (!x0 || !th0 || !x || !th || !fs0 || !ij0) {
-        st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d discs", n);
+        st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d particles", n);
         goto done;
     }
-    memcpy(x0, a->ops->centres(a->engine), sizeof(double) * 2 * (size_t)n);
-    memcpy(th0, a->ops->rotations(a->engine), sizeof(double) * (size_t)n);
-    for (k = 0; k < npair; ++k) { /* the spring along t = (-l_y, l_x) / |l| of the committed branch */
-        double fv[3];
-        int ij[2];
-        a->ops->pair(a->engine, k, ij, fv);
-        ij0[k] = ij[0];
-        ij0[npair + k] = ij[1];
-        {
-            const double *xa = &x0[2 * ij[0]], *xb = &x0[2 * ij[1]];
-            const double lx = xb[0] - xa[0], ly = xb[1] - xa[1], d = sqrt(lx * lx + ly * ly);
-            fs0[k] = d > 0.0 ? (-fv[0] * ly + fv[1] * lx) / d : 0.0;
-        }
-    }
+    memcpy(x0, a->ops->centres(a->engine), sizeof(double) * nx);
+    memcpy(th0, a->ops->rotations(a->engine), sizeof(double) * nt);
+    committed_springs(a, x0, npair, ij0, fs0);
     a->ops->move_frame(a->engine, cmd);
-    memcpy(x, a->ops->centres(a->engine), sizeof(double) * 2 * (size_t)n);
-    memcpy(th, a->ops->rotations(a->engine), sizeof(double) * (size_t)n);
+    memcpy(x, a->ops->centres(a->engine), sizeof(double) * nx);
+    memcpy(th, a->ops->rotations(a->engine), sizeof(double) * nt);
     memset(&p, 0, sizeof p);
+    p.dim = dim;
     p.n = n;
     p.r = a->ops->radii(a->engine);
     p.law = a->law;
@@ -241,32 +299,10 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
     st = sbc_statics_solve(&p, x, th, &res, err);
     if (st == SBC_OK)
         st = a->ops->place(a->engine, x, th, res.records, history ? res.contacts : 0, err); /* no springs without friction */
-    if (st == SBC_OK && a->settings->bc != SBC_BC_D) { /* the frame where the solve put it: the controller's commands */
-        double *xq = calloc(3 * (size_t)f->n, sizeof *xq), *tq = calloc((size_t)f->n, sizeof *tq);
-        if (!xq || !tq)
-            st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for a frame of %d", f->n);
-        for (q = 0; st == SBC_OK && q < f->n; ++q) {
-            xq[3 * q] = x[2 * f->particle[q]];
-            xq[3 * q + 1] = x[2 * f->particle[q] + 1];
-            tq[q] = th[f->particle[q]];
-        }
-        if (st == SBC_OK)
-            sbc_controller_adopt(ctl, xq, tq);
-        free(xq);
-        free(tq);
-    }
-    if (st == SBC_OK) {
-        sbc_statics_tally *t = a->tally;
-        t->iterations += res.iterations;
-        t->solves++;
-        t->mechanisms = res.mechanisms;
-        t->residual = res.residual;
-        if (!res.converged) {
-            t->unconverged++;
-            t->fallback = 1;
-            snprintf(t->why, sizeof t->why, "%s", res.why);
-        }
-    }
+    if (st == SBC_OK && a->settings->bc != SBC_BC_D)
+        st = adopt_frame(a, ctl, x, th, err);
+    if (st == SBC_OK)
+        tally_solve(a->tally, &res);
 done:
     sbc_statics_result_free(&res);
     free(x0);

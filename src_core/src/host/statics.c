@@ -326,7 +326,7 @@ static sbc_status take_records(statics_work *w, const double *x, const double *t
         int q;
         for (q = 0; q < dim; ++q)
             d2 += (x[dim * b + q] - x[dim * a + q]) * (x[dim * b + q] - x[dim * a + q]);
-        if (d2 >= rs * rs)
+        if (dim == 3 ? !(rs - sqrt(d2) > 0.0) : d2 >= rs * rs) /* open, as evaluate saw it */
             continue;
         o = &res->records[SBC_PAIR_RECORD * c++];
         o[0] = a;
@@ -467,12 +467,12 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
         network_at(&net, &w, p, x, theta, shift);
         if ((st = sbc_condensed_newton_step(&net, p->frame, p->bc, w.R, w.dy, &res->mechanisms, err)) != SBC_OK)
             break;
-        for (q = 0; q < w.nd * p->n; q += w.nd) { /* the largest translation */
-            double d2 = 0.0;
-            for (k = 0; k < w.dim; ++k)
+        for (q = 0; q < w.nd * p->n; q += w.nd) { /* the largest move of a particle's centre or surface */
+            double d2 = 0.0, t2 = 0.0;
+            for (k = 0; k < w.nd; ++k)
                 if (w.unk[q + k] >= 0)
-                    d2 += w.dy[w.unk[q + k]] * w.dy[w.unk[q + k]];
-            step = fmax(step, sqrt(d2));
+                    *(k < w.dim ? &d2 : &t2) += w.dy[w.unk[q + k]] * w.dy[w.unk[q + k]];
+            step = fmax(step, fmax(sqrt(d2), sqrt(t2) * p->r[q / w.nd]));
         }
         if (step > STEP_CAP * w.rmin)
             alpha = STEP_CAP * w.rmin / step;

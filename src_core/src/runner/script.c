@@ -260,6 +260,14 @@ static sbc_status expect_touching(const sbc_packing *p, sbc_error *err)
     return SBC_OK;
 }
 
+void sbc_script_tally_line(const script *s, const sbc_statics_tally *t)
+{
+    fprintf(s->log, "  interior newton: %d solves, %ld iterations, last residual %.2e, %d dofs held%s%s\n",
+            t->solves, t->iterations, t->residual, t->mechanisms,
+            t->unconverged ? "; the dynamic relaxation finished an unconverged solve: " : "",
+            t->unconverged ? t->why : "");
+}
+
 /* a converged increment: kept for the plot, the results file, the snapshots
    due, the log line */
 static int engine_row(void *user_data, const sbc_result *row, const char *line, char *message, size_t cap)
@@ -283,12 +291,8 @@ static int engine_row(void *user_data, const sbc_result *row, const char *line, 
         fprintf(s->log, "%s\n", line);
         if (s->cohesive)
             fprintf(s->log, "  bonds intact %d\n", sbc_engine_get_view(r->engine).bond_count);
-        if (r->aggregate.tally) {
-            fprintf(s->log, "  interior newton: %d solves, %ld iterations, last residual %.2e, %d dofs held%s%s\n",
-                    r->tally.solves, r->tally.iterations, r->tally.residual, r->tally.mechanisms,
-                    r->tally.unconverged ? "; the dynamic relaxation finished an unconverged solve: " : "",
-                    r->tally.unconverged ? r->tally.why : "");
-        }
+        if (r->aggregate.tally)
+            sbc_script_tally_line(s, &r->tally);
         fflush(s->log);
     }
     if (sbc_script_tangent_row(s, &r->tangent, &r->aggregate, r->ctl, sbc_driver_fire(r->driver), row, &err) !=

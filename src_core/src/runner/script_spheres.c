@@ -144,13 +144,18 @@ typedef struct sphere_run {
     sbc_driver *driver;         /* the driver (its FIRE), */
     sbc_aggregate aggregate;    /* the engine as the tangents see it */
     sbc_script_tangent tangent; /* and the file */
+    sbc_statics_tally tally;    /* interior newton: the static solves of the increment under way */
 } sphere_run;
 
 /* a converged increment: its row in the results file and the log line */
 static int sphere_row(void *user_data, const sbc_result *row, const char *line, char *message, size_t cap)
 {
     sphere_run *r = user_data;
+    sbc_result filled = *row;
     sbc_error e;
+    filled.newton_iterations = r->tally.iterations;
+    filled.newton_held = r->tally.mechanisms;
+    row = &filled;
     if (r->csv.fp && sbc_csv_write(&r->csv, row, &e) != SBC_OK) {
         snprintf(message, cap, "%s", e.message);
         return e.status;
@@ -166,6 +171,8 @@ static int sphere_row(void *user_data, const sbc_result *row, const char *line, 
     }
     if (r->s->log) {
         fprintf(r->s->log, "%s\n", line);
+        if (r->aggregate.tally)
+            sbc_script_tally_line(r->s, &r->tally);
         fflush(r->s->log);
     }
     if (sbc_script_tangent_row(r->s, &r->tangent, &r->aggregate, r->ctl, sbc_driver_fire(r->driver), row, &e) !=
@@ -173,6 +180,7 @@ static int sphere_row(void *user_data, const sbc_result *row, const char *line, 
         snprintf(message, cap, "%s", e.message);
         return e.status;
     }
+    memset(&r->tally, 0, sizeof r->tally); /* the next increment's solves */
     timespec_get(&r->reported, TIME_UTC);
     return SBC_OK;
 }
@@ -227,9 +235,6 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
     if (s->settings.frame_group[0])
         return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'frame' is 2D in this version; the packing is 3D",
                         s->servo_line);
-    if (s->settings.interior == SBC_INTERIOR_NEWTON)
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'interior': newton solves discs (2D) in this "
-                        "version; the packing is 3D (expected dynamic)", s->servo_line);
     if ((st = sbc_frame_detect_3d(&p.frame, s->n3, s->x3, s->r3, 0.0, err)) != SBC_OK)
         return st;
     def.n = s->n3;
@@ -292,6 +297,7 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
     r.aggregate.mass = p.mass;
     r.aggregate.dt = dt;
     r.aggregate.law = s->law;
+    r.aggregate.tally = s->settings.interior == SBC_INTERIOR_NEWTON ? &r.tally : NULL;
     if (s->check) {
         if (s->log)
             fprintf(s->log, "check: run of line %d: servo_bc %s, %d spheres, frame of %d, %d increments, dt = %g s "
@@ -317,12 +323,10 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
     r.driver = p.driver;
     timespec_get(&r.start, TIME_UTC);
     r.reported = r.start;
-    for (;;) {
-        sbc_commands cmd;
-        sbc_event ev;
-        if ((st = sbc_spheres_forces(p.engine, err)) != SBC_OK)
-            break;
-        ev = sbc_driver_step(p.driver, 0, err);
+    if ((st = sbc_spheres_forces(p.engine, err)) == SBC_OK && r.aggregate.tally)
+        st = sbc_aggregate_advance(&r.aggregate, p.ctl, 1, err); /* increment 0's interior solved first */
+    while (st == SBC_OK) {
+        sbc_event ev = sbc_driver_step(p.driver, 0, err);
         ++steps;
         if (ev == SBC_EVENT_FAILED) {
             st = err->status;
@@ -330,8 +334,8 @@ sbc_status sbc_script_run_spheres(script *s, sbc_error *err)
         }
         if (ev == SBC_EVENT_FINISHED)
             break;
-        cmd = sbc_controller_commands(p.ctl);
-        sbc_spheres_move_frame(p.engine, &cmd);
+        if ((st = sbc_aggregate_advance(&r.aggregate, p.ctl, 0, err)) != SBC_OK)
+            break;
         if (s->log && steps % 1000 == 0) {
             struct timespec now;
             timespec_get(&now, TIME_UTC);

@@ -70,6 +70,9 @@ sbc_status sbc_script_files_check(script *s, const char *path, const char *what,
  * nor one another; with --check, each is probed (output_file.h). */
 sbc_status sbc_script_outputs_check(script *s, sbc_error *err);
 
+/* The log line of an increment's static solves (interior newton). */
+void sbc_script_tally_line(const script *s, const sbc_statics_tally *t);
+
 /* Keyword tangent (script_tangent.c): its file, opened by a run of
  * dimension dim after the refusals (mixed, cohesive contacts); a row per
  * converged increment from the driver's row callback, where `ctl` has just
