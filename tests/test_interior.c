@@ -17,6 +17,8 @@
  *   condensed tangent after three shear steps against central differences
  *   of the increment's map from the committed state (the FE code's
  *   derivative) to 1e-4 of |C|.
+ * - Four frictional points sheared in a batch on 1 and 2 threads: the same
+ *   bits.
  * - Refusals by name: mixed, remap x, speed > 0, cohesive bonds,
  *   a host driver that does not solve its interior. */
 #include "check.h"
@@ -318,6 +320,56 @@ static void consistent_tangent(void)
     sbc_packing_free(&pk);
 }
 
+/* four frictional 55-disc points (interior newton, the default) sheared in a batch on 1 and on 2 threads:
+   the same P bit for bit (each point's increment is a function of its committed state and F alone) */
+static void threads(void)
+{
+    enum { COUNT = 4 };
+    char path[512];
+    sbc_packing pk;
+    sbc_point *pts[2][COUNT];
+    double F[9 * COUNT], P[2][9 * COUNT], ratio[COUNT];
+    int status[COUNT], k, t, made = 1, converged = 0;
+    sbc_error err;
+    memset(&pk, 0, sizeof pk);
+    memset(pts, 0, sizeof pts);
+    if (!packing_path(path, sizeof path) || sbc_packing_read(&pk, path, &err) != SBC_OK) {
+        CHECK(0);
+        return;
+    }
+    for (k = 0; k < COUNT; ++k) {
+        sbc_point_def def = sbc_point_def_default();
+        def.n = pk.n;
+        def.x = pk.x;
+        def.r = pk.r;
+        def.box = pk.has_box ? pk.box : NULL;
+        def.words = "P accuracy tight";
+        def.law.kn = KN;
+        def.law.ks = 5e3;
+        def.law.mu = 0.5;
+        def.density = 2e3;
+        def.dt = 1e-4;
+        memset(&F[9 * k], 0, sizeof(double) * 9);
+        F[9 * k] = 1.0 - 0.0005 * k;
+        F[9 * k + 1] = 0.001 * (k + 1);
+        F[9 * k + 4] = F[9 * k + 8] = 1.0;
+        for (t = 0; t < 2; ++t)
+            made &= (pts[t][k] = sbc_point_create(&def, &err)) != NULL;
+    }
+    CHECK(made);
+    if (made) {
+        converged = sbc_points_integrate(pts[0], COUNT, F, P[0], status, ratio, 1, &err) == SBC_OK;
+        converged &= sbc_points_integrate(pts[1], COUNT, F, P[1], status, ratio, 2, &err) == SBC_OK;
+        CHECK(converged && memcmp(P[0], P[1], sizeof P[0]) == 0);
+    }
+    printf("  interior: 4 frictional 55-disc points (P, newton) on 1 and 2 threads: %s\n",
+           converged && memcmp(P[0], P[1], sizeof P[0]) == 0 ? "the same bits" : "DIFFER");
+    for (t = 0; t < 2; ++t)
+        for (k = 0; k < COUNT; ++k)
+            sbc_point_free(pts[t][k]);
+    sbc_packing_free(&pk);
+}
+
 static void refusals(void)
 {
     sbc_settings s;
@@ -363,5 +415,6 @@ void test_interior(void)
     frictionless_irregular();
     frictional_irregular();
     consistent_tangent();
+    threads();
     refusals();
 }
