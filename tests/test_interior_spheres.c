@@ -18,10 +18,13 @@
 #include "check.h"
 #include "csv_read.h"
 #include "packing_file.h"
+#include "tangent_map.h"
 #include "tests.h"
 
 #include "host/contact_blocks.h"
 #include "sbc/embedded/script.h"
+#include "sbc/material_point.h"
+#include "sbc/packing.h"
 #include "sbc/tensor.h"
 
 #include <math.h>
@@ -272,9 +275,55 @@ static void irregular(void)
     }
 }
 
+/* the 3D material point of the 71 spheres with friction after three committed shear steps: its condensed
+   tangent against central differences of the increment's map from the committed state, to 1e-4 of |C| */
+static void consistent_tangent(void)
+{
+    const char *words[2] = {"D accuracy tight interior newton", "P accuracy tight interior newton"};
+    char path[512];
+    double *x = NULL, *r = NULL;
+    sbc_error err;
+    int w, n = 0;
+    if (!packing(path, sizeof path) || sbc_spheres_read(path, &n, &x, &r, &err) != SBC_OK) {
+        CHECK(0);
+        return;
+    }
+    for (w = 0; w < 2; ++w) {
+        sbc_point_def def = sbc_point_def_default();
+        sbc_point *p;
+        double C[81], D[81], gap;
+        def.dim = 3;
+        def.n = n;
+        def.x = x;
+        def.r = r;
+        def.words = words[w];
+        def.law.kn = 1e4;
+        def.law.ks = 5e3;
+        def.law.mu = 0.5;
+        def.density = 2650;
+        def.dt = 9e-6;
+        if (!(p = sbc_point_create(&def, &err))) {
+            printf("  interior spheres: point: %s\n", err.message);
+            CHECK(0);
+            continue;
+        }
+        gap = tangent_map_gap(p, 3, 2, 8, C, D, &err); /* F13 = 0.001 k, F33 = 1 - 0.0005 k */
+        if (gap < 0.0)
+            printf("  interior spheres: point: %s\n", err.message);
+        CHECK(gap >= 0.0 && gap <= 1e-4);
+        printf("  interior spheres: material point %s, frictional 71 spheres after three shear steps: condensed "
+               "tangent against the increment's map by central differences %.2e of |C| (C1313 %.6g, %.6g)\n",
+               words[w], gap, C[9 * 2 + 2], D[9 * 2 + 2]);
+        sbc_point_free(p);
+    }
+    free(x);
+    free(r);
+}
+
 void test_interior_spheres(void)
 {
     block_derivative();
     lattices();
     irregular();
+    consistent_tangent();
 }

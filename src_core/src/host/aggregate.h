@@ -109,10 +109,22 @@ sbc_status sbc_aggregate_network(const sbc_aggregate *a, struct sbc_network *net
 /* The affine tangent at F (material_point.h, sbc_point_tangent_affine). */
 sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], double C[81], sbc_error *err);
 
+/* Where an increment started (a material point's committed state): the
+ * centres x [dim n] (m); in 3D also the rotations theta [3n] (rad) and the
+ * engine's pairs then, sorted by i then j (i < j), with their springs fs
+ * [3 npair] (N, as sbc_engine_ops.pair gives them). */
+typedef struct sbc_increment_start {
+    const double *x, *theta;
+    int npair;
+    const int *i, *j;
+    const double *fs;
+} sbc_increment_start;
+
 /* The condensed tangent (material_point.h, sbc_point_tangent_condensed);
- * x0: NULL, or (2D) the centres where the increment started (condensed.h). */
-sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, const double *x0, double C[81], int *mechanisms,
-                                   sbc_error *err);
+ * start: NULL (the current state's linearization), or where the increment
+ * started (its derivative, condensed.h); in 3D without start->theta, NULL. */
+sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, const sbc_increment_start *start, double C[81],
+                                   int *mechanisms, sbc_error *err);
 
 /* The perturbation tangent at an increment that `accepted` has just accepted
  * (before the host's next step: in the driver's row callback), at its F:

@@ -33,6 +33,10 @@ struct sbc_point {
     double *mass;          /* [Q] kg (a.mass) */
     double *committed;     /* [size] the committed state (sbc_point_save's layout) */
     double *x_committed;   /* [dim n] its centres, m (the condensed tangent's start of the increment) */
+    double *theta_committed; /* 3D: [3n] its rotations, rad */
+    int *pairs_committed;    /* 3D: [2 cap] its pairs (i [cap], then j) */
+    double *fs_committed;    /* 3D: [3 cap] their springs, N */
+    int npair_committed, pair_cap;
     size_t size;
     int at_committed;      /* the engine and the controller hold the committed state */
     double F[9], P[9];     /* committed */
@@ -86,6 +90,9 @@ void sbc_point_free(sbc_point *p)
     free(p->mass);
     free(p->committed);
     free(p->x_committed);
+    free(p->theta_committed);
+    free(p->pairs_committed);
+    free(p->fs_committed);
     free(p);
 }
 
@@ -137,11 +144,11 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
         return err->status;
     if (!d->words || word_at(d->words, "remap") <= 0)
         s->remap = 0;
-    /* a point of frictional discs under D or P solves its increments statically unless its words say
-       otherwise (interior, speed or remap given): its P is then a function of F, and its condensed tangent the
-       derivative (docs/servo_bc.md, "Interior"); under T the static solves of irregular packings stall, so T
-       keeps the relaxation unless the words ask */
-    if (d->dim == 2 && !d->bonds && (s->bc == SBC_BC_D || s->bc == SBC_BC_P) && sbc_sparse_available() &&
+    /* a point of frictional discs or spheres under D or P solves its increments statically unless its words
+       say otherwise (interior, speed or remap given): its P is then a function of F, and its condensed tangent
+       the derivative (docs/servo_bc.md, "Interior"); under T the static solves of irregular packings stall, so
+       T keeps the relaxation unless the words ask */
+    if (!d->bonds && (s->bc == SBC_BC_D || s->bc == SBC_BC_P) && sbc_sparse_available() &&
         (!d->words || (word_at(d->words, "interior") < 0 && word_at(d->words, "speed") < 0 &&
                        word_at(d->words, "remap") < 0))) {
         s->interior = SBC_INTERIOR_NEWTON;
@@ -155,9 +162,9 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
     if (d->bonds && d->dim != 2)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: cohesive bonds are the paper's 2D bonds (eqs. 7-8); "
                         "this point is 3D");
-    if (s->interior == SBC_INTERIOR_NEWTON && (d->bonds || d->dim != 2))
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': interior newton solves frictional discs (eq. "
-                        "6, 2D) in this version (expected interior dynamic)", d->words);
+    if (s->interior == SBC_INTERIOR_NEWTON && d->bonds)
+        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': interior newton integrates eq. 6, not the "
+                        "cohesive bonds (expected interior dynamic)", d->words);
     if (d->bonds && s->update == SBC_UPDATE_NEWTON)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': update newton linearizes eq. 6 alone, not "
                         "the cohesive bonds (expected update fixed or secant)", d->words);
@@ -292,10 +299,36 @@ static int committed_room(sbc_point *p, size_t n)
     return 1;
 }
 
-/* the committed centres, from the engine that holds the committed state */
-static void keep_centres(sbc_point *p)
+/* where the next increment starts, from the engine that holds the committed state: its centres and, in 3D,
+   rotations and pairs with their springs (sbc_increment_start); 0 when out of memory (3D pairs then none) */
+static int keep_start(sbc_point *p)
 {
+    const int npair = p->frame.dim == 3 ? p->a.ops->pair_count(p->a.engine) : 0;
+    int k;
     memcpy(p->x_committed, p->a.ops->centres(p->a.engine), sizeof(double) * (size_t)(p->frame.dim * p->a.n));
+    p->npair_committed = 0;
+    if (p->frame.dim != 3)
+        return 1;
+    memcpy(p->theta_committed, p->a.ops->rotations(p->a.engine), sizeof(double) * 3 * (size_t)p->a.n);
+    if (npair > p->pair_cap) {
+        int *ij = realloc(p->pairs_committed, sizeof *ij * 2 * (size_t)npair);
+        double *fs = ij ? realloc(p->fs_committed, sizeof *fs * 3 * (size_t)npair) : NULL;
+        if (ij)
+            p->pairs_committed = ij;
+        if (fs)
+            p->fs_committed = fs;
+        if (!ij || !fs)
+            return 0;
+        p->pair_cap = npair;
+    }
+    for (k = 0; k < npair; ++k) {
+        int ij[2];
+        p->a.ops->pair(p->a.engine, k, ij, &p->fs_committed[3 * k]);
+        p->pairs_committed[k] = ij[0];
+        p->pairs_committed[p->pair_cap + k] = ij[1];
+    }
+    p->npair_committed = npair;
+    return 1;
 }
 
 sbc_status sbc_point_commit(sbc_point *p)
@@ -308,7 +341,8 @@ sbc_status sbc_point_commit(sbc_point *p)
     memcpy(p->F, p->Fc, sizeof p->F);
     memcpy(p->P, p->Pc, sizeof p->P);
     save_current(p, p->F, p->P, p->committed);
-    keep_centres(p);
+    if (!keep_start(p))
+        return SBC_ERR_NOMEM;
     p->at_committed = 1;
     return SBC_OK;
 }
@@ -368,7 +402,11 @@ sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *e
         return sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory for a state of %zu values", n);
     }
     memcpy(p->committed, in, sizeof(double) * n);
-    keep_centres(p);
+    if (!keep_start(p)) {
+        p->at_committed = 0;
+        sbc_point_revert(p);
+        return sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory for the committed contacts");
+    }
     memcpy(p->F, F, sizeof F);
     memcpy(p->P, P, sizeof P);
     memcpy(p->Fc, F, sizeof F);
@@ -436,7 +474,8 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
         return NULL;
     }
     if (!(p->mass = malloc(sizeof(double) * (size_t)p->frame.n)) ||
-        !(p->x_committed = malloc(sizeof(double) * (size_t)(p->frame.dim * d->n)))) {
+        !(p->x_committed = malloc(sizeof(double) * (size_t)(p->frame.dim * d->n))) ||
+        (d->dim == 3 && !(p->theta_committed = malloc(sizeof(double) * 3 * (size_t)d->n)))) {
         sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory");
         sbc_point_free(p);
         return NULL;
@@ -549,7 +588,14 @@ sbc_status sbc_point_tangent_affine(sbc_point *p, double C[81], sbc_error *err)
 
 sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanisms, sbc_error *err)
 {
+    sbc_increment_start start;
     if (no_point(p, "condensed tangent", err) != SBC_OK)
         return err->status;
-    return sbc_aggregate_condensed(&p->a, p->x_committed, C, mechanisms, err);
+    start.x = p->x_committed;
+    start.theta = p->theta_committed;
+    start.npair = p->npair_committed;
+    start.i = p->pairs_committed;
+    start.j = p->pairs_committed ? p->pairs_committed + p->pair_cap : NULL;
+    start.fs = p->fs_committed;
+    return sbc_aggregate_condensed(&p->a, &start, C, mechanisms, err);
 }

@@ -55,11 +55,31 @@ sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], doubl
     return SBC_OK;
 }
 
-sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, const double *x0, double C[81], int *mechanisms,
-                                   sbc_error *err)
+/* the committed spring of each current pair of net (zero for a pair that was not committed), [3 npair] */
+static void springs_at_start(const sbc_network *net, const sbc_increment_start *start, double *fs0)
+{
+    int k;
+    for (k = 0; k < net->npair; ++k) {
+        int lo = 0, hi = start->npair;
+        while (lo < hi) { /* the first committed pair not before (i, j) */
+            const int mid = lo + (hi - lo) / 2;
+            if (start->i[mid] < net->i[k] || (start->i[mid] == net->i[k] && start->j[mid] < net->j[k]))
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        if (lo < start->npair && start->i[lo] == net->i[k] && start->j[lo] == net->j[k])
+            memcpy(&fs0[3 * k], &start->fs[3 * lo], sizeof(double) * 3);
+        else
+            fs0[3 * k] = fs0[3 * k + 1] = fs0[3 * k + 2] = 0.0;
+    }
+}
+
+sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, const sbc_increment_start *start, double C[81],
+                                   int *mechanisms, sbc_error *err)
 {
     int *ij = NULL, ignored;
-    double *fs = NULL;
+    double *fs = NULL, *fs0 = NULL;
     unsigned char *mode = NULL;
     sbc_network net;
     sbc_status st;
@@ -73,12 +93,26 @@ sbc_status sbc_aggregate_condensed(const sbc_aggregate *a, const double *x0, dou
         sbc_mixed_modes(a->frame, a->settings, mode);
     }
     if ((st = sbc_aggregate_network(a, &net, &ij, &fs, err)) == SBC_OK) {
-        net.x0 = net.dim == 2 ? x0 : NULL;
         net.mode = mode;
-        st = sbc_condensed_tangent(&net, a->frame, a->settings->bc, C, mechanisms, err);
+        if (start && net.dim == 2)
+            net.x0 = start->x;
+        else if (start && start->theta) { /* 3D: the increment's springs from the committed ones */
+            if (!(fs0 = malloc(sizeof *fs0 * 3 * (size_t)(net.npair > 0 ? net.npair : 1))))
+                st = sbc_fail(err, SBC_ERR_NOMEM, "condensed tangent: out of memory for %d pairs", net.npair);
+            else {
+                springs_at_start(&net, start, fs0);
+                net.x0 = start->x;
+                net.theta0 = start->theta;
+                net.theta = a->ops->rotations(a->engine);
+                net.fs0 = fs0;
+            }
+        }
+        if (st == SBC_OK)
+            st = sbc_condensed_tangent(&net, a->frame, a->settings->bc, C, mechanisms, err);
     }
     free(ij);
     free(fs);
+    free(fs0);
     free(mode);
     return st;
 }
