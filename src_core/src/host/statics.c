@@ -31,6 +31,8 @@
 #define STALL_WINDOW 20
 /* how far a step under the pseudo-time term may raise the merit and still be taken */
 #define FLOW_RISE 4.0
+/* the round-off floor of the relative residual, in ulps of the largest coordinate times kn (attainable) */
+#define ROUNDOFF_ULPS 64.0
 
 typedef struct statics_work {
     const sbc_statics_problem *p;
@@ -51,6 +53,7 @@ typedef struct statics_work {
     double border;           /* (T): the multipliers' scale, kn */
     double *xt, *tt;         /* [dim n], [rd n] a trial state of the line search */
     double rmax, rmin;
+    double xmax;             /* the largest |coordinate| of the committed centres, m (the round-off's scale) */
     double mean_force;       /* mean |contact force| of the last evaluation, N */
     int contacts;            /* ... touching pairs */
     int built;               /* the candidates have been built once */
@@ -189,6 +192,16 @@ static double evaluate(statics_work *w, const double *x, const double *theta)
     return merit;
 }
 
+/* the residual a solve can reach: the problem's tol, or, where the contact
+   forces are so small that round-off in the centres (the ulp of xmax, times
+   kn, summed over a particle's contacts) is larger, ROUNDOFF_ULPS ulps of it
+   over the mean contact force (docs/servo_bc.md, "Interior") */
+static double attainable(const statics_work *w)
+{
+    const double floor = ROUNDOFF_ULPS * DBL_EPSILON * w->p->law.kn * w->xmax;
+    return w->mean_force > 0.0 ? fmax(w->p->tol, floor / w->mean_force) : w->p->tol;
+}
+
 /* the largest residual of an unknown (net force, net moment over R, (T)'s
    constraints in N) over the mean contact force */
 static double relative_residual(const statics_work *w)
@@ -267,6 +280,8 @@ static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_e
         w->rmax = fmax(w->rmax, p->r[i]);
         w->rmin = fmin(w->rmin, p->r[i]);
     }
+    for (k = 0; k < w->dim * p->n; ++k)
+        w->xmax = fmax(w->xmax, fabs(p->x0[k]));
     w->start0 = calloc(n + 1, sizeof(int));
     w->res = malloc(sizeof(double) * (size_t)w->nd * n);
     w->unk = malloc(sizeof(int) * (size_t)w->nd * n);
@@ -461,7 +476,7 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
     net.frame_rotation_zero = p->bc == SBC_BC_T && p->rotation_zero;
     merit = evaluate(&w, x, theta);
     res->residual = relative_residual(&w);
-    for (it = 0; it < p->max_iterations && !(res->residual <= p->tol); ++it) {
+    for (it = 0; it < p->max_iterations && !(res->residual <= attainable(&w)); ++it) {
         double alpha = 1.0, step = 0.0, best_alpha = 0.0, lambda_keep[12], merit_before = merit;
         int h, k;
         network_at(&net, &w, p, x, theta, shift);
@@ -536,16 +551,16 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
             break;
         }
     }
-    if (st == SBC_OK && it == 0 && res->residual <= p->tol) { /* the start was the answer: the held dofs counted */
+    if (st == SBC_OK && it == 0 && res->residual <= attainable(&w)) { /* the start was the answer: the held dofs counted */
         network_at(&net, &w, p, x, theta, shift);
         if ((res->mechanisms = sbc_condensed_unstiffened(&net, p->frame, p->bc, err)) < 0)
             st = err->status;
     }
     if (st == SBC_OK) {
-        res->converged = res->residual <= p->tol;
+        res->converged = res->residual <= attainable(&w);
         if (!res->converged && !res->why[0])
             snprintf(res->why, sizeof res->why, "%d Newton iterations left the relative residual at %.3e (tolerance "
-                     "%.1e)", res->iterations, res->residual, p->tol);
+                     "%.1e)", res->iterations, res->residual, attainable(&w));
         st = take_records(&w, x, theta, res, err);
     }
     work_free(&w);
