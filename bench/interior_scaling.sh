@@ -11,7 +11,7 @@
 #   n0 whose (P) case also runs dynamically (the 1 677-disc one takes tens of
 #   minutes); generating n0 1600 takes about 2 minutes, 6400 about 20.
 #   DIMENSION=3: sphere packings instead (`generate periodic n0 N rmin 1e-3
-#   polydispersity 1.5 seed 1 strain 0.002`, ks 5e3 N/m, mu 0.5, density 2650,
+#   polydispersity 1.5 seed 1 strain 0.01`, ks 5e3 N/m, mu 0.5, density 2650,
 #   dt 9e-6 s), F13 = 1e-4; defaults "100 300 600".
 set -euo pipefail
 bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -30,7 +30,7 @@ if [ "$DIMENSION" = 3 ]; then
   contact='contact frictional kn 1e4 ks 5e3 mu 0.5
 density 2650
 timestep 9e-6'
-  generate='polydispersity 1.5 seed 1 strain 0.002'
+  generate='polydispersity 1.5 seed 1 strain 0.01'
   shear='F 1 0 0.0001 0 1 0 0 0 1'
 fi
 # shared: timed_run, particles, exponent

@@ -180,7 +180,7 @@ static void lattices(void)
             for (i = 0; i < 3; ++i)
                 for (j = 0; j < 3; ++j) {
                     const double F = rows[k][COL3(i == 0 ? "F11" : i == 1 ? "F22" : "F33")];
-                    char name[4];
+                    char name[32];
                     double want = 0.0;
                     if (i == j)
                         want = touching ? -kn * (1.0 - F) * (N - 1) * (N - 1) / (d * (N - 1.5) * (N - 1.5))

@@ -260,14 +260,6 @@ static sbc_status expect_touching(const sbc_packing *p, sbc_error *err)
     return SBC_OK;
 }
 
-void sbc_script_tally_line(const script *s, const sbc_statics_tally *t)
-{
-    fprintf(s->log, "  interior newton: %d solves, %ld iterations, last residual %.2e, %d dofs held%s%s\n",
-            t->solves, t->iterations, t->residual, t->mechanisms,
-            t->unconverged ? "; the dynamic relaxation finished an unconverged solve: " : "",
-            t->unconverged ? t->why : "");
-}
-
 /* a converged increment: kept for the plot, the results file, the snapshots
    due, the log line */
 static int engine_row(void *user_data, const sbc_result *row, const char *line, char *message, size_t cap)

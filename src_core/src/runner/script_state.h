@@ -70,7 +70,7 @@ sbc_status sbc_script_files_check(script *s, const char *path, const char *what,
  * nor one another; with --check, each is probed (output_file.h). */
 sbc_status sbc_script_outputs_check(script *s, sbc_error *err);
 
-/* The log line of an increment's static solves (interior newton). */
+/* The log line of an increment's static solves (interior newton; script_log.c). */
 void sbc_script_tally_line(const script *s, const sbc_statics_tally *t);
 
 /* Keyword tangent (script_tangent.c): its file, opened by a run of
