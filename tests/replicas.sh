@@ -3,7 +3,10 @@
 # (P): every sigma statistic of the summary finite, the mean within the
 # replicas' range at every increment, the spread larger than zero (the
 # perturbed histories part) and at most the stress scale; K = 1 and replica 0
-# reproduce the plain run byte for byte; a replica that stops is named.
+# reproduce the plain run byte for byte; a replica that stops is named. In 3D
+# (71 spheres, (P), K = 4): the summary's 9 F and 9 sigma columns, replica 0
+# the plain run byte for byte, and the spread with interior newton at most a
+# tenth of that with interior dynamic.
 # Prints "N passed, N failed". Usage: replicas.sh BUILD
 set -u
 B=$(cd "${1:-build}" && pwd)
@@ -53,6 +56,41 @@ if [ $rc -ge 1 ] && [ $rc -le 125 ] && grep -q "^ERROR: replica [0-9]*: .*max_it
   ok "a replica that stops is named (exit $rc): $(grep -m1 '^ERROR: .*replicas:' "$tmp/stop.log" | cut -c1-140)"
 else
   no "a stopping replica (exit $rc):"; tail -n 3 "$tmp/stop.log"
+fi
+# 3D: 71 spheres under (P), K = 4 with interior newton and with interior dynamic
+head3='dimension 3
+generate periodic n0 30 rmin 1e-3 polydispersity 1.5 seed 1 strain 0.002
+contact frictional kn 1e4 ks 5e3 mu 0.5
+density 2650
+timestep 9e-6'
+words3='servo_bc P F 1 0 0.003 0 1 0 0 0 1 increments 2 accuracy tight'
+for m in newton dynamic; do
+  printf '%s\n%s interior %s file plain3%s.csv\nrun\n' "$head3" "$words3" "$m" "$m" > "$tmp/plain3$m.sbc"
+  printf '%s\nreplicas 4 jobs 2\n%s interior %s file four3%s.csv\nrun\n' "$head3" "$words3" "$m" "$m" > "$tmp/four3$m.sbc"
+  (cd "$tmp" && "$B/servo-bc" "plain3$m.sbc" > "plain3$m.log" 2>&1 && "$B/servo-bc" "four3$m.sbc" > "four3$m.log" 2>&1) ||
+    { no "3D $m runs failed:"; tail -n 3 "$tmp/four3$m.log"; }
+done
+spread3() { # rows, bad statistics, the largest spread over the stress scale
+  awk -F, 'NR == 1 { if (NF != 47 || $11 != "replicas" || $44 != "sigma33_mean") bad++ }
+    NR > 1 { n++; if ($11 != 4) bad++
+      for (c = 12; c <= 44; c += 4) { m = $c; s = $(c + 1); lo = $(c + 2); hi = $(c + 3)
+        if (!(m == m + 0 && s == s + 0 && s >= 0 && lo <= m && m <= hi)) bad++
+        if (hi - lo > w) w = hi - lo; a = m < 0 ? -m : m; if (a > S) S = a } }
+    END { printf "%d %d %.3g", n, bad, (S > 0 ? w / S : -1) }' "$1" 2>/dev/null
+}
+read -r n_new bad_new w_new <<< "$(spread3 "$tmp/four3newton_replicas.csv")"
+read -r n_dyn bad_dyn w_dyn <<< "$(spread3 "$tmp/four3dynamic_replicas.csv")"
+if [ "${n_new:-0}" = 3 ] && [ "${bad_new:-1}" = 0 ] && [ "${n_dyn:-0}" = 3 ] && [ "${bad_dyn:-1}" = 0 ] &&
+   cmp -s "$tmp/plain3newton.csv" "$tmp/four3newton.csv" && cmp -s "$tmp/plain3dynamic.csv" "$tmp/four3dynamic.csv"; then
+  ok "3D, K = 4: 3 increments of 9 F and 9 sigma columns, every mean within the replicas' range, replica 0 the plain run byte for byte"
+else
+  no "3D K = 4 summaries: newton rows ${n_new:-?} bad ${bad_new:-?}, dynamic rows ${n_dyn:-?} bad ${bad_dyn:-?}"
+fi
+# a static increment is a function of its loading: its spread a tenth of the relaxation's at most
+if awk -v a="${w_new:--1}" -v b="${w_dyn:--1}" 'BEGIN { exit !(a >= 0 && b > 0 && a <= 0.1 * b) }'; then
+  ok "3D: the spread of 4 replicas (centres moved by up to 1e-6 R) is $w_new of the stress scale with interior newton, $w_dyn with interior dynamic"
+else
+  no "3D spreads: newton ${w_new:-?}, dynamic ${w_dyn:-?}"
 fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -572,8 +572,9 @@ static sbc_status execute_3d(script *s, int nw, char **w, sbc_error *err)
         s->servo_pending = 0;
         if (s->decks_dir)
             return s->write_decks(s, s->decks_dir, err);
-        return sbc_script_run_spheres(s, err);
+        return s->replicas > 0 ? sbc_script_replicas(s, sbc_script_run_spheres, err) : sbc_script_run_spheres(s, err);
     }
+    if (strcmp(c, "replicas") == 0) return sbc_script_replicas_command(s, nw, w, err);
     return sbc_script_bpm(s, nw, w, err);
 }
 

@@ -396,6 +396,6 @@ sbc_status sbc_script_bpm(script *s, int nw, char **w, sbc_error *err)
     }
     return sbc_fail(err, SBC_ERR_INPUT,
                     "unknown command '%s' after 'dimension 3' (expected packing, bond, density, timestep, test, vtk, "
-                    "lattice, generate, read_packing, write_packing, contact, servo_bc or run; plot, network and "
-                    "replicas are 2D in this version)", c);
+                    "lattice, generate, read_packing, write_packing, contact, servo_bc, replicas or run; plot and network "
+                    "are 2D in this version)", c);
 }

@@ -4,7 +4,7 @@
  * processes. Replica 0 is the plain run (its results file is the one the
  * servo_bc line names); replica k >= 1 starts from the packing with every
  * interior centre moved by a random vector of length up to EPS R_i (uniform
- * over the disc of that radius; seed k, splitmix64), and writes
+ * over the disc, in 3D the ball, of that radius; seed k, splitmix64), and writes
  * FILE_replicaKK.csv. The summary FILE_replicas.csv holds, per increment,
  * F of the first replica that reached it, how many did, and the mean,
  * standard deviation, min and max of each sigma component over those
@@ -12,6 +12,7 @@
  * balance of the state reached) does not bound (docs/speed-accuracy.md). */
 #include "script_state.h"
 
+#include "sbc/columns.h"
 #include "sbc/frame.h"
 #include "sbc/embedded/output_file.h"
 
@@ -23,7 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-enum { REPLICAS_MAX = 1000, JOBS_MAX = 64, FIELDS = 23 };
+enum { REPLICAS_MAX = 1000, JOBS_MAX = 64, FIELDS = SBC_COLUMNS };
 
 sbc_status sbc_script_replicas_command(script *s, int nw, char **w, sbc_error *err)
 {
@@ -85,27 +86,41 @@ static double uniform(uint64_t *state) /* splitmix64, in [0, 1) */
 /* replica k's packing: each interior centre moved by up to eps R */
 static sbc_status perturb(script *s, int k, sbc_error *err)
 {
+    const int dim = s->x3 ? 3 : 2, n = dim == 3 ? s->n3 : s->packing.n;
+    double *x = dim == 3 ? s->x3 : s->packing.x;
+    const double *r = dim == 3 ? s->r3 : s->packing.r;
     sbc_frame frame;
-    unsigned char *is_frame = calloc((size_t)s->packing.n, 1);
+    unsigned char *is_frame = calloc((size_t)(n > 0 ? n : 1), 1);
     uint64_t state = (uint64_t)k;
     sbc_status st;
     int q, i;
     if (!is_frame)
         return sbc_fail(err, SBC_ERR_NOMEM, "replicas: out of memory");
-    if ((st = sbc_frame_detect_packing(&frame, &s->packing, err)) != SBC_OK) {
+    st = dim == 3 ? sbc_frame_detect_3d(&frame, n, x, r, 0.0, err) : sbc_frame_detect_packing(&frame, &s->packing, err);
+    if (st != SBC_OK) {
         free(is_frame);
         return st;
     }
     for (q = 0; q < frame.n; ++q)
         is_frame[frame.particle[q]] = 1;
     sbc_frame_free(&frame);
-    for (i = 0; i < s->packing.n; ++i) {
+    for (i = 0; i < n; ++i) {
         const double angle = 2.0 * 3.14159265358979323846 * uniform(&state);
-        const double radius = s->perturb * s->packing.r[i] * sqrt(uniform(&state));
-        if (is_frame[i])
-            continue;
-        s->packing.x[2 * i] += radius * cos(angle);
-        s->packing.x[2 * i + 1] += radius * sin(angle);
+        if (dim == 3) { /* uniform over the ball: a direction on the sphere, the radius as u^(1/3) */
+            const double z = 2.0 * uniform(&state) - 1.0, ring = sqrt(fmax(0.0, 1.0 - z * z));
+            const double radius = s->perturb * r[i] * cbrt(uniform(&state));
+            if (is_frame[i])
+                continue;
+            x[3 * i] += radius * ring * cos(angle);
+            x[3 * i + 1] += radius * ring * sin(angle);
+            x[3 * i + 2] += radius * z;
+        } else {
+            const double radius = s->perturb * r[i] * sqrt(uniform(&state));
+            if (is_frame[i])
+                continue;
+            x[2 * i] += radius * cos(angle);
+            x[2 * i + 1] += radius * sin(angle);
+        }
     }
     free(is_frame);
     return SBC_OK;
@@ -137,8 +152,8 @@ static int run_replica(script *s, sbc_script_run_fn run_once, int k)
     return st == SBC_OK ? 0 : 1;
 }
 
-/* the rows of one results file: rows[n][FIELDS]; the row count, -1 if unreadable */
-static int read_rows(const char *path, double (**rows)[FIELDS])
+/* the rows of one results file, their first nf fields: rows[n][FIELDS]; the row count, -1 if unreadable */
+static int read_rows(const char *path, int nf, double (**rows)[FIELDS])
 {
     FILE *fp = fopen(path, "r");
     char line[4096];
@@ -159,12 +174,12 @@ static int read_rows(const char *path, double (**rows)[FIELDS])
                 break;
             *rows = grown;
         }
-        for (c = 0; c < FIELDS; ++c, p = end + 1) {
+        for (c = 0; c < nf; ++c, p = end + 1) {
             (*rows)[n][c] = strtod(p, &end);
-            if (end == p || (c + 1 < FIELDS && *end != ','))
+            if (end == p || (c + 1 < nf && *end != ','))
                 break;
         }
-        if (c < FIELDS)
+        if (c < nf)
             break;
         ++n;
     }
@@ -176,14 +191,26 @@ static int read_rows(const char *path, double (**rows)[FIELDS])
 static sbc_status summarize(script *s, int K, char *summary, size_t size, int *rows_out, double *spread,
                             double *scale, sbc_error *err)
 {
+    static const char *const comps[2][9] = {{"11", "12", "21", "22"}, {"11", "12", "13", "21", "22", "23", "31", "32",
+                                                                     "33"}};
+    const int dim = s->x3 ? 3 : 2, nc = dim * dim;
     double(*rows[REPLICAS_MAX])[FIELDS];
-    int n[REPLICAS_MAX], rows_all = 0, k, i, c;
+    int n[REPLICAS_MAX], fcol[9], scol[9], rows_all = 0, nf = 0, k, i, c;
     char path[2 * SBC_NAME_LEN];
     FILE *fp;
     sbc_status st = SBC_OK;
+    for (c = 0; c < nc; ++c) { /* the columns of F and sigma in a results file of this dimension */
+        char name[16];
+        snprintf(name, sizeof name, "F%s", comps[dim - 2][c]);
+        fcol[c] = sbc_column_index(dim, name);
+        snprintf(name, sizeof name, "sigma%s", comps[dim - 2][c]);
+        scol[c] = sbc_column_index(dim, name);
+        nf = fcol[c] + 1 > nf ? fcol[c] + 1 : nf;
+        nf = scol[c] + 1 > nf ? scol[c] + 1 : nf;
+    }
     for (k = 0; k < K; ++k) {
         replica_name(s->settings.file, k, path, sizeof path);
-        n[k] = read_rows(path, &rows[k]);
+        n[k] = read_rows(path, nf, &rows[k]);
         if (n[k] < 0)
             n[k] = 0;
         rows_all = n[k] > rows_all ? n[k] : rows_all; /* the longest; each row over the replicas that reached it */
@@ -195,10 +222,13 @@ static sbc_status summarize(script *s, int K, char *summary, size_t size, int *r
         st = err->status;
         goto done;
     }
-    fprintf(fp, "increment,F11,F12,F21,F22,replicas");
-    for (c = 0; c < 4; ++c) {
-        static const char *const names[4] = {"sigma11", "sigma12", "sigma21", "sigma22"};
-        fprintf(fp, ",%s_mean,%s_std,%s_min,%s_max", names[c], names[c], names[c], names[c]);
+    fprintf(fp, "increment");
+    for (c = 0; c < nc; ++c)
+        fprintf(fp, ",F%s", comps[dim - 2][c]);
+    fprintf(fp, ",replicas");
+    for (c = 0; c < nc; ++c) {
+        const char *ij = comps[dim - 2][c];
+        fprintf(fp, ",sigma%s_mean,sigma%s_std,sigma%s_min,sigma%s_max", ij, ij, ij, ij);
     }
     fprintf(fp, "\n");
     for (i = 0; i < rows_all; ++i) {
@@ -208,13 +238,15 @@ static sbc_status summarize(script *s, int K, char *summary, size_t size, int *r
                 count++;
                 if (first < 0) first = k;
             }
-        fprintf(fp, "%d,%.17g,%.17g,%.17g,%.17g,%d", (int)rows[first][i][0], rows[first][i][1], rows[first][i][2],
-                rows[first][i][3], rows[first][i][4], count);
-        for (c = 9; c <= 12; ++c) { /* sigma11 .. sigma22: columns 10 .. 13 */
+        fprintf(fp, "%d", (int)rows[first][i][0]);
+        for (c = 0; c < nc; ++c)
+            fprintf(fp, ",%.17g", rows[first][i][fcol[c]]);
+        fprintf(fp, ",%d", count);
+        for (c = 0; c < nc; ++c) {
             double sum = 0.0, sq = 0.0, lo = HUGE_VAL, hi = -HUGE_VAL, mean;
             for (k = 0; k < K; ++k)
                 if (n[k] > i) {
-                    const double v = rows[k][i][c];
+                    const double v = rows[k][i][scol[c]];
                     sum += v;
                     lo = fmin(lo, v);
                     hi = fmax(hi, v);
@@ -222,7 +254,7 @@ static sbc_status summarize(script *s, int K, char *summary, size_t size, int *r
             mean = sum / count;
             for (k = 0; k < K; ++k)
                 if (n[k] > i)
-                    sq += (rows[k][i][c] - mean) * (rows[k][i][c] - mean);
+                    sq += (rows[k][i][scol[c]] - mean) * (rows[k][i][scol[c]] - mean);
             fprintf(fp, ",%.17g,%.6g,%.17g,%.17g", mean, count > 1 ? sqrt(sq / (count - 1)) : 0.0, lo, hi);
             if (count > 1)
                 *spread = fmax(*spread, hi - lo);
