@@ -73,37 +73,39 @@ static int number_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc
 
 /* Compressed columns of the nt triplets (ti, tj, tv) of an n x n matrix,
  * duplicates summed in the order given (a stable sort by row within each
- * column): colptr [n + 1], rows and vals [nt] are filled; their used length
- * is colptr[n]. */
-static void compress_columns(int n, long nt, const int *ti, const int *tj, const double *tv, int *colptr, int *rows,
-                             double *vals, int *next)
+ * column, by counting: the triplets bucketed by row, then dealt to their
+ * columns row by row): colptr [n + 1], rows and vals [nt] are filled; their
+ * used length is colptr[n]. next [n + 1] is workspace. 0 when out of memory. */
+static int compress_columns(int n, long nt, const int *ti, const int *tj, const double *tv, int *colptr, int *rows,
+                            double *vals, int *next)
 {
-    long t;
-    int c, at;
+    long t, *by_row = malloc(sizeof(long) * (size_t)(nt > 0 ? nt : 1));
+    int c, r, at;
+    if (!by_row)
+        return 0;
+    memset(next, 0, sizeof(int) * (size_t)(n + 1)); /* the triplets of each row, in the order given */
+    for (t = 0; t < nt; ++t)
+        next[ti[t] + 1]++;
+    for (r = 0; r < n; ++r)
+        next[r + 1] += next[r];
+    for (t = 0; t < nt; ++t)
+        by_row[next[ti[t]]++] = t;
     memset(colptr, 0, sizeof(int) * (size_t)(n + 1));
     for (t = 0; t < nt; ++t)
         colptr[tj[t] + 1]++;
     for (c = 0; c < n; ++c)
         colptr[c + 1] += colptr[c];
     memcpy(next, colptr, sizeof(int) * (size_t)n);
-    for (t = 0; t < nt; ++t) {
-        const int to = next[tj[t]]++;
-        rows[to] = ti[t];
-        vals[to] = tv[t];
+    for (t = 0; t < nt; ++t) { /* row by row: each column's entries sorted by row, ties in the order given */
+        const long from = by_row[t];
+        const int to = next[tj[from]]++;
+        rows[to] = ti[from];
+        vals[to] = tv[from];
     }
-    for (c = at = 0; c < n; ++c) { /* insertion sort of the column by row, then its duplicates summed */
+    free(by_row);
+    for (c = at = 0; c < n; ++c) { /* duplicates summed */
         const int begin = colptr[c], end = colptr[c + 1];
-        int k, m;
-        for (k = begin + 1; k < end; ++k) {
-            const int r = rows[k];
-            const double v = vals[k];
-            for (m = k; m > begin && rows[m - 1] > r; --m) {
-                rows[m] = rows[m - 1];
-                vals[m] = vals[m - 1];
-            }
-            rows[m] = r;
-            vals[m] = v;
-        }
+        int k;
         colptr[c] = at;
         for (k = begin; k < end; ++k) {
             if (at > colptr[c] && rows[at - 1] == rows[k])
@@ -115,6 +117,7 @@ static void compress_columns(int n, long nt, const int *ti, const int *tj, const
         }
     }
     colptr[n] = at;
+    return 1;
 }
 
 /* the rounds of mechanisms found by the sparse solve before the dense LU takes over */
@@ -175,7 +178,10 @@ static sbc_status solve_unknowns(int nu, long nt, const int *ti, const int *tj, 
         st = sbc_fail(err, SBC_ERR_NOMEM, "condensed tangent: out of memory for %ld stiffness entries", nt);
         goto done;
     }
-    compress_columns(nu, nt, ti, tj, tv, colptr, rows, vals, next);
+    if (!compress_columns(nu, nt, ti, tj, tv, colptr, rows, vals, next)) {
+        st = sbc_fail(err, SBC_ERR_NOMEM, "condensed tangent: out of memory for %ld stiffness entries", nt);
+        goto done;
+    }
     /* an unknown that nothing depends on and that depends on nothing (a rattler) is dropped with its equation;
        a column without entries whose equation has some (the rotation of a disc whose contacts all slide: its
        moment balance still binds the translations) is left to the pivots, which drop it with the equation
