@@ -327,6 +327,7 @@ bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangent
 	bash bench/newton_servo.sh $(B)/servo-bc tight
 	bash bench/remap_scaling.sh $(B)/servo-bc
 	bash bench/interior_scaling.sh $(B)/servo-bc
+	DIMENSION=3 bash bench/interior_scaling.sh $(B)/servo-bc
 	@$(MAKE) --no-print-directory lammps liggghts > $(B)/bench-hosts.log 2>&1 || \
 	  { echo "bench: LAMMPS or LIGGGHTS could not be built (see $(B)/bench-hosts.log)"; exit 0; }; \
 	  bash bench/lammps_overhead.sh $(B)/lmp_servo && \
