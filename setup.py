@@ -48,5 +48,5 @@ class BuildWithPaths(build_py):
 
 setup(name='servo_bc', version=version(),
       description='Boundary conditions on particle aggregates (DEM): the C API module and the YADE engine',
-      package_dir={'': 'yade_adapter'}, py_modules=['servo_bc_core', 'servo_bc'],
+      package_dir={'': 'yade_adapter'}, py_modules=['servo_bc_core', 'servo_bc', 'servo_bc_bonds'],
       cmdclass={'build_py': BuildWithPaths}, python_requires='>=3.7')

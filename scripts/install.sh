@@ -45,7 +45,7 @@ link "libservo_bc.so.$major" lib/libservo_bc.so
 put "$build/servo-bc" bin/servo-bc 755
 put "$build/servo-bc-plot" bin/servo-bc-plot 755
 # the Python modules (Debian's layout) and where they find the library
-for m in servo_bc_core servo_bc; do put "$top/yade_adapter/$m.py" "lib/python3/dist-packages/$m.py"; done
+for m in servo_bc_core servo_bc servo_bc_bonds; do put "$top/yade_adapter/$m.py" "lib/python3/dist-packages/$m.py"; done
 tmp=$(mktemp)
 trap 'rm -f "$tmp"' EXIT
 printf '"""Where make install put the servo_bc library (servo_bc_core.py reads it)."""\nLIBDIR = %s\n' \
