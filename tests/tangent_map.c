@@ -25,23 +25,28 @@ static int map_derivative(sbc_point *p, int dim, const double F[9], double h, do
     return 1;
 }
 
-double tangent_map_gap(sbc_point *p, int dim, int shear, int normal, double C[81], double D[81], sbc_error *err)
+double tangent_map_gap(const sbc_point_def *def, int shear, int normal, double C[81], double D[81], sbc_error *err)
 {
-    double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, P[9], ratio, num = 0.0, den = 0.0;
-    int k, mechanisms;
-    for (k = 1; k <= 4; ++k) { /* three committed shear steps, the fourth integrated */
+    double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, P[9], ratio, num = 0.0, den = 0.0, gap = -1.0;
+    int k, mechanisms, ok = 1;
+    sbc_point *p = sbc_point_create(def, err);
+    if (!p)
+        return -1.0;
+    for (k = 1; k <= 4 && ok; ++k) { /* three committed shear steps, the fourth integrated */
         F[normal] = 1.0 - 0.0005 * k;
         F[shear] = 0.001 * k;
-        if (sbc_point_integrate(p, F, P, &ratio, err) != SBC_POINT_CONVERGED)
-            return -1.0;
-        if (k < 4)
+        ok = sbc_point_integrate(p, F, P, &ratio, err) == SBC_POINT_CONVERGED;
+        if (ok && k < 4)
             sbc_point_commit(p);
     }
-    if (sbc_point_tangent_condensed(p, C, &mechanisms, err) != SBC_OK || !map_derivative(p, dim, F, 1e-7, D, err))
-        return -1.0;
-    for (k = 0; k < 81; ++k) {
-        num += (C[k] - D[k]) * (C[k] - D[k]);
-        den += D[k] * D[k];
+    if (ok && sbc_point_tangent_condensed(p, C, &mechanisms, err) == SBC_OK &&
+        map_derivative(p, def->dim, F, 1e-7, D, err)) {
+        for (k = 0; k < 81; ++k) {
+            num += (C[k] - D[k]) * (C[k] - D[k]);
+            den += D[k] * D[k];
+        }
+        gap = den > 0.0 ? sqrt(num / den) : -1.0;
     }
-    return den > 0.0 ? sqrt(num / den) : -1.0;
+    sbc_point_free(p);
+    return gap;
 }

@@ -193,25 +193,15 @@ static int frame_moves(const sbc_aggregate *a, const sbc_commands *cmd)
     return 0;
 }
 
-/* The committed springs in the form statics.h reads: 2D the component along
-   t = (-l_y, l_x) / |l| of the committed branch l (N), 3D the force on i (N) */
-static void committed_springs(const sbc_aggregate *a, const double *x0, int npair, int *ij0, double *fs0)
+/* 2D: each committed spring fv [3 npair] (the force on i) as statics.h reads it, its component along
+   t = (-l_y, l_x) / |l| of the committed branch l (N), into fs0 [npair] */
+static void springs_along_t(const double *x0, int npair, const int *i0, const int *j0, const double *fv, double *fs0)
 {
-    const int dim = a->frame->dim;
     int k;
     for (k = 0; k < npair; ++k) {
-        double fv[3];
-        int ij[2];
-        a->ops->pair(a->engine, k, ij, fv);
-        ij0[k] = ij[0];
-        ij0[npair + k] = ij[1];
-        if (dim == 3)
-            memcpy(&fs0[3 * k], fv, sizeof fv);
-        else {
-            const double *xa = &x0[2 * ij[0]], *xb = &x0[2 * ij[1]];
-            const double lx = xb[0] - xa[0], ly = xb[1] - xa[1], d = sqrt(lx * lx + ly * ly);
-            fs0[k] = d > 0.0 ? (-fv[0] * ly + fv[1] * lx) / d : 0.0;
-        }
+        const double *xa = &x0[2 * i0[k]], *xb = &x0[2 * j0[k]];
+        const double lx = xb[0] - xa[0], ly = xb[1] - xa[1], d = sqrt(lx * lx + ly * ly);
+        fs0[k] = d > 0.0 ? (-fv[3 * k] * ly + fv[3 * k + 1] * lx) / d : 0.0;
     }
 }
 
@@ -259,24 +249,32 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
                                  sbc_error *err)
 {
     const sbc_frame *f = a->frame;
-    const int n = a->n, dim = f->dim, rd = SBC_ROTATIONS(dim), npair = a->ops->pair_count(a->engine);
-    const int history = sbc_frictional_has_history(&a->law), cap = npair > 0 ? npair : 1;
+    const int n = a->n, dim = f->dim, rd = SBC_ROTATIONS(dim), history = sbc_frictional_has_history(&a->law);
     const size_t nx = (size_t)(dim * n), nt = (size_t)(rd * n);
     double *x0 = malloc(sizeof(double) * nx), *th0 = malloc(sizeof(double) * nt);
-    double *x = malloc(sizeof(double) * nx), *th = malloc(sizeof(double) * nt);
-    double *fs0 = malloc(sizeof(double) * (size_t)(dim == 3 ? 3 : 1) * (size_t)cap);
-    int *ij0 = malloc(sizeof(int) * 2 * (size_t)cap); /* i0 [npair], then j0 */
+    double *x = malloc(sizeof(double) * nx), *th = malloc(sizeof(double) * nt), *fv = NULL, *fs0 = NULL;
+    int *ij0 = NULL; /* the committed pairs: i0 [npair], then j0 */
+    sbc_network committed;
     sbc_statics_problem p;
     sbc_statics_result res;
     sbc_status st = SBC_OK;
     memset(&res, 0, sizeof res);
-    if (!x0 || !th0 || !x || !th || !fs0 || !ij0) {
+    if (!x0 || !th0 || !x || !th) {
         st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d particles", n);
         goto done;
     }
-    memcpy(x0, a->ops->centres(a->engine), sizeof(double) * nx);
+    if ((st = sbc_aggregate_network(a, &committed, &ij0, &fv, err)) != SBC_OK)
+        goto done;
+    memcpy(x0, committed.x, sizeof(double) * nx);
     memcpy(th0, a->ops->rotations(a->engine), sizeof(double) * nt);
-    committed_springs(a, x0, npair, ij0, fs0);
+    fs0 = fv; /* 3D: the spring vectors as they are */
+    if (dim == 2) {
+        if (!(fs0 = malloc(sizeof(double) * (size_t)(committed.npair > 0 ? committed.npair : 1)))) {
+            st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d pairs", committed.npair);
+            goto done;
+        }
+        springs_along_t(x0, committed.npair, committed.i, committed.j, fv, fs0);
+    }
     a->ops->move_frame(a->engine, cmd);
     memcpy(x, a->ops->centres(a->engine), sizeof(double) * nx);
     memcpy(th, a->ops->rotations(a->engine), sizeof(double) * nt);
@@ -288,14 +286,14 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
     p.frame = f;
     p.x0 = x0;
     p.theta0 = th0;
-    p.npair0 = npair;
+    p.npair0 = committed.npair;
     p.bc = a->settings->bc;
     p.rotation_zero = a->settings->rotation_zero;
     p.tol = SBC_STATICS_TOL;
     p.max_iterations = SBC_STATICS_ITERATIONS;
     p.fs0 = history ? fs0 : NULL;
-    p.i0 = ij0;
-    p.j0 = ij0 + npair;
+    p.i0 = committed.i;
+    p.j0 = committed.j;
     st = sbc_statics_solve(&p, x, th, &res, err);
     if (st == SBC_OK)
         st = a->ops->place(a->engine, x, th, res.records, history ? res.contacts : 0, err); /* no springs without friction */
@@ -309,7 +307,9 @@ done:
     free(th0);
     free(x);
     free(th);
-    free(fs0);
+    if (fs0 != fv)
+        free(fs0);
+    free(fv);
     free(ij0);
     return st;
 }

@@ -314,6 +314,19 @@ static int block_3d(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_
     return 1;
 }
 
+int sbc_pair_index(int npair, const int *i, const int *j, int a, int b)
+{
+    int lo = 0, hi = npair;
+    while (lo < hi) { /* the first pair not before (a, b) */
+        const int mid = lo + (hi - lo) / 2;
+        if (i[mid] < a || (i[mid] == a && j[mid] < b))
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < npair && i[lo] == a && j[lo] == b ? lo : -1;
+}
+
 int sbc_contact_block(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_BLOCK_MOST])
 {
     memset(B, 0, sizeof(double) * SBC_BLOCK_MOST * SBC_BLOCK_MOST);

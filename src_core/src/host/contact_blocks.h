@@ -29,6 +29,10 @@ void sbc_spring_3d_at(const double xi[3], const double xj[3], double Ri, double 
                       const double dthi[3], const double dthj[3], const double fs0[3], const sbc_frictional *law,
                       sbc_spring_3d *out);
 
+/* The index of pair (a, b), a < b, among npair pairs (i [npair], j [npair]) sorted by i then j; -1 when it is
+ * not among them (a committed contact state looked up from the current pair list). */
+int sbc_pair_index(int npair, const int *i, const int *j, int a, int b);
+
 /* d(loads)/d(dofs) of contact k of net over its particles' dofs (u_i, theta_i, u_j, theta_j), loads in the same
  * order (forces, moments); B is cleared first. Returns 0 for an open contact (B zero). */
 int sbc_contact_block(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_BLOCK_MOST]);

@@ -4,6 +4,7 @@
 #include "sbc/material_point.h"
 
 #include "aggregate.h"
+#include "condensed.h"
 #include "../base/sparse.h"
 #include "base/words.h"
 #include "sbc/controller.h"
@@ -34,9 +35,9 @@ struct sbc_point {
     double *committed;     /* [size] the committed state (sbc_point_save's layout) */
     double *x_committed;   /* [dim n] its centres, m (the condensed tangent's start of the increment) */
     double *theta_committed; /* 3D: [3n] its rotations, rad */
-    int *pairs_committed;    /* 3D: [2 cap] its pairs (i [cap], then j) */
-    double *fs_committed;    /* 3D: [3 cap] their springs, N */
-    int npair_committed, pair_cap;
+    int *pairs_committed;    /* 3D: [2 npair] its pairs (i [npair], then j: sbc_aggregate_network) */
+    double *fs_committed;    /* 3D: [3 npair] their springs, N */
+    int npair_committed;
     size_t size;
     int at_committed;      /* the engine and the controller hold the committed state */
     double F[9], P[9];     /* committed */
@@ -300,39 +301,26 @@ static int committed_room(sbc_point *p, size_t n)
 }
 
 /* where the next increment starts, from the engine that holds the committed state: its centres and, in 3D,
-   rotations and pairs with their springs (sbc_increment_start); 0 when out of memory (3D pairs then none) */
-static int keep_start(sbc_point *p)
+   rotations and pairs with their springs (sbc_increment_start) */
+static sbc_status keep_start(sbc_point *p, sbc_error *err)
 {
-    const int npair = p->frame.dim == 3 ? p->a.ops->pair_count(p->a.engine) : 0;
-    int k;
+    sbc_network net;
     memcpy(p->x_committed, p->a.ops->centres(p->a.engine), sizeof(double) * (size_t)(p->frame.dim * p->a.n));
-    p->npair_committed = 0;
     if (p->frame.dim != 3)
-        return 1;
+        return SBC_OK;
     memcpy(p->theta_committed, p->a.ops->rotations(p->a.engine), sizeof(double) * 3 * (size_t)p->a.n);
-    if (npair > p->pair_cap) {
-        int *ij = realloc(p->pairs_committed, sizeof *ij * 2 * (size_t)npair);
-        double *fs = ij ? realloc(p->fs_committed, sizeof *fs * 3 * (size_t)npair) : NULL;
-        if (ij)
-            p->pairs_committed = ij;
-        if (fs)
-            p->fs_committed = fs;
-        if (!ij || !fs)
-            return 0;
-        p->pair_cap = npair;
-    }
-    for (k = 0; k < npair; ++k) {
-        int ij[2];
-        p->a.ops->pair(p->a.engine, k, ij, &p->fs_committed[3 * k]);
-        p->pairs_committed[k] = ij[0];
-        p->pairs_committed[p->pair_cap + k] = ij[1];
-    }
-    p->npair_committed = npair;
-    return 1;
+    free(p->pairs_committed);
+    free(p->fs_committed);
+    p->npair_committed = 0;
+    if (sbc_aggregate_network(&p->a, &net, &p->pairs_committed, &p->fs_committed, err) != SBC_OK)
+        return err->status;
+    p->npair_committed = net.npair;
+    return SBC_OK;
 }
 
 sbc_status sbc_point_commit(sbc_point *p)
 {
+    sbc_error err;
     if (!p)
         return SBC_ERR_INPUT;
     if (!committed_room(p, current_size(p)))
@@ -341,8 +329,8 @@ sbc_status sbc_point_commit(sbc_point *p)
     memcpy(p->F, p->Fc, sizeof p->F);
     memcpy(p->P, p->Pc, sizeof p->P);
     save_current(p, p->F, p->P, p->committed);
-    if (!keep_start(p))
-        return SBC_ERR_NOMEM;
+    if (keep_start(p, &err) != SBC_OK)
+        return err.status;
     p->at_committed = 1;
     return SBC_OK;
 }
@@ -402,10 +390,10 @@ sbc_status sbc_point_load(sbc_point *p, const double *in, size_t n, sbc_error *e
         return sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory for a state of %zu values", n);
     }
     memcpy(p->committed, in, sizeof(double) * n);
-    if (!keep_start(p)) {
+    if (keep_start(p, err) != SBC_OK) {
         p->at_committed = 0;
         sbc_point_revert(p);
-        return sbc_fail(err, SBC_ERR_NOMEM, "material point: out of memory for the committed contacts");
+        return err->status;
     }
     memcpy(p->F, F, sizeof F);
     memcpy(p->P, P, sizeof P);
@@ -595,7 +583,7 @@ sbc_status sbc_point_tangent_condensed(sbc_point *p, double C[81], int *mechanis
     start.theta = p->theta_committed;
     start.npair = p->npair_committed;
     start.i = p->pairs_committed;
-    start.j = p->pairs_committed ? p->pairs_committed + p->pair_cap : NULL;
+    start.j = p->pairs_committed ? p->pairs_committed + p->npair_committed : NULL;
     start.fs = p->fs_committed;
     return sbc_aggregate_condensed(&p->a, &start, C, mechanisms, err);
 }

@@ -37,7 +37,6 @@
 typedef struct statics_work {
     const sbc_statics_problem *p;
     sbc_pairs cand;          /* candidate pairs, within reach at the last build */
-    int *start0;             /* [n + 1] the committed pairs of disc i: start0[i] .. start0[i + 1] - 1 */
     int dim, rd, nd;         /* 2 or 3; rotations per particle (1 or 3); dofs per particle */
     double *fs;              /* [cand capacity] 2D: the springs of the iterate along t (N) */
     double *fsv;             /* [3 cand capacity] ... as vectors in the contact plane (condensed.h's sbc_network) */
@@ -62,15 +61,7 @@ typedef struct statics_work {
 /* the committed pair (a, b), a < b: its index, -1 for a pair that was not committed */
 static int committed_pair(const statics_work *w, int a, int b)
 {
-    int lo = w->start0[a], hi = w->start0[a + 1];
-    while (lo < hi) {
-        const int mid = lo + (hi - lo) / 2;
-        if (w->p->j0[mid] < b)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo < w->start0[a + 1] && w->p->j0[lo] == b ? lo : -1;
+    return sbc_pair_index(w->p->npair0, w->p->i0, w->p->j0, a, b);
 }
 
 /* 3D: candidate k's contact at (x, theta), its loads added to w->res; returns |f| (N), or -1 when open */
@@ -251,7 +242,6 @@ static sbc_status keep_candidates(statics_work *w, const double *x, sbc_error *e
 static void work_free(statics_work *w)
 {
     sbc_pairs_free(&w->cand);
-    free(w->start0);
     free(w->fs);
     free(w->fsv);
     free(w->fs0c);
@@ -282,14 +272,13 @@ static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_e
     }
     for (k = 0; k < w->dim * p->n; ++k)
         w->xmax = fmax(w->xmax, fabs(p->x0[k]));
-    w->start0 = calloc(n + 1, sizeof(int));
     w->res = malloc(sizeof(double) * (size_t)w->nd * n);
     w->unk = malloc(sizeof(int) * (size_t)w->nd * n);
     w->xt = malloc(sizeof(double) * (size_t)w->dim * n);
     w->tt = malloc(sizeof(double) * (size_t)w->rd * n);
     w->lambda = calloc(12, sizeof(double));
     w->xe = malloc(sizeof(double) * (size_t)w->dim * n);
-    if (!w->start0 || !w->res || !w->unk || !w->xt || !w->tt || !w->lambda || !w->xe)
+    if (!w->res || !w->unk || !w->xt || !w->tt || !w->lambda || !w->xe)
         return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d discs", p->n);
     {
         sbc_network net;
@@ -317,10 +306,7 @@ static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_e
             (p->i0[k] == p->i0[k - 1] && p->j0[k] <= p->j0[k - 1]))))
             return sbc_fail(err, SBC_ERR_INPUT, "interior newton: committed pair %d (%d, %d) is out of order", k,
                             p->i0[k], p->j0[k]);
-        w->start0[p->i0[k] + 1]++;
     }
-    for (i = 0; i < p->n; ++i)
-        w->start0[i + 1] += w->start0[i];
     /* reach: the pairs within a smallest radius of touching */
     return sbc_pairs_init(&w->cand, w->dim, p->n, w->rmin, 0, 0, err);
 }
@@ -381,8 +367,8 @@ static void move(statics_work *w, const double *x, const double *theta, double a
  * after the frame's move (its interior still at x0), overwritten. */
 static void affine_start(const sbc_frame *f, int dim, int n, const double *x0, double *x)
 {
-    double co[3] = {0, 0, 0}, cn[3] = {0, 0, 0}, A[3][3] = {{0}}, B[3][3] = {{0}}, M[3][3], adj[3][3], det;
-    int q, i, k, l, m;
+    double co[3] = {0, 0, 0}, cn[3] = {0, 0, 0}, A[9] = {0}, B[9] = {0}, M[9];
+    int q, i, k, l;
     unsigned char *in_frame = calloc((size_t)n, 1);
     if (!in_frame || f->n < dim + 1)
         goto done;
@@ -398,45 +384,24 @@ static void affine_start(const sbc_frame *f, int dim, int n, const double *x0, d
         const int p = f->particle[q];
         for (k = 0; k < dim; ++k)
             for (l = 0; l < dim; ++l) {
-                A[k][l] += (x[dim * p + k] - cn[k]) * (x0[dim * p + l] - co[l]);
-                B[k][l] += (x0[dim * p + k] - co[k]) * (x0[dim * p + l] - co[l]);
+                A[SBC_IJ(k, l)] += (x[dim * p + k] - cn[k]) * (x0[dim * p + l] - co[l]);
+                B[SBC_IJ(k, l)] += (x0[dim * p + k] - co[k]) * (x0[dim * p + l] - co[l]);
             }
     }
-    if (dim == 2) {
-        det = B[0][0] * B[1][1] - B[0][1] * B[1][0];
-        adj[0][0] = B[1][1];
-        adj[0][1] = -B[0][1];
-        adj[1][0] = -B[1][0];
-        adj[1][1] = B[0][0];
-    } else {
-        for (k = 0; k < 3; ++k) /* adj = cofactors transposed */
-            for (l = 0; l < 3; ++l)
-                adj[l][k] = B[(k + 1) % 3][(l + 1) % 3] * B[(k + 2) % 3][(l + 2) % 3] -
-                            B[(k + 1) % 3][(l + 2) % 3] * B[(k + 2) % 3][(l + 1) % 3];
-        det = B[0][0] * adj[0][0] + B[0][1] * adj[1][0] + B[0][2] * adj[2][0];
-    }
-    if (!(fabs(det) > 0.0))
+    if (!sbc_tensor_right_divide(dim, A, B, M)) /* M = A B^-1 */
         goto done;
-    for (k = 0; k < dim; ++k) /* M = A B^-1 = A adj / det */
-        for (l = 0; l < dim; ++l) {
-            double sum = 0.0;
-            for (m = 0; m < dim; ++m)
-                sum += A[k][m] * adj[m][l];
-            M[k][l] = sum / det;
-        }
     for (i = 0; i < n; ++i)
         if (!in_frame[i])
             for (k = 0; k < dim; ++k) {
                 double y = cn[k];
                 for (l = 0; l < dim; ++l)
-                    y += M[k][l] * (x0[dim * i + l] - co[l]);
+                    y += M[SBC_IJ(k, l)] * (x0[dim * i + l] - co[l]);
                 x[dim * i + k] = y;
             }
 done:
     free(in_frame);
 }
 
-/* one solve from p's committed state (sbc_statics_solve, without the substeps) */
 /* the contact network of the iterate x for a Newton step under the pseudo-time term shift (of kn) */
 static void network_at(sbc_network *net, const statics_work *w, const sbc_statics_problem *p, double *x,
                        const double *theta, double shift)
@@ -451,6 +416,7 @@ static void network_at(sbc_network *net, const statics_work *w, const sbc_static
     net->fs0 = p->fs0 ? w->fs0c : NULL;
 }
 
+/* one solve from p's committed state (sbc_statics_solve, without the substeps) */
 static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
                              sbc_error *err)
 {

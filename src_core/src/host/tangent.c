@@ -2,6 +2,7 @@
  * affine, condensed and by perturbation. */
 #include "aggregate.h"
 #include "condensed.h"
+#include "contact_blocks.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -58,20 +59,11 @@ sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], doubl
 /* the committed spring of each current pair of net (zero for a pair that was not committed), [3 npair] */
 static void springs_at_start(const sbc_network *net, const sbc_increment_start *start, double *fs0)
 {
-    int k;
+    int k, q;
     for (k = 0; k < net->npair; ++k) {
-        int lo = 0, hi = start->npair;
-        while (lo < hi) { /* the first committed pair not before (i, j) */
-            const int mid = lo + (hi - lo) / 2;
-            if (start->i[mid] < net->i[k] || (start->i[mid] == net->i[k] && start->j[mid] < net->j[k]))
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        if (lo < start->npair && start->i[lo] == net->i[k] && start->j[lo] == net->j[k])
-            memcpy(&fs0[3 * k], &start->fs[3 * lo], sizeof(double) * 3);
-        else
-            fs0[3 * k] = fs0[3 * k + 1] = fs0[3 * k + 2] = 0.0;
+        const int c = sbc_pair_index(start->npair, start->i, start->j, net->i[k], net->j[k]);
+        for (q = 0; q < 3; ++q)
+            fs0[3 * k + q] = c >= 0 ? start->fs[3 * c + q] : 0.0;
     }
 }
 
