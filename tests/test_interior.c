@@ -19,7 +19,10 @@
  *   derivative) to 1e-4 of |C|.
  * - Four frictional points sheared in a batch on 1 and 2 threads: the same
  *   bits.
- * - Refusals by name: mixed, remap x, speed > 0, cohesive bonds,
+ * - The mixed layer (its T components moved by the servo between static
+ *   solves) on the frictional packing: every row certified with P22 =
+ *   P22*, the same bytes in two runs; on the lattice, test_mixed.c.
+ * - Refusals by name: remap x, speed > 0, cohesive bonds,
  *   a host driver that does not solve its interior. */
 #include "check.h"
 #include "csv_read.h"
@@ -244,6 +247,41 @@ static void frictional_irregular(void)
     }
 }
 
+/* the mixed layer (bottom D D, sides P P, top D T) on the frictional 55 discs, its stress P22* = -20 N/m held from
+   increment 0, sheared by F12 = 0.003 in 2 increments: every row certified with P22 = P22*, the same bytes in two
+   runs (the T components moved by the servo between static solves) */
+static void mixed_layer(void)
+{
+    static double rows[8][CSV_COLS];
+    char path[512], script[1024], full[1024], csv[2][512];
+    long solves = 0, steps = 0;
+    int r, k, n = -1;
+    if (!packing_path(path, sizeof path)) {
+        CHECK(0);
+        return;
+    }
+    snprintf(script, sizeof script, irregular, path);
+    snprintf(full, sizeof full, script, "ks 5e3 mu 0.5", "%s", "%s");
+    for (r = 0; r < 2; ++r) {
+        char tag[32];
+        snprintf(tag, sizeof tag, "mixed_%d", r);
+        n = run_case(tag, full, "mixed F 1 0.003 0 1 increments 2 stress P22 -20 0 accuracy tight interior newton",
+                     rows, 8, csv[r], sizeof csv[r]);
+        CHECK(n == 3);
+    }
+    CHECK(same_bytes(csv[0], csv[1]));
+    for (k = 0; k < n; ++k) {
+        CHECK_REL(rows[k][COL("P22")], -20.0, 1e-4);
+        CHECK(fabs(rows[k][COL("hill_mandel")]) <= 1e-6 && rows[k][COL("unbalanced")] <= 1e-7 &&
+              rows[k][COL("newton_iterations")] > 0.0);
+        solves += (long)rows[k][COL("iterations")];
+        steps += (long)rows[k][COL("relax_steps")];
+    }
+    printf("  interior: mixed layer on the frictional 55 discs, newton: %d certified rows (P22 %.6f N/m at F12 = "
+           "0.003), %ld servo iterations and %ld DEM steps, two runs %s\n", n, n == 3 ? rows[2][COL("P22")] : 0.0,
+           solves, steps, same_bytes(csv[0], csv[1]) ? "byte for byte" : "DIFFER");
+}
+
 static void consistent_tangent(void)
 {
     const char *words[2] = {"D accuracy tight interior newton", "P accuracy tight interior newton"};
@@ -334,12 +372,13 @@ static void refusals(void)
 {
     sbc_settings s;
     sbc_error err;
-    CHECK(sbc_settings_parse_words(&s, "mixed interior newton", &err) == SBC_ERR_INPUT &&
-          strstr(err.message, "keyword 'interior': newton takes D, P and T") != NULL);
+    CHECK(sbc_settings_parse_words(&s, "mixed stress P22 -1 2 interior newton", &err) == SBC_OK && s.interior == SBC_INTERIOR_NEWTON);
     CHECK(sbc_settings_parse_words(&s, "P interior newton remap x", &err) == SBC_ERR_INPUT &&
           strstr(err.message, "keyword 'remap'") != NULL);
     CHECK(sbc_settings_parse_words(&s, "P speed 0.01 interior newton", &err) == SBC_ERR_INPUT &&
           strstr(err.message, "keyword 'speed'") != NULL);
+    CHECK(sbc_settings_parse_words(&s, "mixed stress P22 -1 2 seal yes interior newton", &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "keyword 'seal': yes puts walls") != NULL);
     CHECK(sbc_settings_parse_words(&s, "P interior sideways", &err) == SBC_ERR_INPUT &&
           strstr(err.message, "keyword 'interior': value 'sideways' is not valid (expected dynamic or newton)"));
     CHECK(sbc_settings_parse_words(&s, "T interior newton", &err) == SBC_OK && s.interior == SBC_INTERIOR_NEWTON &&
@@ -374,6 +413,7 @@ void test_interior(void)
     lattices();
     frictionless_irregular();
     frictional_irregular();
+    mixed_layer();
     consistent_tangent();
     threads();
     refusals();

@@ -10,7 +10,8 @@
  *   most two Newton iterations an increment; the touching frictionless
  *   lattice under (T), P_ii = -kn (1 - F_ii) (N - 1)^2 / (d (N - 3/2)^2), to
  *   1e-5; every solve converged (its overlaps of 4e-9 m are at the
- *   round-off floor of statics.c's attainable).
+ *   round-off floor of statics.c's attainable). The 3D layer (mixed) on the
+ *   touching lattice: its stress stage's closed form to 1e-9.
  * - An irregular packing (71 spheres) without friction, one equilibrium:
  *   newton equals dynamic under (D) to 1e-6 of the stress scale.
  * - The same packing with friction under (D) and (P) at `tight`: every solve
@@ -202,6 +203,36 @@ static void lattices(void)
     }
 }
 
+/* The 3D layer (zlo D D D, zhi D D T, the side faces P P P) on the touching frictionless 4^3 lattice under a
+ * stress stage to P33* = -1e4 N/m^2 in 2 increments: F33 = 1 - p d (N - 3/2)^2 / (kn (N - 1)^2) (test_frame3d.c's
+ * closed form) and P33 = P33* at its end, P33* / 2 half way, every static solve converged (the T components moved by
+ * the servo between them) */
+static void layer(void)
+{
+    const double N = 4.0, d = 2e-3, kn = 1e4, p = 1e4, F33 = 1.0 - p * d * (N - 1.5) * (N - 1.5) / (kn * (N - 1.0) * (N - 1.0));
+    static double rows[5][SBC_COLUMNS];
+    char csv[512];
+    double solves = 0.0;
+    int n, k;
+    n = run_3d("layer", "dimension 3\nlattice cubic 4 4 4 spacing 2e-3 radius 1e-3\ncontact frictional kn 1e4 ks 0 mu 0\n"
+               "density 224962.886\ntimestep 1e-5\nservo_bc mixed F 1 0 0 0 1 0 0 0 1 increments 1 stress P33 -1e4 2 "
+               "accuracy tight tol_relative 1e-10 interior newton file %s\nrun\n", rows, 5, csv, sizeof csv);
+    CHECK(n == 4);
+    if (n != 4)
+        return;
+    CHECK(fabs(rows[2][COL3("F33")] - F33) <= 1e-9 * (1.0 - F33));
+    CHECK(fabs(rows[2][COL3("P33")] + p) <= 1e-9 * p && fabs(rows[1][COL3("P33")] + 0.5 * p) <= 1e-9 * p);
+    for (k = 1; k <= 2; ++k) {
+        CHECK(rows[k][COL3("newton_iterations")] > 0.0 &&
+              rows[k][COL3("relax_steps")] <= 20.0 * (rows[k][COL3("iterations")] + 1.0));
+        CHECK(fabs(rows[k][COL3("hill_mandel")]) <= 1e-6);
+        solves += rows[k][COL3("iterations")];
+    }
+    printf("  interior spheres: 3D layer on the touching 4^3 lattice, newton: 1 - F33 = %.9e after the stress stage "
+           "(closed form %.9e), P33 %.6f N/m^2, %g servo iterations, each a converged static solve\n",
+           1.0 - rows[2][COL3("F33")], 1.0 - F33, rows[2][COL3("P33")], solves);
+}
+
 static int same_bytes(const char *a, const char *b)
 {
     FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
@@ -321,6 +352,7 @@ void test_interior_spheres(void)
 {
     block_derivative();
     lattices();
+    layer();
     irregular();
     consistent_tangent();
 }

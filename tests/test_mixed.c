@@ -121,12 +121,12 @@ static void lattice_layer(void)
 {
     static const char *const words = "servo_bc mixed F 1 0.01 0 1 increments 2 stress P22 -100 2 accuracy tight "
                                      "tol_relative 1e-11";
-    static double rows[2][8][CSV_COLS];
-    char csv[2][512], packing[512], script[1024];
+    static double rows[3][8][CSV_COLS];
+    char csv[3][512], packing[512], script[1024];
     sbc_packing p;
     sbc_error err;
-    int k, c, n[2];
-    double worst = 0.0, hm = 0.0;
+    int k, c, n[3];
+    double worst = 0.0, hm = 0.0, apart = 0.0, solved = 0.0;
     CHECK(sbc_packing_lattice_square(&p, 6, 6, 0.001953125, 0.0009765625, &err) == SBC_OK);
     for (k = 0; k < p.n; ++k) {
         p.x[2 * k] += 0.0078125;
@@ -135,21 +135,21 @@ static void lattice_layer(void)
     snprintf(packing, sizeof packing, "%s/layer_shifted.txt", test_tmpdir);
     CHECK(sbc_packing_write_text(&p, packing, &err) == SBC_OK);
     sbc_packing_free(&p);
-    for (k = 0; k < 2; ++k) {
+    for (k = 0; k < 3; ++k) { /* the lattice, the lattice translated, the lattice with interior newton */
         char source[600];
         snprintf(csv[k], sizeof csv[k], "%s/layer%d.csv", test_tmpdir, k);
-        if (k == 0)
+        if (k != 1)
             snprintf(source, sizeof source, "lattice square 6 6 spacing 0.001953125 radius 0.0009765625");
         else
             snprintf(source, sizeof source, "read_packing %s", packing);
         snprintf(script, sizeof script,
-                 "dimension 2\n%s\ncontact frictional kn 1e4 ks 0 mu 0\ndensity 2e3\ntimestep 1e-5\n%s file %s\nrun\n",
-                 source, words, csv[k]);
+                 "dimension 2\n%s\ncontact frictional kn 1e4 ks 0 mu 0\ndensity 2e3\ntimestep 1e-5\n%s%s file %s\n"
+                 "run\n", source, words, k == 2 ? " interior newton" : "", csv[k]);
         CHECK(sbc_script_run_string(script, "layer", NULL, &err) == SBC_OK);
         n[k] = csv_read(csv[k], rows[k], 8);
         CHECK(n[k] == 5);
     }
-    if (n[0] != 5 || n[1] != 5)
+    if (n[0] != 5 || n[1] != 5 || n[2] != 5)
         return;
     CHECK_REL(rows[0][2][COL("F22")], 1.0 - 100.0 * 4.5 / (1e4 * 5.0), 1e-9); /* F22 = 0.991 */
     CHECK_REL(rows[0][2][COL("P22")], -100.0, 1e-9);
@@ -161,12 +161,21 @@ static void lattice_layer(void)
         for (c = 1; c <= 12; ++c) { /* F, P and sigma, against the stress scale 100 N/m or 1 */
             double d = fabs(rows[0][k][c] - rows[1][k][c]) / (c <= 4 ? 1.0 : 100.0);
             if (d > worst) worst = d;
+            apart = fmax(apart, fabs(rows[0][k][c] - rows[2][k][c]) / (c <= 4 ? 1.0 : 100.0));
         }
+    }
+    for (k = 1; k <= 2; ++k) { /* the stress stage's static solves converged: no relaxation beyond the 20
+                                  certifying steps of each servo iteration */
+        solved += rows[2][k][COL("newton_iterations")];
+        CHECK(rows[2][k][COL("relax_steps")] <= 20.0 * (rows[2][k][COL("iterations")] + 1.0));
     }
     CHECK(hm <= 1e-6);
     CHECK(worst <= 1e-9);
+    CHECK(solved > 0.0 && fabs(rows[2][2][COL("F22")] - rows[0][2][COL("F22")]) <= 1e-9 * (1.0 - rows[0][2][COL("F22")]));
+    CHECK(apart <= 1e-9); /* interior newton against dynamic, every increment */
     printf("  mixed lattice layer: F22 %.12f after the stress stage, P22 %.9f N/m at F12 = 0.01, Hill-Mandel <= %.1e, "
-           "translated layer %.1e apart\n", rows[0][2][COL("F22")], rows[0][4][COL("P22")], hm, worst);
+           "translated layer %.1e apart; interior newton %.1e from dynamic (%g Newton iterations in the stress "
+           "stage)\n", rows[0][2][COL("F22")], rows[0][4][COL("P22")], hm, worst, apart, solved);
 }
 
 /* The same layer with `stress P22 -100 0`: the stress held from increment

@@ -254,6 +254,7 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
     double *x0 = malloc(sizeof(double) * nx), *th0 = malloc(sizeof(double) * nt);
     double *x = malloc(sizeof(double) * nx), *th = malloc(sizeof(double) * nt), *fv = NULL, *fs0 = NULL;
     int *ij0 = NULL; /* the committed pairs: i0 [npair], then j0 */
+    unsigned char *mode = NULL;
     sbc_network committed;
     sbc_statics_problem p;
     sbc_statics_result res;
@@ -262,6 +263,17 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
     if (!x0 || !th0 || !x || !th) {
         st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d particles", n);
         goto done;
+    }
+    if (a->settings->bc == SBC_BC_MIXED) { /* D and P components; a T one held at its command, the servo's */
+        int k;
+        if (!(mode = malloc(3 * (size_t)f->n))) {
+            st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for a frame of %d", f->n);
+            goto done;
+        }
+        sbc_mixed_modes(f, a->settings, mode);
+        for (k = 0; k < 3 * f->n; ++k)
+            if (mode[k] == SBC_MODE_T)
+                mode[k] = SBC_MODE_D;
     }
     if ((st = sbc_aggregate_network(a, &committed, &ij0, &fv, err)) != SBC_OK)
         goto done;
@@ -289,6 +301,8 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
     p.npair0 = committed.npair;
     p.bc = a->settings->bc;
     p.rotation_zero = a->settings->rotation_zero;
+    p.mode = mode;
+    p.free_rotation = mode ? cmd->free_rotation : NULL;
     p.tol = SBC_STATICS_TOL;
     p.max_iterations = SBC_STATICS_ITERATIONS;
     p.fs0 = history ? fs0 : NULL;
@@ -311,6 +325,7 @@ done:
         free(fs0);
     free(fv);
     free(ij0);
+    free(mode);
     return st;
 }
 

@@ -51,9 +51,9 @@ static int number_unknowns(const sbc_network *net, const sbc_frame *f, sbc_bc bc
                 z0[(long)kl * ndof + nd * p0 + c] = c == kl / dim ? f->X[3 * q + kl % dim] : 0.0;
         if (size == 0)
             continue; /* a later member of a family */
-        if (size < 0) {
+        if (size < 0) { /* follows its commands; a free rotation is solved for (interior newton, mixed) */
             for (c = 0; c < nd; ++c)
-                unk[nd * p0 + c] = -1;
+                unk[nd * p0 + c] = c >= dim && net->free_rotation && net->free_rotation[q] ? count++ : -1;
             continue;
         }
         for (m = 0; m < size; ++m) {

@@ -37,6 +37,9 @@ typedef struct sbc_network {
     int frame_rotation_zero;   /* (T) with `rotation zero`: the frame's rotations held at zero */
     double border;             /* (T): the scale of the multipliers' rows and columns, N/m; 0: the largest
                                   contact stiffness entry (interior newton fixes it over its iterations) */
+    const unsigned char *free_rotation; /* interior newton, mixed: [Q] 1 where a frame particle that follows its
+                                           commands has its rotations free (the host's free rotations, a T
+                                           component's): unknowns of the solve; NULL: held */
     double shift;              /* interior newton's pseudo-time term (statics.h), N/m: taken from the diagonal of
                                   each translation's unknown, times R^2 from each rotation's; 0 otherwise */
 } sbc_network;

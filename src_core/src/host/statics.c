@@ -98,61 +98,60 @@ static double contact_3d(statics_work *w, int k, const double *x, const double *
     return sqrt(sbc_dot3(f, f));
 }
 
+/* 2D: candidate k's contact at (x, theta), its loads added to w->res; returns |f| (N), or -1 when open */
+static double contact_2d(statics_work *w, int k, const double *x, const double *theta)
+{
+    const sbc_statics_problem *p = w->p;
+    const int a = w->cand.i[k], b = w->cand.j[k];
+    const double lx = x[2 * b] - x[2 * a], ly = x[2 * b + 1] - x[2 * a + 1], rs = p->r[a] + p->r[b];
+    const double d2 = lx * lx + ly * ly;
+    double d, nx, ny, dn, fn, fs = 0.0, fx, fy;
+    w->fs[k] = 0.0;
+    w->fsv[3 * k] = w->fsv[3 * k + 1] = w->fsv[3 * k + 2] = 0.0;
+    if (d2 >= rs * rs)
+        return -1.0; /* open: the spring is lost */
+    d = sqrt(d2);
+    nx = lx / d;
+    ny = ly / d;
+    dn = rs - d;
+    if (p->fs0) { /* the spring from its committed value by the increment's slip, capped (eq. 6) */
+        double g[2];
+        const double slip = sbc_path_slip(&p->x0[2 * a], &p->x0[2 * b], lx, ly, g) -
+                            (p->r[a] * (theta[a] - p->theta0[a]) + p->r[b] * (theta[b] - p->theta0[b]));
+        const int c0 = committed_pair(w, a, b);
+        fs = c0 >= 0 ? p->fs0[c0] : 0.0;
+        fn = sbc_frictional_force(&p->law, dn, slip, &fs, NULL);
+    } else
+        fn = p->law.kn * dn;
+    w->fs[k] = fs;
+    w->fsv[3 * k] = -fs * ny; /* fs t, t = (-n_y, n_x) */
+    w->fsv[3 * k + 1] = fs * nx;
+    fx = -fn * nx - fs * ny; /* the force on a: -fn n + fs t */
+    fy = -fn * ny + fs * nx;
+    w->res[3 * a] += fx;
+    w->res[3 * a + 1] += fy;
+    w->res[3 * a + 2] += p->r[a] * fs;
+    w->res[3 * b] -= fx;
+    w->res[3 * b + 1] -= fy;
+    w->res[3 * b + 2] += p->r[b] * fs;
+    return sqrt(fn * fn + fs * fs);
+}
+
 /* net loads on every dof at (x, theta), the springs of the end state by
    backward Euler (statics.h); returns the merit: the sum over free dofs of
    the squared net forces and net moments over R (N^2) */
 static double evaluate(statics_work *w, const double *x, const double *theta)
 {
     const sbc_statics_problem *p = w->p;
-    const sbc_frictional *law = &p->law;
     double sum_f = 0.0, merit = 0.0;
     int k, q;
     memset(w->res, 0, sizeof(double) * (size_t)w->nd * (size_t)p->n);
     w->contacts = 0;
     for (k = 0; k < w->cand.count; ++k) {
-        const int a = w->cand.i[k], b = w->cand.j[k];
-        if (w->dim == 3) {
-            const double f = contact_3d(w, k, x, theta);
-            if (f >= 0.0) {
-                sum_f += f;
-                ++w->contacts;
-            }
-            continue;
-        }
-        {
-        const double lx = x[2 * b] - x[2 * a], ly = x[2 * b + 1] - x[2 * a + 1], rs = p->r[a] + p->r[b];
-        const double d2 = lx * lx + ly * ly;
-        double d, nx, ny, dn, fn, fs = 0.0, fx, fy;
-        w->fs[k] = 0.0;
-        w->fsv[3 * k] = w->fsv[3 * k + 1] = w->fsv[3 * k + 2] = 0.0;
-        if (d2 >= rs * rs)
-            continue; /* open: the spring is lost */
-        d = sqrt(d2);
-        nx = lx / d;
-        ny = ly / d;
-        dn = rs - d;
-        if (p->fs0) { /* the spring from its committed value by the increment's slip, capped (eq. 6) */
-            double g[2];
-            const double slip = sbc_path_slip(&p->x0[2 * a], &p->x0[2 * b], lx, ly, g) -
-                                (p->r[a] * (theta[a] - p->theta0[a]) + p->r[b] * (theta[b] - p->theta0[b]));
-            const int c0 = committed_pair(w, a, b);
-            fs = c0 >= 0 ? p->fs0[c0] : 0.0;
-            fn = sbc_frictional_force(law, dn, slip, &fs, NULL);
-        } else
-            fn = law->kn * dn;
-        w->fs[k] = fs;
-        w->fsv[3 * k] = -fs * ny; /* fs t, t = (-n_y, n_x) */
-        w->fsv[3 * k + 1] = fs * nx;
-        fx = -fn * nx - fs * ny; /* the force on a: -fn n + fs t */
-        fy = -fn * ny + fs * nx;
-        w->res[3 * a] += fx;
-        w->res[3 * a + 1] += fy;
-        w->res[3 * a + 2] += p->r[a] * fs;
-        w->res[3 * b] -= fx;
-        w->res[3 * b + 1] -= fy;
-        w->res[3 * b + 2] += p->r[b] * fs;
-        sum_f += sqrt(fn * fn + fs * fs);
-        ++w->contacts;
+        const double f = w->dim == 3 ? contact_3d(w, k, x, theta) : contact_2d(w, k, x, theta);
+        if (f >= 0.0) {
+            sum_f += f;
+            ++w->contacts;
         }
     }
     w->mean_force = w->contacts ? sum_f / w->contacts : 0.0;
@@ -286,6 +285,8 @@ static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_e
         net.dim = w->dim;
         net.n = p->n;
         net.frame_rotation_zero = p->bc == SBC_BC_T && p->rotation_zero;
+        net.mode = p->mode;
+        net.free_rotation = p->free_rotation;
         if ((w->L = sbc_condensed_unknowns(&net, p->frame, p->bc, w->unk, err)) < 0)
             return err->status;
     }
@@ -440,6 +441,8 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
     net.theta0 = w.dim == 3 ? p->theta0 : NULL;
     net.border = w.border;
     net.frame_rotation_zero = p->bc == SBC_BC_T && p->rotation_zero;
+    net.mode = p->mode;
+    net.free_rotation = p->free_rotation;
     merit = evaluate(&w, x, theta);
     res->residual = relative_residual(&w);
     for (it = 0; it < p->max_iterations && !(res->residual <= attainable(&w)); ++it) {

@@ -39,7 +39,11 @@ typedef struct sbc_statics_problem {
     const double *r;            /* [n] radii, m */
     sbc_frictional law;         /* eq. 6 */
     const sbc_frame *frame;     /* the aggregate's frame */
-    sbc_bc bc;                  /* D, P or T (rotation_zero: T's frame rotations held) */
+    sbc_bc bc;                  /* D, P, T (rotation_zero: T's frame rotations held) or mixed */
+    const unsigned char *mode;  /* mixed: [3 Q] the frame's component modes, D or P (a T component is held at its
+                                   command: the servo moves it between solves); NULL otherwise */
+    const unsigned char *free_rotation; /* [Q] frame particles whose rotations are unknowns although they follow
+                                           their commands (mixed: the host's free rotations); NULL: none */
     int rotation_zero;
     const double *x0, *theta0;  /* [dim n], [n] (2D) or [3n] (3D) the committed centres (m) and rotations (rad) */
     int npair0;                 /* the committed pairs, sorted by i then j, i < j */

@@ -122,8 +122,8 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
     {"interior",
      "`dynamic` or `newton`",
      "how the interior reaches each new position of the frame: `dynamic`, relaxation by the host's dynamics "
-         "with damping; `newton` (embedded runner, discs and spheres; D, P, T): the static equilibrium at the frame's "
-         "commands, the contact laws integrated over the increment by backward Euler and solved by Newton on "
+         "with damping; `newton` (embedded runner, discs and spheres; D, P, T, mixed): the static equilibrium at the "
+         "frame's commands, the contact laws integrated over the increment by backward Euler and solved by Newton on "
          "the contact network's stiffness, then certified as every row (see \"Interior\"); the frame jumps "
          "to its commands (`speed 0`, `remap none`); hosts refuse it",
      "dynamic"},

@@ -465,9 +465,9 @@ static sbc_status parse_pass(sbc_settings *s, int nwords, const char *const *wor
             st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'speed': %g; under interior newton the frame jumps to its "
                           "commands and the interior is solved there (expected speed 0, or interior dynamic)",
                           s->speed);
-        else if (s->bc == SBC_BC_MIXED)
-            st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'interior': newton takes D, P and T; mixed conditions take "
-                          "dynamic");
+        else if (s->seal)
+            st = sbc_fail(err, SBC_ERR_INPUT, "keyword 'seal': yes puts walls between the frame's particles, which "
+                          "interior newton's static solve does not hold (expected seal no, or interior dynamic)");
         s->remap = 0;
         s->speed = 0.0;
     }
