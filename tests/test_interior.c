@@ -202,18 +202,28 @@ static int same_bytes(const char *a, const char *b)
     return same;
 }
 
+/* the script of the frictional 55 discs (ks 5e3 N/m, mu 0.5) into full, its "%s" the words and the csv; 0 without
+   the packing */
+static int frictional_script(char *full, size_t cap)
+{
+    char path[512], script[1024];
+    if (!packing_path(path, sizeof path))
+        return 0;
+    snprintf(script, sizeof script, irregular, path);
+    snprintf(full, cap, script, "ks 5e3 mu 0.5", "%s", "%s");
+    return 1;
+}
+
 static void frictional_irregular(void)
 {
     static double rows[8][CSV_COLS];
     const char *bcs[2] = {"D", "P"};
-    char path[512], script[1024], full[1024], csv[2][512], words[160], tag[32];
+    char full[1024], csv[2][512], words[160], tag[32];
     int b, r;
-    if (!packing_path(path, sizeof path)) {
+    if (!frictional_script(full, sizeof full)) {
         CHECK(0);
         return;
     }
-    snprintf(script, sizeof script, irregular, path);
-    snprintf(full, sizeof full, script, "ks 5e3 mu 0.5", "%s", "%s");
     for (b = 0; b < 2; ++b) {
         long steps = 0, iterations = 0;
         int n = -1, k;
@@ -253,15 +263,13 @@ static void frictional_irregular(void)
 static void mixed_layer(void)
 {
     static double rows[8][CSV_COLS];
-    char path[512], script[1024], full[1024], csv[2][512];
+    char full[1024], csv[2][512];
     long solves = 0, steps = 0;
     int r, k, n = -1;
-    if (!packing_path(path, sizeof path)) {
+    if (!frictional_script(full, sizeof full)) {
         CHECK(0);
         return;
     }
-    snprintf(script, sizeof script, irregular, path);
-    snprintf(full, sizeof full, script, "ks 5e3 mu 0.5", "%s", "%s");
     for (r = 0; r < 2; ++r) {
         char tag[32];
         snprintf(tag, sizeof tag, "mixed_%d", r);
