@@ -16,7 +16,9 @@
  *   the material point's
  *   condensed tangent after three shear steps against central differences
  *   of the increment's map from the committed state (the FE code's
- *   derivative) to 1e-4 of |C|.
+ *   derivative) to 1e-4 of |C|, under (D), (P) and (T).
+ * - A (P) increment whose first solve stalls converges when tried again
+ *   with the rotations balanced one by one (no relaxation).
  * - Four frictional points sheared in a batch on 1 and 2 threads: the same
  *   bits.
  * - The mixed layer (its T components moved by the servo between static
@@ -257,6 +259,29 @@ static void frictional_irregular(void)
     }
 }
 
+/* a (P) increment of F = (0.99, 0.02; 0, 1) on the frictional 55 discs in one step: the first static solve stalls
+   (discs whose contacts all slide sit on a plateau of their moment), and tried again with the rotations balanced one
+   by one before each Newton step it converges: the row in the 40 DEM steps of its certification, where the
+   relaxation had finished the increment (thousands of steps) */
+static void stalled_then_turned(void)
+{
+    static double rows[4][CSV_COLS];
+    char full[1024], csv[512];
+    int n;
+    if (!frictional_script(full, sizeof full)) {
+        CHECK(0);
+        return;
+    }
+    n = run_case("turned", full, "P F 0.99 0.02 0 1 increments 1 accuracy tight interior newton", rows, 4, csv,
+                 sizeof csv);
+    CHECK(n == 2);
+    CHECK(n == 2 && rows[1][COL("relax_steps")] <= 40.0 && rows[1][COL("newton_iterations")] > 0.0 &&
+          rows[1][COL("unbalanced")] <= 1e-7);
+    printf("  interior: frictional 55 discs (P), F12 0.02 in one increment: %g Newton iterations, %g DEM steps (the "
+           "rotations balanced one by one after the first solve stalled)\n",
+           n == 2 ? rows[1][COL("newton_iterations")] : -1.0, n == 2 ? rows[1][COL("relax_steps")] : -1.0);
+}
+
 /* the mixed layer (bottom D D, sides P P, top D T) on the frictional 55 discs, its stress P22* = -20 N/m held from
    increment 0, sheared by F12 = 0.003 in 2 increments: every row certified with P22 = P22*, the same bytes in two
    runs (the T components moved by the servo between static solves) */
@@ -292,7 +317,7 @@ static void mixed_layer(void)
 
 static void consistent_tangent(void)
 {
-    const char *words[2] = {"D accuracy tight interior newton", "P accuracy tight interior newton"};
+    const char *words[3] = {"D accuracy tight interior newton", "P accuracy tight interior newton", "T accuracy tight interior newton"};
     char path[512];
     sbc_packing pk;
     sbc_error err;
@@ -302,7 +327,7 @@ static void consistent_tangent(void)
         CHECK(0);
         return;
     }
-    for (w = 0; w < 2; ++w) {
+    for (w = 0; w < 3; ++w) {
         sbc_point_def def = sbc_point_def_default();
         double C[81] = {0}, D[81] = {0}, gap;
         def.n = pk.n;
@@ -421,6 +446,7 @@ void test_interior(void)
     lattices();
     frictionless_irregular();
     frictional_irregular();
+    stalled_then_turned();
     mixed_layer();
     consistent_tangent();
     threads();

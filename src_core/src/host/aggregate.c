@@ -234,6 +234,7 @@ static void tally_solve(sbc_statics_tally *t, const sbc_statics_result *res)
 {
     t->iterations += res->iterations;
     t->solves++;
+    t->retried += res->converged && res->substeps > 0;
     t->mechanisms = res->mechanisms;
     t->residual = res->residual;
     if (!res->converged) {

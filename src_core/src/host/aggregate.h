@@ -67,6 +67,7 @@ typedef struct sbc_statics_tally {
     long iterations;   /* Newton iterations since the last row */
     int solves;        /* static solves since the last row */
     int unconverged;   /* ... that stopped short of the tolerance (the dynamic relaxation finished them) */
+    int retried;       /* ... that stalled at first and converged when tried again (statics.h: substeps) */
     int mechanisms;    /* dofs held for want of stiffness at the last solve */
     double residual;   /* the last solve's relative residual */
     int fallback;      /* an unconverged solve: the increment is finished by the dynamic relaxation and the

@@ -1,4 +1,4 @@
-/* interior newton: the static equilibrium of a disc aggregate (statics.h). */
+/* interior newton: the static equilibrium of a disc or sphere aggregate (statics.h). */
 #include "statics.h"
 
 #include <float.h>
@@ -7,15 +7,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../engines/neighbor.h"
-#include "condensed.h"
 #include "contact_blocks.h"
+#include "statics_work.h"
 #include "sbc/tensor.h"
 #include "sbc/embedded/engine.h"
 
-/* the largest move of a disc in one Newton iteration, in smallest radii: a
-   longer step is scaled down (contacts stay within reach of the pair list) */
-#define STEP_CAP 0.25
 /* backtracking halvings of the line search before the iteration is called stalled */
 #define LINE_HALVINGS 30
 /* the pseudo-time term's first weight (times kn) and the weight below which it is dropped (pure Newton) */
@@ -34,108 +30,6 @@
 /* the round-off floor of the relative residual, in ulps of the largest coordinate times kn (attainable) */
 #define ROUNDOFF_ULPS 64.0
 
-typedef struct statics_work {
-    const sbc_statics_problem *p;
-    sbc_pairs cand;          /* candidate pairs, within reach at the last build */
-    int dim, rd, nd;         /* 2 or 3; rotations per particle (1 or 3); dofs per particle */
-    double *fs;              /* [cand capacity] 2D: the springs of the iterate along t (N) */
-    double *fsv;             /* [3 cand capacity] ... as vectors in the contact plane (condensed.h's sbc_network) */
-    double *fs0c;            /* [3 cand capacity] 3D: each candidate's committed spring (N) */
-    double *res;             /* [nd n] net loads of the iterate on each dof, N and N m */
-    int *unk;                /* [nd n] each dof's unknown, -1 prescribed (condensed.h) */
-    int L, nu;               /* the dofs' unknowns, and all unknowns with (T)'s multipliers */
-    double *R;               /* [nu] the residual of each unknown */
-    double *row_scale;       /* [nu] 1, or 1/R for a rotation's row (the merit in N) */
-    double *dy;              /* [nu] Newton's correction */
-    double *lambda;          /* [dim^2 + dim] (T): the multipliers (P, m over border) */
-    double *xe;              /* [dim n] the state on entry (T: the frame's place for eq. 15 and its mean) */
-    double border;           /* (T): the multipliers' scale, kn */
-    double *xt, *tt;         /* [dim n], [rd n] a trial state of the line search */
-    double rmax, rmin;
-    double xmax;             /* the largest |coordinate| of the committed centres, m (the round-off's scale) */
-    double mean_force;       /* mean |contact force| of the last evaluation, N */
-    int contacts;            /* ... touching pairs */
-    int built;               /* the candidates have been built once */
-} statics_work;
-
-/* the committed pair (a, b), a < b: its index, -1 for a pair that was not committed */
-static int committed_pair(const statics_work *w, int a, int b)
-{
-    return sbc_pair_index(w->p->npair0, w->p->i0, w->p->j0, a, b);
-}
-
-/* 3D: candidate k's contact at (x, theta), its loads added to w->res; returns |f| (N), or -1 when open */
-static double contact_3d(statics_work *w, int k, const double *x, const double *theta)
-{
-    const sbc_statics_problem *p = w->p;
-    const int a = w->cand.i[k], b = w->cand.j[k], c0 = committed_pair(w, a, b);
-    double l0[3], dta[3], dtb[3], f[3], ra[3], rb[3], ma[3], mb[3], *F0 = &w->fs0c[3 * k];
-    sbc_spring_3d sp;
-    int q;
-    for (q = 0; q < 3; ++q) {
-        l0[q] = p->x0[3 * b + q] - p->x0[3 * a + q];
-        dta[q] = theta[3 * a + q] - p->theta0[3 * a + q];
-        dtb[q] = theta[3 * b + q] - p->theta0[3 * b + q];
-        F0[q] = p->fs0 && c0 >= 0 ? p->fs0[3 * c0 + q] : 0.0;
-    }
-    sbc_spring_3d_at(&x[3 * a], &x[3 * b], p->r[a], p->r[b], l0, dta, dtb, p->fs0 ? F0 : NULL, &p->law, &sp);
-    memcpy(&w->fsv[3 * k], sp.fs, sizeof sp.fs);
-    if (sp.open)
-        return -1.0;
-    for (q = 0; q < 3; ++q) {
-        f[q] = -p->law.kn * sp.dn * sp.n[q] + sp.fs[q]; /* the force on a */
-        ra[q] = sp.s * sp.n[q];
-        rb[q] = (sp.s - sp.L) * sp.n[q];
-    }
-    sbc_cross3(ra, f, ma); /* the moments about the centres, as spheres.c */
-    sbc_cross3(f, rb, mb);
-    for (q = 0; q < 3; ++q) {
-        w->res[6 * a + q] += f[q];
-        w->res[6 * a + 3 + q] += ma[q];
-        w->res[6 * b + q] -= f[q];
-        w->res[6 * b + 3 + q] += mb[q];
-    }
-    return sqrt(sbc_dot3(f, f));
-}
-
-/* 2D: candidate k's contact at (x, theta), its loads added to w->res; returns |f| (N), or -1 when open */
-static double contact_2d(statics_work *w, int k, const double *x, const double *theta)
-{
-    const sbc_statics_problem *p = w->p;
-    const int a = w->cand.i[k], b = w->cand.j[k];
-    const double lx = x[2 * b] - x[2 * a], ly = x[2 * b + 1] - x[2 * a + 1], rs = p->r[a] + p->r[b];
-    const double d2 = lx * lx + ly * ly;
-    double d, nx, ny, dn, fn, fs = 0.0, fx, fy;
-    w->fs[k] = 0.0;
-    w->fsv[3 * k] = w->fsv[3 * k + 1] = w->fsv[3 * k + 2] = 0.0;
-    if (d2 >= rs * rs)
-        return -1.0; /* open: the spring is lost */
-    d = sqrt(d2);
-    nx = lx / d;
-    ny = ly / d;
-    dn = rs - d;
-    if (p->fs0) { /* the spring from its committed value by the increment's slip, capped (eq. 6) */
-        double g[2];
-        const double slip = sbc_path_slip(&p->x0[2 * a], &p->x0[2 * b], lx, ly, g) -
-                            (p->r[a] * (theta[a] - p->theta0[a]) + p->r[b] * (theta[b] - p->theta0[b]));
-        const int c0 = committed_pair(w, a, b);
-        fs = c0 >= 0 ? p->fs0[c0] : 0.0;
-        fn = sbc_frictional_force(&p->law, dn, slip, &fs, NULL);
-    } else
-        fn = p->law.kn * dn;
-    w->fs[k] = fs;
-    w->fsv[3 * k] = -fs * ny; /* fs t, t = (-n_y, n_x) */
-    w->fsv[3 * k + 1] = fs * nx;
-    fx = -fn * nx - fs * ny; /* the force on a: -fn n + fs t */
-    fy = -fn * ny + fs * nx;
-    w->res[3 * a] += fx;
-    w->res[3 * a + 1] += fy;
-    w->res[3 * a + 2] += p->r[a] * fs;
-    w->res[3 * b] -= fx;
-    w->res[3 * b + 1] -= fy;
-    w->res[3 * b + 2] += p->r[b] * fs;
-    return sqrt(fn * fn + fs * fs);
-}
 
 /* net loads on every dof at (x, theta), the springs of the end state by
    backward Euler (statics.h); returns the merit: the sum over free dofs of
@@ -148,7 +42,7 @@ static double evaluate(statics_work *w, const double *x, const double *theta)
     memset(w->res, 0, sizeof(double) * (size_t)w->nd * (size_t)p->n);
     w->contacts = 0;
     for (k = 0; k < w->cand.count; ++k) {
-        const double f = w->dim == 3 ? contact_3d(w, k, x, theta) : contact_2d(w, k, x, theta);
+        const double f = sbc_statics_contact(w, k, x, theta);
         if (f >= 0.0) {
             sum_f += f;
             ++w->contacts;
@@ -226,13 +120,16 @@ static sbc_status keep_candidates(statics_work *w, const double *x, sbc_error *e
         double *fs = realloc(w->fs, sizeof(double) * (size_t)w->cand.capacity);
         double *fsv = fs ? realloc(w->fsv, sizeof(double) * 3 * (size_t)w->cand.capacity) : NULL;
         double *fs0c = fsv ? realloc(w->fs0c, sizeof(double) * 3 * (size_t)w->cand.capacity) : NULL;
+        double *psi = fs0c ? realloc(w->psi, sizeof(double) * (size_t)w->cand.capacity) : NULL;
+        if (psi)
+            w->psi = psi;
         if (fs)
             w->fs = fs;
         if (fsv)
             w->fsv = fsv;
         if (fs0c)
             w->fs0c = fs0c;
-        if (!fs || !fsv || !fs0c)
+        if (!fs || !fsv || !fs0c || !psi)
             return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d pairs", w->cand.capacity);
     }
     return SBC_OK;
@@ -244,6 +141,7 @@ static void work_free(statics_work *w)
     free(w->fs);
     free(w->fsv);
     free(w->fs0c);
+    free(w->psi);
     free(w->res);
     free(w->unk);
     free(w->R);
@@ -403,6 +301,40 @@ done:
     free(in_frame);
 }
 
+/* (T): the frame starts as its committed shape carried by the map that gives it the commands' eq. 15 and mean
+ * place: x_q = c + M (x0_q - c0), M = E(x) E(x0)^-1, E(y) = sum_q (y_q - c_y) (x) A_q, c the centroid of the
+ * commanded frame, c0 of the committed one (the constraints of eq. 15 and of the mean translation then hold at
+ * the start, whatever sum_q A_q); the interior follows by affine_start. The commands put each frame particle
+ * where F X_q says: a jolt of the fluctuations the committed (T) state had found. */
+static void frame_start(const sbc_frame *f, int dim, int n, const double *x0, double *x)
+{
+    double c0[3] = {0, 0, 0}, c[3] = {0, 0, 0}, E0[9] = {0}, E[9] = {0}, M[9];
+    int q, k, l;
+    for (q = 0; q < f->n; ++q)
+        for (k = 0; k < dim; ++k) {
+            c0[k] += x0[dim * f->particle[q] + k] / f->n;
+            c[k] += x[dim * f->particle[q] + k] / f->n;
+        }
+    for (q = 0; q < f->n; ++q)
+        for (k = 0; k < dim; ++k)
+            for (l = 0; l < dim; ++l) {
+                E0[SBC_IJ(k, l)] += (x0[dim * f->particle[q] + k] - c0[k]) * f->A[3 * q + l];
+                E[SBC_IJ(k, l)] += (x[dim * f->particle[q] + k] - c[k]) * f->A[3 * q + l];
+            }
+    if (!sbc_tensor_right_divide(dim, E, E0, M))
+        return;
+    for (q = 0; q < f->n; ++q) {
+        const int i = f->particle[q];
+        for (k = 0; k < dim; ++k) {
+            double y = c[k];
+            for (l = 0; l < dim; ++l)
+                y += M[SBC_IJ(k, l)] * (x0[dim * i + l] - c0[l]);
+            x[dim * i + k] = y;
+        }
+    }
+    affine_start(f, dim, n, x0, x);
+}
+
 /* the contact network of the iterate x for a Newton step under the pseudo-time term shift (of kn) */
 static void network_at(sbc_network *net, const statics_work *w, const sbc_statics_problem *p, double *x,
                        const double *theta, double shift)
@@ -418,8 +350,8 @@ static void network_at(sbc_network *net, const statics_work *w, const sbc_static
 }
 
 /* one solve from p's committed state (sbc_statics_solve, without the substeps) */
-static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *theta, sbc_statics_result *res,
-                             sbc_error *err)
+static sbc_status solve_once(const sbc_statics_problem *p, int turning, double *x, double *theta,
+                             sbc_statics_result *res, sbc_error *err)
 {
     statics_work w;
     sbc_network net;
@@ -432,6 +364,8 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
         return st;
     }
     memcpy(w.xe, x, sizeof(double) * (size_t)w.dim * (size_t)p->n);
+    if (p->bc == SBC_BC_T)
+        frame_start(p->frame, w.dim, p->n, p->x0, x);
     memset(&net, 0, sizeof net);
     net.dim = w.dim;
     net.n = p->n;
@@ -448,6 +382,17 @@ static sbc_status solve_once(const sbc_statics_problem *p, double *x, double *th
     for (it = 0; it < p->max_iterations && !(res->residual <= attainable(&w)); ++it) {
         double alpha = 1.0, step = 0.0, best_alpha = 0.0, lambda_keep[12], merit_before = merit;
         int h, k;
+        if (turning && it > 0 && p->fs0) { /* each rotation balanced with the rest held (statics_work.h) */
+            network_at(&net, &w, p, x, theta, shift);
+            if (sbc_statics_turn_sweep(&w, &net, x, theta, TURN_SHARE * res->residual * w.mean_force) < 0) {
+                st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for the rotations' solves");
+                break;
+            }
+            merit = evaluate(&w, x, theta);
+            res->residual = relative_residual(&w);
+            if (res->residual <= attainable(&w))
+                break;
+        }
         network_at(&net, &w, p, x, theta, shift);
         if ((st = sbc_condensed_newton_step(&net, p->frame, p->bc, w.R, w.dy, &res->mechanisms, err)) != SBC_OK)
             break;
@@ -626,7 +571,7 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
     memcpy(xt, x, sizeof(double) * nx); /* the frame's target (its commands) */
     memcpy(tht, theta, sizeof(double) * nt);
     substep_start(p, p, xt, tht, 1.0, x, theta);
-    if ((st = solve_once(p, x, theta, &first, err)) != SBC_OK || first.converged) {
+    if ((st = solve_once(p, 0, x, theta, &first, err)) != SBC_OK || first.converged) {
         *res = first;
         memset(&first, 0, sizeof first);
         goto done;
@@ -638,14 +583,15 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
     }
     memcpy(x1, x, sizeof(double) * nx); /* the first attempt's iterate, for the relaxation if no cut helps */
     memcpy(x1 + nx, theta, sizeof(double) * nt);
-    /* substeps: the frame's move in 2, 4, 8 equal parts, each solved from the last, until every part
-       converges; else the first attempt stands (the relaxation finishes it) */
-    for (parts = 2; parts <= SUBSTEPS_MOST && !ok && st == SBC_OK; parts *= 2) {
+    /* again with the rotations balanced one by one at each iteration (with friction), then the frame's move in
+       2, 4, 8 equal parts, each solved from the last, until every part converges; else the first attempt stands
+       (the relaxation finishes it) */
+    for (parts = p->fs0 ? 1 : 2; parts <= SUBSTEPS_MOST && !ok && st == SBC_OK; parts *= 2) {
         sbc_statics_problem q = *p;
         for (k = 1, ok = 1; k <= parts && ok && st == SBC_OK; ++k) {
             substep_start(p, &q, xt, tht, (double)k / parts, xf, thf);
             sbc_statics_result_free(&part);
-            if ((st = solve_once(&q, xf, thf, &part, err)) != SBC_OK)
+            if ((st = solve_once(&q, p->fs0 != NULL, xf, thf, &part, err)) != SBC_OK)
                 break;
             iterations += part.iterations;
             ok = part.converged;

@@ -15,8 +15,12 @@
  * images shares one fluctuation and one rotation, whose net loads vanish,
  * the corners following F; (T) every frame particle free under
  * a_q = P A_q + m, with eq. 15 and the frame's mean translation kept from
- * the frame's place on entry (the multipliers P, m solved for). Globalized by a backtracking line search on the residual's norm
- * and a cap on each iteration's largest move; degrees of freedom without
+ * the frame's place on entry (the multipliers P, m solved for; the frame
+ * starts as its committed shape mapped to the commands' eq. 15). Globalized
+ * by a backtracking line search on the residual's norm, a pseudo-time term
+ * and a cap on each iteration's largest move; a stalled solve is tried
+ * again with every rotation balanced one by one before each Newton step
+ * (sbc_statics_turn_sweep), then in parts; degrees of freedom without
  * stiffness (rattlers, the rotations of frictionless discs) are held. */
 #ifndef SBC_STATICS_H
 #define SBC_STATICS_H
@@ -62,7 +66,8 @@ typedef struct sbc_statics_result {
     double residual;  /* the last relative residual (as tol) */
     int contacts;     /* touching pairs at the end */
     int substeps;     /* 0: one solve; else the parts the frame's move was cut into, each solved from the last
-                         (a solve that stalled is tried again in 2, 4, 8 parts) */
+                         (a solve that stalled is tried again whole, then in 2, 4, 8 parts, each with the
+                         rotations balanced one by one at every iteration: sbc_statics_turn_sweep) */
     double *records;  /* [SBC_PAIR_RECORD contacts] of the end state: 2D (i, j, 0, fs, 0) (engine.h), 3D
                          (i, j, fs_x, fs_y, fs_z) (sbc_spheres_place) */
     char why[200];    /* not converged: why */

@@ -5,8 +5,12 @@
 
 void sbc_script_tally_line(const script *s, const sbc_statics_tally *t)
 {
-    fprintf(s->log, "  interior newton: %d solves, %ld iterations, last residual %.2e, %d dofs held%s%s\n",
-            t->solves, t->iterations, t->residual, t->mechanisms,
+    char retried[96] = "";
+    if (t->retried)
+        snprintf(retried, sizeof retried, " (%d stalled and converged again, the rotations balanced one by one)",
+                 t->retried);
+    fprintf(s->log, "  interior newton: %d solves%s, %ld iterations, last residual %.2e, %d dofs held%s%s\n",
+            t->solves, retried, t->iterations, t->residual, t->mechanisms,
             t->unconverged ? "; the dynamic relaxation finished an unconverged solve: " : "",
             t->unconverged ? t->why : "");
 }
