@@ -13,7 +13,9 @@
 typedef struct turn_work {
     int *start, *adj;       /* [n + 1], [2 cand]: each particle's candidates */
     int *stamp;             /* [cand] the last unknown that took the candidate */
+    int *first, *next;      /* [nu], [n]: each rotation unknown's particles, a chain from its first */
     int *members, nm;       /* [n]: the particles of the current rotation unknown */
+    double *base;           /* [3 n]: their rotations when its solve began, rad */
     unsigned char *member;  /* [n] */
     int *list, nl;          /* [cand]: the current unknown's candidates */
 } turn_work;
@@ -54,13 +56,13 @@ static double turn_at(statics_work *w, const sbc_network *net, turn_work *t, con
     return psi;
 }
 
-/* the members' rotations moved by d [rd] from keep [rd] */
+/* the members' rotations turned by keep + d [rd] from where their solve began */
 static void turn_set(const statics_work *w, const turn_work *t, double *theta, const double *keep, const double *d)
 {
     int m, r;
     for (m = 0; m < t->nm; ++m)
         for (r = 0; r < w->rd; ++r)
-            theta[w->rd * t->members[m] + r] = keep[r] + d[r];
+            theta[w->rd * t->members[m] + r] = t->base[w->rd * m + r] + keep[r] + d[r];
 }
 
 /* Maximizes the rotation unknown's concave potential (its moment the gradient) by Levenberg-damped Newton, the
@@ -69,12 +71,13 @@ static void turn_set(const statics_work *w, const turn_work *t, double *theta, c
 static int turn_solve(statics_work *w, const sbc_network *net, turn_work *t, const double *x, double *theta,
                       double target)
 {
-    const int rd = w->rd, lead = t->members[0];
-    const double R = w->p->r[lead], stiff = w->p->law.ks * R * R * (t->nl > 0 ? t->nl : 1);
-    double M[3], H[9], keep[3], psi, lambda = 1e-6;
-    int it, r, s, moved = 0;
-    for (r = 0; r < rd; ++r)
-        keep[r] = theta[rd * lead + r];
+    const int rd = w->rd;
+    const double R = w->p->r[t->members[0]], stiff = w->p->law.ks * R * R * (t->nl > 0 ? t->nl : 1);
+    double M[3], H[9], keep[3] = {0, 0, 0}, psi, lambda = 1e-6;
+    int it, r, s, m, moved = 0;
+    for (m = 0; m < t->nm; ++m)
+        for (r = 0; r < rd; ++r)
+            t->base[rd * m + r] = theta[rd * t->members[m] + r];
     psi = turn_at(w, net, t, x, theta, M, H);
     for (it = 0; it < TURN_ITERATIONS; ++it) {
         double A[9], d[3], size = 0.0, gain = 0.0, psi_t, Mt[3], Ht[9], worst = 0.0;
@@ -125,15 +128,20 @@ int sbc_statics_turn_sweep(statics_work *w, const sbc_network *net, const double
 {
     const int n = w->p->n, nd = w->nd, dim = w->dim, cand = w->cand.count;
     turn_work t;
-    int i, k, moved = 0, *fill = calloc((size_t)n + 1, sizeof(int)), *seen = calloc((size_t)(w->nu > 0 ? w->nu : 1), sizeof(int));
+    const size_t nu = (size_t)(w->nu > 0 ? w->nu : 1);
+    int i, k, moved = 0, *fill = calloc((size_t)n + 1, sizeof(int));
     memset(&t, 0, sizeof t);
+    t.first = malloc(sizeof(int) * nu);
+    t.next = malloc(sizeof(int) * (size_t)n);
+    t.base = malloc(sizeof(double) * 3 * (size_t)n);
     t.start = calloc((size_t)n + 1, sizeof(int));
     t.adj = malloc(sizeof(int) * 2 * (size_t)(cand + 1));
     t.stamp = malloc(sizeof(int) * (size_t)(cand + 1));
     t.members = malloc(sizeof(int) * (size_t)n);
     t.member = calloc((size_t)n, 1);
     t.list = malloc(sizeof(int) * (size_t)(cand + 1));
-    if (!fill || !seen || !t.start || !t.adj || !t.stamp || !t.members || !t.member || !t.list) {
+    if (!fill || !t.first || !t.next || !t.base || !t.start || !t.adj || !t.stamp || !t.members || !t.member ||
+        !t.list) {
         moved = -1;
         goto done;
     }
@@ -148,18 +156,25 @@ int sbc_statics_turn_sweep(statics_work *w, const sbc_network *net, const double
         t.adj[t.start[w->cand.i[k]] + fill[w->cand.i[k]]++] = k;
         t.adj[t.start[w->cand.j[k]] + fill[w->cand.j[k]]++] = k;
     }
+    for (k = 0; k < (int)nu; ++k)
+        t.first[k] = -1;
+    for (i = n - 1; i >= 0; --i) { /* each unknown's particles (i, and its periodic images), in index order */
+        const int u = w->unk[nd * i + dim];
+        if (u >= 0) {
+            t.next[i] = t.first[u];
+            t.first[u] = i;
+        }
+    }
     for (i = 0; i < n; ++i) {
         const int u = w->unk[nd * i + dim];
         int j, m, c;
-        if (u < 0 || seen[u])
+        if (u < 0 || t.first[u] != i)
             continue;
-        seen[u] = 1;
         t.nm = t.nl = 0;
-        for (j = i; j < n; ++j) /* the unknown's particles: i, and its periodic images */
-            if (w->unk[nd * j + dim] == u) {
-                t.members[t.nm++] = j;
-                t.member[j] = 1;
-            }
+        for (j = i; j >= 0; j = t.next[j]) {
+            t.members[t.nm++] = j;
+            t.member[j] = 1;
+        }
         for (m = 0; m < t.nm; ++m)
             for (c = t.start[t.members[m]]; c < t.start[t.members[m] + 1]; ++c)
                 if (t.stamp[t.adj[c]] != u) {
@@ -172,7 +187,9 @@ int sbc_statics_turn_sweep(statics_work *w, const sbc_network *net, const double
     }
 done:
     free(fill);
-    free(seen);
+    free(t.first);
+    free(t.next);
+    free(t.base);
     free(t.start);
     free(t.adj);
     free(t.stamp);
