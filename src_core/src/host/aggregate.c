@@ -267,7 +267,7 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
     }
     if (a->settings->bc == SBC_BC_MIXED) { /* D and P components; a T one held at its command, the servo's */
         int k;
-        if (!(mode = malloc(3 * (size_t)f->n))) {
+        if (!(mode = calloc(3 * (size_t)f->n, 1))) { /* 2D: the third of each three left D */
             st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for a frame of %d", f->n);
             goto done;
         }
