@@ -12,6 +12,9 @@ extern const char *test_runner;  /* path of the servo-bc executable */
 /* 1 when a line of the file at path contains needle. */
 int file_contains(const char *path, const char *needle);
 
+/* 1 when the files at a and b hold the same bytes (both readable). */
+int same_bytes(const char *a, const char *b);
+
 #define CHECK(cond)                                                                          \
     do {                                                                                     \
         if (cond) {                                                                          \

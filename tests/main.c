@@ -27,6 +27,22 @@ int file_contains(const char *path, const char *needle)
     return found;
 }
 
+int same_bytes(const char *a, const char *b)
+{
+    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
+    int ca = 0, cb = 0, same = fa && fb;
+    while (same && ca != EOF) {
+        ca = fgetc(fa);
+        cb = fgetc(fb);
+        same = ca == cb;
+    }
+    if (fa)
+        fclose(fa);
+    if (fb)
+        fclose(fb);
+    return same;
+}
+
 /* name is one of the comma-separated names of list */
 static int listed(const char *list, const char *name)
 {
@@ -50,7 +66,7 @@ int main(int argc, char **argv)
                   {"rattler", test_rattler_energy},
                   {"relax", test_relax},     {"lattice", test_lattice},       {"input", test_input},
                   {"outputs", test_outputs}, {"servo", test_servo}, {"restart", test_restart}, {"generate", test_generate}, {"mixed", test_mixed},
-                  {"host", test_host}, {"decks", test_decks}, {"bpm", test_bpm}, {"accuracy", test_accuracy}, {"seal", test_seal}, {"seal3d", test_seal_3d}, {"point", test_point}, {"condensed", test_condensed}, {"newton", test_newton}, {"interior", test_interior}, {"interior-spheres", test_interior_spheres}, {"bpm-host", test_bpm_host}, {"cohesive-host", test_cohesive_host}, {"driver", test_driver}, {"remap", test_remap}};
+                  {"host", test_host}, {"decks", test_decks}, {"bpm", test_bpm}, {"accuracy", test_accuracy}, {"seal", test_seal}, {"seal3d", test_seal_3d}, {"point", test_point}, {"condensed", test_condensed}, {"newton", test_newton}, {"interior", test_interior}, {"interior-spheres", test_interior_spheres}, {"interior-bonds", test_interior_bonds}, {"bpm-host", test_bpm_host}, {"cohesive-host", test_cohesive_host}, {"driver", test_driver}, {"remap", test_remap}};
     size_t k;
     if (argc > 1) test_runner = argv[1];
     if (argc > 2) test_tmpdir = argv[2];

@@ -24,8 +24,8 @@
  * - The mixed layer (its T components moved by the servo between static
  *   solves) on the frictional packing: every row certified with P22 =
  *   P22*, the same bytes in two runs; on the lattice, test_mixed.c.
- * - Refusals by name: remap x, speed > 0, cohesive bonds,
- *   a host driver that does not solve its interior. */
+ * - Refusals by name: remap x, speed > 0, seal yes, a host driver that
+ *   does not solve its interior (cohesive bonds: test_interior_bonds.c). */
 #include "check.h"
 #include "csv_read.h"
 #include "layer.h"
@@ -183,25 +183,6 @@ static void frictionless_irregular(void)
         printf("  interior: frictionless 55 discs (D): newton against dynamic %.2e of the stress scale; DEM steps %ld "
                "against %ld\n", gap, steps[1], steps[0]);
     }
-}
-
-/* the bytes of two files alike */
-static int same_bytes(const char *a, const char *b)
-{
-    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
-    int ca, cb, same = fa && fb;
-    while (same) {
-        ca = fgetc(fa);
-        cb = fgetc(fb);
-        same = ca == cb;
-        if (ca == EOF || cb == EOF)
-            break;
-    }
-    if (fa)
-        fclose(fa);
-    if (fb)
-        fclose(fb);
-    return same;
 }
 
 /* the script of the frictional 55 discs (ks 5e3 N/m, mu 0.5) into full, its "%s" the words and the csv; 0 without
@@ -419,11 +400,6 @@ static void refusals(void)
     /* a host that relaxes its interior itself (LAMMPS, LIGGGHTS, YADE through the driver) */
     CHECK(test_driver_refused(&s, &err) &&
           strstr(err.message, "keyword 'interior': newton solves the interior's static equilibrium") != NULL);
-    CHECK(sbc_script_run_string("dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.01e-3\n"
-                                "contact cohesive kn 1e4 ks 2e3 kr 0 fn 1 fs 1 mr 1 mu 0.4\ndensity 2e3\n"
-                                "timestep 1e-5\nservo_bc D interior newton\nrun\n",
-                                "interior_cohesive", NULL, &err) == SBC_ERR_INPUT &&
-          strstr(err.message, "keyword 'interior': newton integrates eq. 6, not the cohesive bonds") != NULL);
 }
 
 /* a core built without UMFPACK (make SPARSE=no) refuses the keyword by name and keeps the points dynamic */

@@ -233,22 +233,6 @@ static void layer(void)
            1.0 - rows[2][COL3("F33")], 1.0 - F33, rows[2][COL3("P33")], solves);
 }
 
-static int same_bytes(const char *a, const char *b)
-{
-    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
-    int ca = 0, cb = 0, same = fa && fb;
-    while (same && ca != EOF) {
-        ca = fgetc(fa);
-        cb = fgetc(fb);
-        same = ca == cb;
-    }
-    if (fa)
-        fclose(fa);
-    if (fb)
-        fclose(fb);
-    return same;
-}
-
 /* the 71-sphere irregular packing: 30 jammed in a periodic cube, compressed by 0.2 %, reconstructed */
 static int packing(char *path, size_t cap)
 {

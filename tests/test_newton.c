@@ -15,7 +15,8 @@
  * - A material point of the frictional lattice under (P) with update newton:
  *   the closed form after an integrate, to 1e-6.
  * - Refusals: newton with mixed (the words), a host driver without the
- *   newton callback, cohesive contacts in the runner. */
+ *   newton callback (cohesive bonds under update newton: test_point.c and
+ *   test_interior_bonds.c). */
 #include "check.h"
 #include "csv_read.h"
 #include "layer.h"
@@ -176,11 +177,6 @@ static void refusals(void)
     CHECK(sbc_settings_parse_words(&s, "T update newton remap none", &err) == SBC_OK && s.update == SBC_UPDATE_NEWTON);
     CHECK(test_driver_refused(&s, &err) &&
           strstr(err.message, "keyword 'update': newton needs the host's linearized contact network") != NULL);
-    CHECK(sbc_script_run_string("dimension 2\nlattice square 5 5 spacing 2e-3 radius 1.01e-3\n"
-                                "contact cohesive kn 1e4 ks 2e3 kr 0 fn 1 fs 1 mr 1 mu 0.4\ndensity 2e3\n"
-                                "timestep 1e-5\nservo_bc P update newton\nrun\n",
-                                "newton_cohesive", NULL, &err) == SBC_ERR_INPUT &&
-          strstr(err.message, "keyword 'update': newton linearizes the contacts, not the cohesive bonds") != NULL);
 }
 
 void test_newton(void)

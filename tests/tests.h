@@ -30,6 +30,7 @@ void test_condensed(void);
 void test_newton(void);
 void test_interior(void);
 void test_interior_spheres(void);
+void test_interior_bonds(void);
 void test_bpm_host(void);
 void test_cohesive_host(void);
 void test_driver(void);

@@ -471,6 +471,7 @@ sbc_engine_view sbc_engine_get_view(const sbc_engine *e)
     w.pair_j = e->pairs.j;
     w.pair_bond = e->pairs.bond;
     w.pair_fs = e->pairs.fs;
+    w.pair_m = e->pairs.m;
     w.bond_count = e->bond_count;
     w.bonds_initial = e->bonds_initial;
     w.law = e->law;

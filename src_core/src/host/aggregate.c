@@ -51,6 +51,12 @@ static void discs_pair(const void *e, int k, int ij[2], double fs[3])
     fs[1] = s * lx;
     fs[2] = 0.0;
 }
+static int discs_bond(const void *e, int k, double *m)
+{
+    const sbc_engine_view w = sbc_engine_get_view(e);
+    *m = w.pair_bond && w.pair_bond[k] ? w.pair_m[k] : 0.0;
+    return w.pair_bond && w.pair_bond[k];
+}
 static const double *discs_centres(const void *e) { return sbc_engine_get_view(e).x; }
 static const double *discs_radii(const void *e) { return sbc_engine_get_view(e).r; }
 static const double *discs_rotations(const void *e) { return sbc_engine_get_view(e).theta; }
@@ -65,7 +71,7 @@ const sbc_engine_ops sbc_engine_ops_discs = {2, discs_create, discs_free, discs_
                                    discs_forces,
                                    discs_move, discs_masses, discs_dt, discs_size, discs_save, discs_load,
                                    discs_pairs, discs_pair, discs_centres, discs_radii, discs_rotations,
-                                   discs_place};
+                                   discs_bond, discs_place};
 
 static void *spheres_create(const sbc_point_def *d, const sbc_settings *s, sbc_error *err)
 {
@@ -110,18 +116,17 @@ const sbc_engine_ops sbc_engine_ops_spheres = {3, spheres_create, spheres_free, 
                                      spheres_callbacks,
                                      spheres_forces, spheres_move, spheres_masses, spheres_dt, spheres_size,
                                      spheres_save, spheres_load, spheres_pairs, spheres_pair, spheres_centres,
-                                     spheres_radii, spheres_rotations, spheres_place};
+                                     spheres_radii, spheres_rotations, NULL, spheres_place};
 
 sbc_status sbc_aggregate_network(const sbc_aggregate *a, sbc_network *net, int **ij, double **fs, sbc_error *err)
 {
     const int npair = a->ops->pair_count(a->engine);
     int k;
+    const int bonded = a->bonds && a->ops->bond;
+    double m;
     *ij = NULL;
     *fs = NULL;
-    if (a->bonded)
-        return sbc_fail(err, SBC_ERR_INPUT, "contact network: the contacts are linearized by eq. 6 alone; this "
-                        "aggregate's cohesive bonds (eqs. 7-8) are not (use the perturbation tangent)");
-    *ij = malloc(sizeof **ij * 2 * (size_t)(npair > 0 ? npair : 1));
+    *ij = malloc(sizeof **ij * (bonded ? 3 : 2) * (size_t)(npair > 0 ? npair : 1));
     *fs = malloc(sizeof **fs * 3 * (size_t)(npair > 0 ? npair : 1));
     if (!*ij || !*fs)
         return sbc_fail(err, SBC_ERR_NOMEM, "contact network: out of memory for %d pairs", npair);
@@ -130,6 +135,8 @@ sbc_status sbc_aggregate_network(const sbc_aggregate *a, sbc_network *net, int *
         a->ops->pair(a->engine, k, pair, &(*fs)[3 * k]);
         (*ij)[k] = pair[0];
         (*ij)[npair + k] = pair[1];
+        if (bonded)
+            (*ij)[2 * npair + k] = a->ops->bond(a->engine, k, &m);
     }
     memset(net, 0, sizeof *net);
     net->dim = a->frame->dim;
@@ -141,6 +148,10 @@ sbc_status sbc_aggregate_network(const sbc_aggregate *a, sbc_network *net, int *
     net->j = *ij + npair;
     net->fs = *fs;
     net->law = a->law;
+    if (bonded) {
+        net->bond = *ij + 2 * npair;
+        net->kr = a->bonds->kr;
+    }
     net->frame_rotation_zero = a->settings->bc == SBC_BC_T && a->settings->rotation_zero;
     return SBC_OK;
 }
@@ -170,7 +181,7 @@ sbc_driver_callbacks sbc_aggregate_callbacks(const sbc_aggregate *a)
     sbc_driver_callbacks cb = a->ops->callbacks(a->engine);
     cb.newton = sbc_aggregate_newton;
     cb.newton_data = (void *)a; /* read only: the callback takes a const aggregate */
-    cb.solves_interior = a->ops->place && !a->bonded && a->tally;
+    cb.solves_interior = a->ops->place && a->tally;
     return cb;
 }
 
@@ -237,6 +248,7 @@ static void tally_solve(sbc_statics_tally *t, const sbc_statics_result *res)
     t->retried += res->converged && res->substeps > 0;
     t->mechanisms = res->mechanisms;
     t->residual = res->residual;
+    t->broken += res->broken;
     if (!res->converged) {
         t->unconverged++;
         t->fallback = 1;
@@ -250,11 +262,12 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
                                  sbc_error *err)
 {
     const sbc_frame *f = a->frame;
-    const int n = a->n, dim = f->dim, rd = SBC_ROTATIONS(dim), history = sbc_frictional_has_history(&a->law);
+    const int n = a->n, dim = f->dim, rd = SBC_ROTATIONS(dim);
+    const int history = sbc_frictional_has_history(&a->law) || a->bonds; /* bonds imply history, as engine.c */
     const size_t nx = (size_t)(dim * n), nt = (size_t)(rd * n);
     double *x0 = malloc(sizeof(double) * nx), *th0 = malloc(sizeof(double) * nt);
     double *x = malloc(sizeof(double) * nx), *th = malloc(sizeof(double) * nt), *fv = NULL, *fs0 = NULL;
-    int *ij0 = NULL; /* the committed pairs: i0 [npair], then j0 */
+    int *ij0 = NULL; /* the committed pairs: i0 [npair], then j0, with bonds their flags */
     unsigned char *mode = NULL;
     sbc_network committed;
     sbc_statics_problem p;
@@ -281,12 +294,15 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
     memcpy(x0, committed.x, sizeof(double) * nx);
     memcpy(th0, a->ops->rotations(a->engine), sizeof(double) * nt);
     fs0 = fv; /* 3D: the spring vectors as they are */
-    if (dim == 2) {
-        if (!(fs0 = malloc(sizeof(double) * (size_t)(committed.npair > 0 ? committed.npair : 1)))) {
+    if (dim == 2) { /* the springs along t [npair], then with bonds their moments [npair] */
+        int k;
+        if (!(fs0 = malloc(sizeof(double) * 2 * (size_t)(committed.npair > 0 ? committed.npair : 1)))) {
             st = sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d pairs", committed.npair);
             goto done;
         }
         springs_along_t(x0, committed.npair, committed.i, committed.j, fv, fs0);
+        for (k = 0; committed.bond && k < committed.npair; ++k)
+            a->ops->bond(a->engine, k, &fs0[committed.npair + k]);
     }
     a->ops->move_frame(a->engine, cmd);
     memcpy(x, a->ops->centres(a->engine), sizeof(double) * nx);
@@ -309,6 +325,11 @@ static sbc_status solve_interior(const sbc_aggregate *a, sbc_controller *ctl, co
     p.fs0 = history ? fs0 : NULL;
     p.i0 = committed.i;
     p.j0 = committed.j;
+    if (committed.bond) {
+        p.bonds = a->bonds;
+        p.bond0 = committed.bond;
+        p.m0 = fs0 + committed.npair;
+    }
     st = sbc_statics_solve(&p, x, th, &res, err);
     if (st == SBC_OK)
         st = a->ops->place(a->engine, x, th, res.records, history ? res.contacts : 0, err); /* no springs without friction */

@@ -39,6 +39,9 @@ typedef struct sbc_engine_ops {
     const double *(*centres)(const void *e);
     const double *(*radii)(const void *e);
     const double *(*rotations)(const void *e); /* [n] rad (2D) */
+    /* pair k's intact cohesive bond (1, with its moment on ij[0] into *m, N m) or 0; NULL where the engine has no
+       bonds (spheres) */
+    int (*bond)(const void *e, int k, double *m);
     /* interior newton (statics.h): every particle put at x, theta at rest, with the contacts' pair records
        (engine.h); NULL where the engine has no static solver (spheres) */
     sbc_status (*place)(void *e, const double *x, const double *theta, const double *records, int count,
@@ -57,7 +60,8 @@ typedef struct sbc_aggregate {
     const double *mass;           /* [frame n] the frame particles' masses, kg */
     double dt;                    /* s */
     sbc_frictional law;           /* eq. 6 */
-    int bonded;                   /* the engine has cohesive bonds (eqs. 7-8), which no linearization here holds */
+    const sbc_cohesive *bonds;    /* the engine's cohesive bonds (eqs. 7-8; law then holds their kn, ks, mu),
+                                     NULL: none */
     struct sbc_statics_tally *tally; /* interior newton: the solves' counts, NULL with interior dynamic */
 } sbc_aggregate;
 
@@ -68,6 +72,7 @@ typedef struct sbc_statics_tally {
     int solves;        /* static solves since the last row */
     int unconverged;   /* ... that stopped short of the tolerance (the dynamic relaxation finished them) */
     int retried;       /* ... that stalled at first and converged when tried again (statics.h: substeps) */
+    int broken;        /* cohesive bonds the solves broke since the last row */
     int mechanisms;    /* dofs held for want of stiffness at the last solve */
     double residual;   /* the last solve's relative residual */
     int fallback;      /* an unconverged solve: the increment is finished by the dynamic relaxation and the
@@ -102,7 +107,8 @@ int sbc_aggregate_newton(void *aggregate, const double *reaction, const double *
                          char *message, size_t cap);
 
 /* The engine's contact network (host/condensed.h) into net; its pair
- * arrays in *ij, *fs, which the caller frees (also on failure). */
+ * arrays in *ij (i [npair], j [npair], with bonds their flags [npair]),
+ * *fs, which the caller frees (also on failure). */
 struct sbc_network;
 sbc_status sbc_aggregate_network(const sbc_aggregate *a, struct sbc_network *net, int **ij, double **fs,
                                  sbc_error *err);

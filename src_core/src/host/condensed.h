@@ -26,7 +26,10 @@ typedef struct sbc_network {
     const int *i, *j;   /* [npair] */
     const double *fs;   /* [3 npair] the tangential spring's force on i, N, in the contact plane (the force on
                            i is -fn n + fs, n from i to j); NULL without friction */
-    sbc_frictional law; /* eq. 6 */
+    sbc_frictional law; /* eq. 6 (with bonds: their kn, ks, mu, which broken bonds and new contacts follow) */
+    const int *bond;    /* 2D: [npair] 1 where the pair is an intact cohesive bond (eqs. 7-8: its normal spring
+                           also in tension, its shear spring uncapped, its bending spring kr); NULL: none */
+    double kr;          /* the bonds' bending stiffness, N m/rad */
     const double *x0;   /* [dim n] the centres where the increment started (a material point's committed
                            state), or NULL; see sbc_condensed_tangent */
     const double *theta0, *theta; /* 3D with x0: [3n] the rotations where the increment started and now, rad */

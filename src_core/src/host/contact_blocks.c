@@ -48,7 +48,9 @@ double sbc_path_slip(const double x0a[2], const double x0b[2], double lx, double
  *   dfs = ks (t.dl - R_i dtheta_i - R_j dtheta_j)        sticking (with x0: grad I . dl for t.dl)
  *   dfs = -sgn(fs) mu kn (n.dl)                           sliding (|fs| at mu fn)
  * with dl = du_j - du_i; the first two terms turn the normal force with the
- * branch, the third the tangential one. */
+ * branch, the third the tangential one. An intact bond (eqs. 7-8) sticks
+ * whatever its force, pulls as it pushes, and adds its bending spring's
+ * moment m = kr (theta_j - theta_i) + m0 on i, -m on j. */
 static int block_2d(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_BLOCK_MOST])
 {
     const int a = net->i[k], b = net->j[k];
@@ -56,9 +58,10 @@ static int block_2d(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_
     const double lx = xb[0] - xa[0], ly = xb[1] - xa[1], d = sqrt(lx * lx + ly * ly);
     const double Ra = net->r[a], Rb = net->r[b], dn = Ra + Rb - d;
     const sbc_frictional *law = &net->law;
+    const int bond = net->bond && net->bond[k];
     double n[2], t[2], fn, fs, M[2][2], w[2][2] = {{0, 0}, {0, 0}}, g[2] = {0, 0}, gr[2] = {0, 0};
     int p, q, stick, slide;
-    if (!(dn > 0.0) || !(d > 0.0))
+    if ((!bond && !(dn > 0.0)) || !(d > 0.0))
         return 0; /* open */
     n[0] = lx / d;
     n[1] = ly / d;
@@ -66,7 +69,7 @@ static int block_2d(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_
     t[1] = n[0];
     fn = law->kn * dn;
     fs = net->fs ? net->fs[3 * k] * t[0] + net->fs[3 * k + 1] * t[1] : 0.0;
-    slide = law->ks > 0.0 && fabs(fs) >= law->mu * fn * (1.0 - SBC_SLIDING_BAND);
+    slide = !bond && law->ks > 0.0 && fabs(fs) >= law->mu * fn * (1.0 - SBC_SLIDING_BAND);
     stick = law->ks > 0.0 && !slide;
     for (p = 0; p < 2; ++p)
         for (q = 0; q < 2; ++q)
@@ -113,10 +116,10 @@ static int block_2d(const sbc_network *net, int k, double B[SBC_BLOCK_MOST][SBC_
         B[5][3 + p] = Rb * g[p];
         B[5][p] = -Rb * g[p];
     }
-    B[2][2] = Ra * gr[0];
-    B[2][5] = Ra * gr[1];
-    B[5][2] = Rb * gr[0];
-    B[5][5] = Rb * gr[1];
+    B[2][2] = Ra * gr[0] - (bond ? net->kr : 0.0);
+    B[2][5] = Ra * gr[1] + (bond ? net->kr : 0.0);
+    B[5][2] = Rb * gr[0] + (bond ? net->kr : 0.0);
+    B[5][5] = Rb * gr[1] - (bond ? net->kr : 0.0);
     return 1;
 }
 

@@ -27,6 +27,7 @@
 
 struct sbc_point {
     sbc_aggregate a;       /* its engine, frame, settings, masses, dt and contact law */
+    sbc_cohesive bonds;    /* the definition's bond law (a.bonds) */
     sbc_settings settings;
     sbc_frame frame;
     sbc_controller *ctl;
@@ -145,11 +146,11 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
         return err->status;
     if (!d->words || word_at(d->words, "remap") <= 0)
         s->remap = 0;
-    /* a point of frictional discs or spheres under D or P solves its increments statically unless its words
+    /* a point of frictional (or bonded) discs or spheres under D or P solves its increments statically unless its words
        say otherwise (interior, speed or remap given): its P is then a function of F, and its condensed tangent
        the derivative (docs/servo_bc.md, "Interior"); under T the static solves of irregular packings stall, so
        T keeps the relaxation unless the words ask */
-    if (!d->bonds && (s->bc == SBC_BC_D || s->bc == SBC_BC_P) && sbc_sparse_available() &&
+    if ((s->bc == SBC_BC_D || s->bc == SBC_BC_P) && sbc_sparse_available() &&
         (!d->words || (word_at(d->words, "interior") < 0 && word_at(d->words, "speed") < 0 &&
                        word_at(d->words, "remap") < 0))) {
         s->interior = SBC_INTERIOR_NEWTON;
@@ -163,12 +164,6 @@ static sbc_status point_words(sbc_settings *s, const sbc_point_def *d, sbc_error
     if (d->bonds && d->dim != 2)
         return sbc_fail(err, SBC_ERR_INPUT, "material point: cohesive bonds are the paper's 2D bonds (eqs. 7-8); "
                         "this point is 3D");
-    if (s->interior == SBC_INTERIOR_NEWTON && d->bonds)
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': interior newton integrates eq. 6, not the "
-                        "cohesive bonds (expected interior dynamic)", d->words);
-    if (d->bonds && s->update == SBC_UPDATE_NEWTON)
-        return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': update newton linearizes eq. 6 alone, not "
-                        "the cohesive bonds (expected update fixed or secant)", d->words);
     if (s->frame_group[0])
         return sbc_fail(err, SBC_ERR_INPUT, "material point: words '%s': keyword 'frame' names a host's group; a "
                         "point finds its frame from the packing", d->words);
@@ -423,7 +418,13 @@ sbc_point *sbc_point_create(const sbc_point_def *d, sbc_error *err)
     definition_of(d, p->definition);
     p->a.ops = d->dim == 3 ? &sbc_engine_ops_spheres : &sbc_engine_ops_discs;
     p->a.law = d->law;
-    p->a.bonded = d->bonds != NULL;
+    if (d->bonds) { /* the engine's law then (engine.h): broken bonds and new contacts follow eq. 6 with these */
+        p->bonds = *d->bonds;
+        p->a.bonds = &p->bonds;
+        p->a.law.kn = d->bonds->kn;
+        p->a.law.ks = d->bonds->ks;
+        p->a.law.mu = d->bonds->mu;
+    }
     p->a.n = d->n;
     p->a.frame = &p->frame;
     p->a.settings = &p->settings;

@@ -99,6 +99,34 @@ static double relative_residual(const statics_work *w)
     return worst > 0.0 ? HUGE_VAL : 0.0;
 }
 
+/* with bonds, at an evaluated iterate x: the intact bond furthest at or over eq. 8's criterion (the engine's
+   test, sbc_cohesive_criterion) broken; 1 when one broke */
+static int break_worst(statics_work *w, const double *x)
+{
+    double worst = 1.0;
+    int k, at = -1;
+    for (k = 0; w->bondc && k < w->cand.count; ++k)
+        if (w->bondc[k]) {
+            const int a = w->cand.i[k], b = w->cand.j[k];
+            const double lx = x[2 * b] - x[2 * a], ly = x[2 * b + 1] - x[2 * a + 1];
+            const double fn = w->p->law.kn * (w->p->r[a] + w->p->r[b] - sqrt(lx * lx + ly * ly));
+            sbc_bond bond;
+            double c;
+            bond.fs = w->fs[k];
+            bond.m = w->mc[k];
+            bond.broken = 0;
+            c = sbc_cohesive_criterion(w->p->bonds, fn, &bond);
+            if (c >= worst) {
+                worst = c;
+                at = k;
+            }
+        }
+    if (at < 0)
+        return 0;
+    w->intact[sbc_pair_index(w->p->npair0, w->p->i0, w->p->j0, w->cand.i[at], w->cand.j[at])] = 0;
+    return 1;
+}
+
 /* the candidate pairs rebuilt when a disc has moved half the reach since the last build */
 static sbc_status keep_candidates(statics_work *w, const double *x, sbc_error *err)
 {
@@ -123,6 +151,16 @@ static sbc_status keep_candidates(statics_work *w, const double *x, sbc_error *e
         double *psi = fs0c ? realloc(w->psi, sizeof(double) * (size_t)w->cand.capacity) : NULL;
         if (psi)
             w->psi = psi;
+        if (psi && w->intact) {
+            int *bondc = realloc(w->bondc, sizeof(int) * (size_t)w->cand.capacity);
+            double *mc = bondc ? realloc(w->mc, sizeof(double) * (size_t)w->cand.capacity) : NULL;
+            if (bondc)
+                w->bondc = bondc;
+            if (mc)
+                w->mc = mc;
+            if (!mc)
+                psi = NULL;
+        }
         if (fs)
             w->fs = fs;
         if (fsv)
@@ -142,6 +180,9 @@ static void work_free(statics_work *w)
     free(w->fsv);
     free(w->fs0c);
     free(w->psi);
+    free(w->bondc);
+    free(w->mc);
+    free(w->intact);
     free(w->res);
     free(w->unk);
     free(w->R);
@@ -206,8 +247,16 @@ static sbc_status work_init(statics_work *w, const sbc_statics_problem *p, sbc_e
             return sbc_fail(err, SBC_ERR_INPUT, "interior newton: committed pair %d (%d, %d) is out of order", k,
                             p->i0[k], p->j0[k]);
     }
-    /* reach: the pairs within a smallest radius of touching */
-    return sbc_pairs_init(&w->cand, w->dim, p->n, w->rmin, 0, 0, err);
+    if (p->bonds && w->dim == 2) { /* the committed bonds, each intact until this solve breaks it */
+        if (!(w->intact = malloc((size_t)(p->npair0 > 0 ? p->npair0 : 1))))
+            return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for %d pairs", p->npair0);
+        for (k = 0; k < p->npair0; ++k)
+            w->intact[k] = p->bond0 && p->bond0[k];
+    }
+    /* reach: the pairs within a smallest radius of touching; with bonds, within 1.5 times the longest an intact
+       bond stretches (fn_u / kn, eq. 8's first term alone), as the engine's list keeps them */
+    return sbc_pairs_init(&w->cand, w->dim, p->n, w->intact ? fmax(w->rmin, 1.5 * p->bonds->fn_u / p->law.kn) : w->rmin,
+                          0, 0, err);
 }
 
 /* the end state's touching pairs as pair records (engine.h) */
@@ -226,7 +275,7 @@ static sbc_status take_records(statics_work *w, const double *x, const double *t
         int q;
         for (q = 0; q < dim; ++q)
             d2 += (x[dim * b + q] - x[dim * a + q]) * (x[dim * b + q] - x[dim * a + q]);
-        if (dim == 3 ? !(rs - sqrt(d2) > 0.0) : d2 >= rs * rs) /* open, as evaluate saw it */
+        if (dim == 3 ? !(rs - sqrt(d2) > 0.0) : d2 >= rs * rs && !(w->bondc && w->bondc[k])) /* open, as evaluate saw it */
             continue;
         o = &res->records[SBC_PAIR_RECORD * c++];
         o[0] = a;
@@ -234,9 +283,9 @@ static sbc_status take_records(statics_work *w, const double *x, const double *t
         if (dim == 3) /* the spring as a vector (sbc_spheres_place) */
             memcpy(&o[2], &w->fsv[3 * k], sizeof(double) * 3);
         else {
-            o[2] = 0.0;
+            o[2] = w->bondc ? w->bondc[k] : 0;
             o[3] = w->fs[k];
-            o[4] = 0.0;
+            o[4] = w->bondc ? w->mc[k] : 0.0;
         }
     }
     return SBC_OK;
@@ -347,6 +396,8 @@ static void network_at(sbc_network *net, const statics_work *w, const sbc_static
     net->j = w->cand.j;
     net->fs = p->fs0 ? w->fsv : NULL;
     net->fs0 = p->fs0 ? w->fs0c : NULL;
+    net->bond = w->bondc;
+    net->kr = p->bonds ? p->bonds->kr : 0.0;
 }
 
 /* one solve from p's committed state (sbc_statics_solve, without the substeps) */
@@ -356,7 +407,7 @@ static sbc_status solve_once(const sbc_statics_problem *p, int turning, double *
     statics_work w;
     sbc_network net;
     double merit, shift = SHIFT_FIRST, ring[STALL_WINDOW];
-    int it, q;
+    int it, q, since = 0; /* the iterations since the start or the last bond broken */
     sbc_status st;
     memset(res, 0, sizeof *res);
     if ((st = work_init(&w, p, err)) != SBC_OK || (st = keep_candidates(&w, x, err)) != SBC_OK) {
@@ -379,9 +430,23 @@ static sbc_status solve_once(const sbc_statics_problem *p, int turning, double *
     net.free_rotation = p->free_rotation;
     merit = evaluate(&w, x, theta);
     res->residual = relative_residual(&w);
-    for (it = 0; it < p->max_iterations && !(res->residual <= attainable(&w)); ++it) {
-        double alpha = 1.0, step = 0.0, best_alpha = 0.0, lambda_keep[12], merit_before = merit;
+    for (it = 0;; ++it, ++since) {
+        double alpha = 1.0, step = 0.0, best_alpha = 0.0, lambda_keep[12], merit_before;
         int h, k;
+        if (res->residual <= attainable(&w)) { /* converged: with bonds over eq. 8, the worst broken, and on */
+            if (!w.intact || !break_worst(&w, x))
+                break;
+            res->broken++;
+            merit = evaluate(&w, x, theta);
+            res->residual = relative_residual(&w);
+            shift = fmax(shift, SHIFT_CUT);
+            since = 0;
+            if (res->residual <= attainable(&w))
+                continue;
+        }
+        if (since >= p->max_iterations)
+            break;
+        merit_before = merit;
         if (turning && it > 0 && p->fs0) { /* each rotation balanced with the rest held (statics_work.h) */
             network_at(&net, &w, p, x, theta, shift);
             if (sbc_statics_turn_sweep(&w, &net, x, theta, TURN_SHARE * res->residual * w.mean_force) < 0) {
@@ -443,8 +508,8 @@ static sbc_status solve_once(const sbc_statics_problem *p, int turning, double *
             break;
         merit = evaluate(&w, x, theta);
         res->residual = relative_residual(&w);
-        ring[it % STALL_WINDOW] = merit;
-        if (it >= STALL_WINDOW && merit > 0.5 * ring[(it + 1) % STALL_WINDOW]) {
+        ring[since % STALL_WINDOW] = merit;
+        if (since >= STALL_WINDOW && merit > 0.5 * ring[(since + 1) % STALL_WINDOW]) {
             res->iterations = it + 1;
             snprintf(res->why, sizeof res->why, "Newton stalled: the squared residual did not halve over "
                      "%d iterations (relative residual %.3e after %d)", STALL_WINDOW, res->residual, it + 1);
@@ -483,8 +548,8 @@ static sbc_status solve_once(const sbc_statics_problem *p, int turning, double *
 
 /* the committed state of a substep's problem: its centres, rotations and pairs, owned */
 typedef struct substep_state {
-    double *x0, *theta0, *fs0;
-    int *i0, *j0;
+    double *x0, *theta0, *fs0, *m0;
+    int *i0, *j0, *bond0;
 } substep_state;
 
 static void substep_free(substep_state *c)
@@ -494,6 +559,8 @@ static void substep_free(substep_state *c)
     free(c->fs0);
     free(c->i0);
     free(c->j0);
+    free(c->m0);
+    free(c->bond0);
     memset(c, 0, sizeof *c);
 }
 
@@ -510,13 +577,17 @@ static sbc_status substep_commit(sbc_statics_problem *q, substep_state *c, const
     c->fs0 = malloc(sizeof(double) * rd * m);
     c->i0 = malloc(sizeof(int) * m);
     c->j0 = malloc(sizeof(int) * m);
-    if (!c->x0 || !c->theta0 || !c->fs0 || !c->i0 || !c->j0)
+    c->m0 = malloc(sizeof(double) * m);
+    c->bond0 = malloc(sizeof(int) * m);
+    if (!c->x0 || !c->theta0 || !c->fs0 || !c->i0 || !c->j0 || !c->m0 || !c->bond0)
         return sbc_fail(err, SBC_ERR_NOMEM, "interior newton: out of memory for a substep of %d discs", q->n);
     memcpy(c->x0, x, sizeof(double) * dim * n);
     memcpy(c->theta0, theta, sizeof(double) * rd * n);
     for (k = 0; k < res->contacts; ++k) { /* the records' springs: 2D along t (slot 3), 3D a vector (2 .. 4) */
         c->i0[k] = (int)res->records[SBC_PAIR_RECORD * k];
         c->j0[k] = (int)res->records[SBC_PAIR_RECORD * k + 1];
+        c->bond0[k] = rd == 1 && res->records[SBC_PAIR_RECORD * k + 2] != 0.0; /* 2D: (i, j, bond, fs, m) */
+        c->m0[k] = rd == 1 ? res->records[SBC_PAIR_RECORD * k + 4] : 0.0;
         for (s = 0; s < (int)rd; ++s)
             c->fs0[rd * k + s] = res->records[SBC_PAIR_RECORD * k + (rd == 3 ? 2 + s : 3)];
     }
@@ -526,6 +597,8 @@ static sbc_status substep_commit(sbc_statics_problem *q, substep_state *c, const
     q->i0 = c->i0;
     q->j0 = c->j0;
     q->fs0 = q->fs0 ? c->fs0 : NULL;
+    q->bond0 = c->bond0;
+    q->m0 = c->m0;
     return SBC_OK;
 }
 
@@ -588,12 +661,14 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
        (the relaxation finishes it) */
     for (parts = p->fs0 ? 1 : 2; parts <= SUBSTEPS_MOST && !ok && st == SBC_OK; parts *= 2) {
         sbc_statics_problem q = *p;
+        int broken = 0;
         for (k = 1, ok = 1; k <= parts && ok && st == SBC_OK; ++k) {
             substep_start(p, &q, xt, tht, (double)k / parts, xf, thf);
             sbc_statics_result_free(&part);
             if ((st = solve_once(&q, p->fs0 != NULL, xf, thf, &part, err)) != SBC_OK)
                 break;
             iterations += part.iterations;
+            broken += part.broken;
             ok = part.converged;
             if (ok && k < parts)
                 st = substep_commit(&q, &c, xf, thf, &part, err);
@@ -605,6 +680,7 @@ sbc_status sbc_statics_solve(const sbc_statics_problem *p, double *x, double *th
             *res = part;
             memset(&part, 0, sizeof part);
             res->iterations = (int)iterations;
+            res->broken = broken;
             res->substeps = parts;
         }
     }

@@ -11,7 +11,13 @@
  * iterations; the Jacobian is the condensed tangent's contact blocks
  * (condensed.h), so each Newton step is exact where no contact changes
  * status. The frame's condition is part of the system, with the condensed
- * tangent's unknowns: (D) the frame prescribed; (P) each family of periodic
+ * tangent's unknowns. Cohesive bonds (2D, eqs. 7-8) are integrated alike:
+ * the normal spring in tension too, the shear spring from its committed
+ * value uncapped, the bending spring m = m0 + kr (dtheta_j - dtheta_i);
+ * where a converged iterate puts bonds at or over eq. 8's criterion, the
+ * worst one breaks (eq. 6 from then on) and the iteration goes on, one bond
+ * at a time (a bond's failure unloads or loads its neighbours, which the
+ * next solve sees). The frame: (D) the frame prescribed; (P) each family of periodic
  * images shares one fluctuation and one rotation, whose net loads vanish,
  * the corners following F; (T) every frame particle free under
  * a_q = P A_q + m, with eq. 15 and the frame's mean translation kept from
@@ -54,6 +60,9 @@ typedef struct sbc_statics_problem {
     const int *i0, *j0;
     const double *fs0;          /* 2D [npair0] their tangential springs (N, the force on i along t), 3D [3 npair0]
                                    (the force on i, a vector); NULL: no tangential history (frictionless) */
+    const sbc_cohesive *bonds;  /* 2D: the cohesive bonds' law (eqs. 7-8; law holds its kn, ks, mu), NULL: none */
+    const int *bond0;           /* with bonds: [npair0] 1 where the committed pair is an intact bond */
+    const double *m0;           /* with bonds: [npair0] its bending moment on i, N m */
     double tol;                 /* converged: every free dof's net force, and net moment over R, at most tol
                                    times the mean contact force */
     int max_iterations;
@@ -64,11 +73,13 @@ typedef struct sbc_statics_result {
     int converged;    /* 1: the residual reached tol */
     int mechanisms;   /* dofs held for want of stiffness, at the last iteration */
     double residual;  /* the last relative residual (as tol) */
-    int contacts;     /* touching pairs at the end */
+    int contacts;     /* touching pairs and intact bonds at the end */
+    int broken;       /* bonds broken by the solve (eq. 8 reached at a converged iterate: the worst one broken,
+                         and the iteration on from there, until every intact bond is below the criterion) */
     int substeps;     /* 0: one solve; else the parts the frame's move was cut into, each solved from the last
                          (a solve that stalled is tried again whole, then in 2, 4, 8 parts, each with the
                          rotations balanced one by one at every iteration: sbc_statics_turn_sweep) */
-    double *records;  /* [SBC_PAIR_RECORD contacts] of the end state: 2D (i, j, 0, fs, 0) (engine.h), 3D
+    double *records;  /* [SBC_PAIR_RECORD contacts] of the end state: 2D (i, j, bond, fs, m) (engine.h), 3D
                          (i, j, fs_x, fs_y, fs_z) (sbc_spheres_place) */
     char why[200];    /* not converged: why */
 } sbc_statics_result;

@@ -60,14 +60,19 @@ static double contact_3d(statics_work *w, int k, const double *x, const double *
 static double contact_2d(statics_work *w, int k, const double *x, const double *theta)
 {
     const sbc_statics_problem *p = w->p;
-    const int a = w->cand.i[k], b = w->cand.j[k];
+    const int a = w->cand.i[k], b = w->cand.j[k], c0 = p->fs0 ? committed_pair(w, a, b) : -1;
+    const int bond = c0 >= 0 && w->intact && w->intact[c0];
     const double lx = x[2 * b] - x[2 * a], ly = x[2 * b + 1] - x[2 * a + 1], rs = p->r[a] + p->r[b];
     const double d2 = lx * lx + ly * ly;
-    double d, nx, ny, dn, fn, fs = 0.0, fx, fy;
+    double d, nx, ny, dn, fn, fs = 0.0, m = 0.0, fx, fy;
     w->fs[k] = 0.0;
     w->psi[k] = 0.0;
     w->fsv[3 * k] = w->fsv[3 * k + 1] = w->fsv[3 * k + 2] = 0.0;
-    if (d2 >= rs * rs)
+    if (w->bondc) {
+        w->bondc[k] = bond;
+        w->mc[k] = 0.0;
+    }
+    if (!bond && d2 >= rs * rs)
         return -1.0; /* open: the spring is lost */
     d = sqrt(d2);
     nx = lx / d;
@@ -77,13 +82,22 @@ static double contact_2d(statics_work *w, int k, const double *x, const double *
         double g[2];
         const double slip = sbc_path_slip(&p->x0[2 * a], &p->x0[2 * b], lx, ly, g) -
                             (p->r[a] * (theta[a] - p->theta0[a]) + p->r[b] * (theta[b] - p->theta0[b]));
-        const int c0 = committed_pair(w, a, b);
+        const double y = (c0 >= 0 ? p->fs0[c0] : 0.0) + p->law.ks * slip;
         fs = c0 >= 0 ? p->fs0[c0] : 0.0;
-        if (p->law.ks > 0.0) {
-            const double y = fs + p->law.ks * slip, over = fmax(0.0, fabs(y) - p->law.mu * p->law.kn * dn);
-            w->psi[k] = -(y * y - over * over) / (2.0 * p->law.ks);
+        if (bond) { /* eq. 7: the shear spring uncapped, the bending spring from its committed moment */
+            fn = p->law.kn * dn;
+            fs = y;
+            m = p->m0[c0] + p->bonds->kr * ((theta[b] - p->theta0[b]) - (theta[a] - p->theta0[a]));
+            w->mc[k] = m;
+            w->psi[k] = -(p->law.ks > 0.0 ? y * y / (2.0 * p->law.ks) : 0.0) -
+                        (p->bonds->kr > 0.0 ? m * m / (2.0 * p->bonds->kr) : 0.0);
+        } else {
+            if (p->law.ks > 0.0) {
+                const double over = fmax(0.0, fabs(y) - p->law.mu * p->law.kn * dn);
+                w->psi[k] = -(y * y - over * over) / (2.0 * p->law.ks);
+            }
+            fn = sbc_frictional_force(&p->law, dn, slip, &fs, NULL);
         }
-        fn = sbc_frictional_force(&p->law, dn, slip, &fs, NULL);
     } else
         fn = p->law.kn * dn;
     w->fs[k] = fs;
@@ -93,10 +107,10 @@ static double contact_2d(statics_work *w, int k, const double *x, const double *
     fy = -fn * ny + fs * nx;
     w->res[3 * a] += fx;
     w->res[3 * a + 1] += fy;
-    w->res[3 * a + 2] += p->r[a] * fs;
+    w->res[3 * a + 2] += p->r[a] * fs + m;
     w->res[3 * b] -= fx;
     w->res[3 * b + 1] -= fy;
-    w->res[3 * b + 2] += p->r[b] * fs;
+    w->res[3 * b + 2] += p->r[b] * fs - m;
     return sqrt(fn * fn + fs * fs);
 }
 

@@ -23,6 +23,9 @@ typedef struct statics_work {
     double *psi;             /* [cand capacity] the tangential spring's potential in the rotations, J:
                                 -(|y|^2 - max(0, |y| - mu fn)^2) / (2 ks), y the trial in the contact plane (whose
                                 gradient over a particle's rotation is the spring's moment on it; concave) */
+    int *bondc;              /* with bonds: [cand capacity] 1 where the candidate was evaluated as an intact bond */
+    double *mc;              /* with bonds: [cand capacity] ... its bending moment on i, N m */
+    unsigned char *intact;   /* with bonds: [npair0] the committed bonds not broken by this solve */
     double *res;             /* [nd n] net loads of the iterate on each dof, N and N m */
     int *unk;                /* [nd n] each dof's unknown, -1 prescribed (condensed.h) */
     int L, nu;               /* the dofs' unknowns, and all unknowns with (T)'s multipliers */

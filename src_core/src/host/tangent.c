@@ -19,7 +19,7 @@ sbc_status sbc_aggregate_affine(const sbc_aggregate *a, const double F[9], doubl
     const sbc_frictional *law = &a->law;
     double Finv[9];
     int c, i, j, k, l;
-    if (a->bonded)
+    if (a->bonds)
         return sbc_fail(err, SBC_ERR_INPUT, "affine tangent: it sums the contacts of eq. 6; this aggregate's "
                         "cohesive bonds (eqs. 7-8) are not in it (use the perturbation tangent)");
     memset(C, 0, sizeof(double) * 81);

@@ -319,13 +319,6 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
                         s->servo_line, s->settings.frame_group);
     if ((st = sbc_script_outputs_check(s, err)) != SBC_OK)
         return st;
-    if (s->cohesive && s->settings.update == SBC_UPDATE_NEWTON && s->settings.bc != SBC_BC_D)
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'update': newton linearizes the contacts, not "
-                        "the cohesive bonds of 'contact cohesive' (expected fixed or secant)", s->servo_line);
-    if (s->cohesive && s->settings.interior == SBC_INTERIOR_NEWTON)
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'interior': newton integrates eq. 6, not the "
-                        "cohesive bonds of 'contact cohesive' (eqs. 7-8), in this version (expected dynamic)",
-                        s->servo_line);
 
     if ((st = sbc_packing_distinct(s->packing.n, s->packing.x, s->packing.r, err)) != SBC_OK ||
         (st = sbc_frame_detect_packing(&r.frame, &s->packing, err)) != SBC_OK)
@@ -395,7 +388,7 @@ sbc_status sbc_script_run_once(script *s, sbc_error *err)
     r.aggregate.mass = r.mass;
     r.aggregate.dt = s->dt;
     r.aggregate.law = s->law;
-    r.aggregate.bonded = s->cohesive;
+    r.aggregate.bonds = s->cohesive ? &s->bond_law : NULL;
     r.aggregate.tally = s->settings.interior == SBC_INTERIOR_NEWTON ? &r.tally : NULL;
     if (s->check) {
         if (s->log)

@@ -95,6 +95,8 @@ typedef struct sbc_engine_view {
     const int *pair_i, *pair_j;
     const unsigned char *pair_bond; /* [pair_count] 1 = intact bond; NULL in a scene without bonds */
     const double *pair_fs;          /* [pair_count] tangential spring force, N; NULL without friction */
+    const double *pair_m;           /* [pair_count] an intact bond's moment on pair_i (eqs. 7-8), N m; NULL without
+                                       bonds */
     int bond_count, bonds_initial;  /* intact bonds now and at creation */
     sbc_frictional law;
     long step;
