@@ -9,7 +9,8 @@
 - a frictional 5 x 5 lattice (ks 2e3 N/m, mu 0.4, nothing slides) under (P) and (T): condensed against
   perturbation within 1e-3 of |C| (the issue's figure before sliding; measured 9e-5 and 1.3e-4);
 - cohesive bonds on the touching lattice stretched along x: the perturbation tangent's C1111 = C2222 =
-  N kb_n / (N - 1) to 1e-4; affine and condensed refused by line and keyword;
+  N kb_n / (N - 1) to 1e-4, the condensed one's to 1e-9 (interior dynamic and newton); affine refused by line
+  and keyword;
 - refusals: `tangent` with mixed, an unknown kind, and a tangent file over the script, each with the line and the
   keyword; `servo-bc --decks` leaves the keyword out of the hosts' decks.
 Prints "N passed, N failed". Usage: python3 tests/tangent_runner.py SERVO_BC"""
@@ -117,7 +118,7 @@ with tempfile.TemporaryDirectory() as tmp:
 
     # cohesive bonds (eqs. 7-8) on the touching lattice, stretched by F11 = 1.001 in 2 increments: the
     # perturbation tangent C1111 = C2222 = N kb_n / (N - 1) (the bonds hold in tension as in compression) at
-    # increment 0 and both increments; the affine and condensed tangents are refused
+    # increment 0 and both increments; the condensed tangent alike (the bonds' blocks), the affine refused
     bonded = ['dimension 2', 'lattice square 5 5 spacing 2e-3 radius 1e-3',
               'contact cohesive kn 1e4 ks 4e3 kr 1e-4 fn 1e3 fs 1e3 mr 1e3 mu 0', 'density 2e3', 'timestep 2e-6']
     rc, log = run(tmp, 'bonded', bonded + ['servo_bc D F 1.001 0 0 1 increments 2 accuracy tight file bonded.csv '
@@ -129,9 +130,17 @@ with tempfile.TemporaryDirectory() as tmp:
     check(len(C) == 3 and worst <= 1e-4 and vertical <= 1e-4, 'cohesive bonds: perturbation C1111 and C2222 within '
           '%.2e and %.2e of N kb_n / (N - 1) at %d rows%s' % (worst, vertical, len(C),
                                                                 '' if rc == 0 else ': ' + log[-200:]))
-    rc, log = run(tmp, 'bonded_condensed', bonded + ['servo_bc D F 1.001 0 0 1 tangent condensed b.csv', 'run'])
-    check(rc != 0 and 'servo_bc (line 6)' in log and "keyword 'tangent'" in log and 'expected perturbation'
-          in log, 'cohesive bonds: condensed refused: ' + log.strip().splitlines()[-1])
+    for interior in ('dynamic', 'newton'):  # the bonds' blocks in the condensed tangent
+        rc, log = run(tmp, 'bonded_condensed_' + interior,
+                      bonded + ['servo_bc D F 1.001 0 0 1 increments 2 accuracy tight interior %s tangent condensed '
+                                'bonded_%s.csv' % (interior, interior), 'run'])
+        C = rows(os.path.join(tmp, 'bonded_%s.csv' % interior)) if rc == 0 else []
+        worst = max((abs(float(c[k]) - want) / want for c in C for k in ('C1111', 'C2222')), default=float('inf'))
+        check(len(C) == 3 and worst <= 1e-9, 'cohesive bonds, interior %s: condensed C1111 and C2222 within %.2e of '
+              'N kb_n / (N - 1) at %d rows%s' % (interior, worst, len(C), '' if rc == 0 else ': ' + log[-200:]))
+    rc, log = run(tmp, 'bonded_affine', bonded + ['servo_bc D F 1.001 0 0 1 tangent affine b.csv', 'run'])
+    check(rc != 0 and 'servo_bc (line 6)' in log and "keyword 'tangent'" in log and 'expected condensed or '
+          'perturbation' in log, 'cohesive bonds: affine refused: ' + log.strip().splitlines()[-1])
     rc, log = run(tmp, 'mixed', ['dimension 2', 'lattice square 5 5 spacing 2e-3 radius 1.01e-3',
                                  'contact frictional kn 1e4 ks 0 mu 0', 'density 2e3', 'timestep 2e-6',
                                  'servo_bc mixed stress P22 -10 1 F 1 0.001 0 1 tangent condensed m.csv', 'run'])

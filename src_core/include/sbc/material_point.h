@@ -48,8 +48,9 @@ typedef struct sbc_point_def {
     double dt;          /* time step, s */
     const sbc_cohesive *bonds; /* 2D: NULL, or cohesive bonds (eqs. 7-8) between the discs touching at creation
                                   (gap below 1e-6 of the smallest radius, as the runner's 'contact cohesive');
-                                  their state is the point's. The affine and condensed tangents linearize eq. 6
-                                  only and refuse a bonded point; the perturbation tangent takes it */
+                                  their state is the point's (and the law's kn, ks, mu replace law's, for
+                                  broken bonds and new contacts). The affine tangent sums eq. 6 only and
+                                  refuses a bonded point; the condensed and perturbation tangents take it */
 } sbc_point_def;
 
 /* dim 2, no packing, words "D", the contact law's default, density 2e3

@@ -26,10 +26,10 @@ sbc_status sbc_script_tangent_open(const script *s, int dim, sbc_script_tangent 
     if (s->settings.bc == SBC_BC_MIXED)
         return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'tangent': the condition is mixed; the "
                         "tangents are those of (D), (P) and (T) in this version", s->servo_line);
-    if (s->cohesive && s->settings.tangent != SBC_TANGENT_PERTURBATION)
-        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'tangent': %s linearizes the contacts of "
-                        "eq. 6 alone, and the contacts are cohesive (eqs. 7-8; expected perturbation)",
-                        s->servo_line, sbc_tangent_name(s->settings.tangent));
+    if (s->cohesive && s->settings.tangent == SBC_TANGENT_AFFINE)
+        return sbc_fail(err, SBC_ERR_INPUT, "servo_bc (line %d): keyword 'tangent': affine sums the contacts of "
+                        "eq. 6 alone, and the contacts are cohesive (eqs. 7-8; expected condensed or perturbation)",
+                        s->servo_line);
     if (s->check) /* probed with the other outputs */
         return SBC_OK;
     if (!(t->fp = sbc_output_open(s->settings.tangent_file, SBC_OUTPUT_RESULTS, "servo_bc keyword 'tangent'", err)))
