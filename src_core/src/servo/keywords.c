@@ -122,7 +122,7 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
     {"interior",
      "`dynamic` or `newton`",
      "how the interior reaches each new position of the frame: `dynamic`, relaxation by the host's dynamics "
-         "with damping; `newton` (embedded runner, discs and spheres; D, P, T, mixed): the static equilibrium at the "
+         "with damping; `newton` (embedded runner, discs (with cohesive bonds too) and spheres; D, P, T, mixed): the static equilibrium at the "
          "frame's commands, the contact laws integrated over the increment by backward Euler and solved by Newton on "
          "the contact network's stiffness, then certified as every row (see \"Interior\"); the frame jumps "
          "to its commands (`speed 0`, `remap none`); hosts refuse it",
@@ -140,7 +140,7 @@ const sbc_keyword sbc_keywords[SBC_KEYWORDS] = {
      "`affine`, `condensed` or `perturbation`, then a path",
      "the embedded runner's: the tangent C̄ = ∂P̄/∂F̄ at every converged increment into a CSV, "
          "`increment,C1111,C1112,…` (dim⁴ columns, C_ijkl with (ij), (kl) row-major); D, P, T on discs "
-         "or spheres (with cohesive bonds only perturbation; see [fe2.md](fe2.md)); hosts refuse it",
+         "or spheres (with cohesive bonds condensed or perturbation; see [fe2.md](fe2.md)); hosts refuse it",
      "none"},
 };
 
