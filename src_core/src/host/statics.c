@@ -384,6 +384,55 @@ static void frame_start(const sbc_frame *f, int dim, int n, const double *x0, do
     affine_start(f, dim, n, x0, x);
 }
 
+/* (P): the frame's periodic families start at their committed places carried by the map the corners take, and
+ * every frame particle at its committed rotation (unknowns too, shared by a family, and by the corners),
+ * x_q = c + M (x0_q - c0), M = E E0^-1, E = sum_c (x_c - c) (x) (x0_c - c0), E0 = sum_c (x0_c - c0) (x) (x0_c - c0)
+ * over the corners (prescribed at F X, about their centroids c, c0), and not at the commands' F X_q, which drop
+ * the fluctuations and turn the rotations to zero that the committed state had found (3.7 mean contact forces
+ * out of balance at the start, a seventh of the contacts open, on a 55-disc point whose committed state was
+ * balanced); the interior follows by affine_start. A family's members keep their periodic offsets:
+ * M (x0_a - x0_b) = M Fc (X_a - X_b) = F (X_a - X_b). */
+static void periodic_start(const sbc_frame *f, int dim, int n, const double *x0, const double *theta0, double *x,
+                           double *theta)
+{
+    const int rd = dim == 3 ? 3 : 1;
+    const int corners = dim == 3 ? 8 : 4;
+    double c0[3] = {0, 0, 0}, c[3] = {0, 0, 0}, E0[9] = {0}, E[9] = {0}, M[9];
+    int q, k, l, at;
+    for (at = 0; at < corners; ++at)
+        for (k = 0; k < dim; ++k) {
+            c0[k] += x0[dim * f->particle[f->corner[at]] + k] / corners;
+            c[k] += x[dim * f->particle[f->corner[at]] + k] / corners;
+        }
+    for (at = 0; at < corners; ++at) {
+        const int i = f->particle[f->corner[at]];
+        for (k = 0; k < dim; ++k)
+            for (l = 0; l < dim; ++l) {
+                E0[SBC_IJ(k, l)] += (x0[dim * i + k] - c0[k]) * (x0[dim * i + l] - c0[l]);
+                E[SBC_IJ(k, l)] += (x[dim * i + k] - c[k]) * (x0[dim * i + l] - c0[l]);
+            }
+    }
+    for (q = 0; q < f->n; ++q)
+        for (k = 0; k < rd; ++k)
+            theta[rd * f->particle[q] + k] = theta0[rd * f->particle[q] + k];
+    if (!sbc_tensor_right_divide(dim, E, E0, M))
+        return;
+    for (q = 0; q < f->n; ++q) {
+        const int i = f->particle[q];
+        for (at = 0; at < corners && f->corner[at] != q; ++at)
+            ;
+        if (at < corners)
+            continue; /* a corner: at F X */
+        for (k = 0; k < dim; ++k) {
+            double y = c[k];
+            for (l = 0; l < dim; ++l)
+                y += M[SBC_IJ(k, l)] * (x0[dim * i + l] - c0[l]);
+            x[dim * i + k] = y;
+        }
+    }
+    affine_start(f, dim, n, x0, x);
+}
+
 /* the contact network of the iterate x for a Newton step under the pseudo-time term shift (of kn) */
 static void network_at(sbc_network *net, const statics_work *w, const sbc_statics_problem *p, double *x,
                        const double *theta, double shift)
@@ -417,6 +466,8 @@ static sbc_status solve_once(const sbc_statics_problem *p, int turning, double *
     memcpy(w.xe, x, sizeof(double) * (size_t)w.dim * (size_t)p->n);
     if (p->bc == SBC_BC_T)
         frame_start(p->frame, w.dim, p->n, p->x0, x);
+    else if (p->bc == SBC_BC_P)
+        periodic_start(p->frame, w.dim, p->n, p->x0, p->theta0, x, theta);
     memset(&net, 0, sizeof net);
     net.dim = w.dim;
     net.n = p->n;
