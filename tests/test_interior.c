@@ -21,6 +21,9 @@
  *   with the rotations balanced one by one (no relaxation).
  * - Four frictional points sheared in a batch on 1 and 2 threads: the same
  *   bits.
+ * - A (P) point integrated again at its committed F returns its committed P
+ *   to 1e-12: the solve starts from the committed frame (fluctuations and
+ *   rotations), not from the commands.
  * - The mixed layer (its T components moved by the servo between static
  *   solves) on the frictional packing: every row certified with P22 =
  *   P22*, the same bytes in two runs; on the lattice, test_mixed.c.
@@ -332,6 +335,53 @@ static void consistent_tangent(void)
     sbc_packing_free(&pk);
 }
 
+/* a (P) point sheared in three committed steps, integrated again at its committed F: its committed P to 1e-12
+   (the solve starts at the committed state, the frame's periodic fluctuations and rotations included; from the
+   commands' F X_q and zero rotations it iterated back to the equilibrium, 3.6e-11 away, or stalled) */
+static void periodic_start_kept(void)
+{
+    char path[512];
+    sbc_packing pk;
+    sbc_point_def def = sbc_point_def_default();
+    sbc_point *p = NULL;
+    sbc_error err;
+    double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, P[9], Fc[9], Pc[9], ratio, worst = 0.0;
+    int k, ok = 1;
+    memset(&pk, 0, sizeof pk);
+    if (!packing_path(path, sizeof path) || sbc_packing_read(&pk, path, &err) != SBC_OK) {
+        CHECK(0);
+        return;
+    }
+    def.n = pk.n;
+    def.x = pk.x;
+    def.r = pk.r;
+    def.box = pk.has_box ? pk.box : NULL;
+    def.words = "P accuracy tight";
+    def.law.kn = KN;
+    def.law.ks = 5e3;
+    def.law.mu = 0.5;
+    def.density = 2e3;
+    def.dt = 1e-4;
+    p = sbc_point_create(&def, &err);
+    for (k = 1; p && ok && k <= 3; ++k) {
+        F[1] = 0.001 * k;
+        F[0] = 1.0 - 0.0005 * k;
+        ok = sbc_point_integrate(p, F, P, &ratio, &err) == SBC_POINT_CONVERGED && sbc_point_commit(p) == SBC_OK;
+    }
+    CHECK(p != NULL && ok);
+    if (p && ok) {
+        sbc_point_committed(p, Fc, Pc);
+        CHECK(sbc_point_integrate(p, Fc, P, &ratio, &err) == SBC_POINT_CONVERGED);
+        for (k = 0; k < 9; ++k)
+            worst = fmax(worst, fabs(P[k] - Pc[k]) / fabs(Pc[0]));
+        CHECK(worst <= 1e-12);
+        printf("  interior: (P) point integrated again at its committed F after three shear steps: P %.2e of |P11| "
+               "from the committed P\n", worst);
+    }
+    sbc_point_free(p);
+    sbc_packing_free(&pk);
+}
+
 /* four frictional 55-disc points (interior newton, the default) sheared in a batch on 1 and on 2 threads:
    the same P bit for bit (each point's increment is a function of its committed state and F alone) */
 static void threads(void)
@@ -425,6 +475,7 @@ void test_interior(void)
     stalled_then_turned();
     mixed_layer();
     consistent_tangent();
+    periodic_start_kept();
     threads();
     refusals();
 }
