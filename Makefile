@@ -291,6 +291,7 @@ fe2-patch: $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(B)/fe2-deps.in
 	SERVO_BC_LIB=$(B)/libservo_bc.so $(FE2_PYTHON) fe2/patch.py $(FE2_TANGENTS)
 	bash tests/fe2_mpi.sh $(B)/libservo_bc.so $(FE2_PYTHON)
 	bash tests/fe2_demo.sh $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(FE2_PYTHON)
+	bash tests/fe2_irregular.sh $(B)/libservo_bc.so $(B)/servo-bc $(FE2_PYTHON)
 
 # FE2_DEMO: fe2/biaxial.py's options, e.g. '--elements 4 --n0 100' for the full size (docs/fe2.md)
 FE2_DEMO ?=

@@ -137,11 +137,12 @@ class Macro:
         return self._gathered(self.pool.map(lambda p: p.tangent(h), self.points))
 
     # one load step
-    def newton(self, fixed, values, tol=1e-8, max_iterations=12, step=0, external=None):
+    def newton(self, fixed, values, tol=1e-8, max_iterations=12, step=0, external=None, on_iteration=None):
         """Newton from the committed state to the dofs `fixed` at `values`, under the nodal loads `external`
         (per dof, N per unit thickness; None: none). Returns (converged, ratio, history): history the residual
         norms relative to the reaction norm, ratio the points' suggested step ratio when one failed (else 1).
-        The points hold the state of the last iteration (commit or revert it)."""
+        on_iteration(step, iteration, residual) after each residual. The points hold the state of the last
+        iteration (commit or revert it)."""
         free = np.setdiff1d(np.arange(self.mf.nbdof()), fixed)
         U = self.U.copy()
         U[fixed] = values
@@ -157,6 +158,8 @@ class Macro:
             reaction = np.linalg.norm(r[fixed])
             norm = np.linalg.norm(r[free]) / (reaction if reaction > 0 else 1.0)
             history.append(norm)
+            if on_iteration:
+                on_iteration(step, iteration, norm)
             if norm <= tol:
                 self.trial_U, self.trial_P, self.trial_r = U, P, r
                 return True, 1.0, history
@@ -178,16 +181,16 @@ class Macro:
             p.revert()
 
     def load(self, fixed, values_at, steps, tol=1e-8, max_iterations=12, min_fraction=1e-3, on_step=None,
-             external_at=None):
+             external_at=None, on_iteration=None):
         """The load path t in [0, 1] in `steps` equal steps, the dofs `fixed` at values_at(t) under the nodal
         loads external_at(t) (None: none); a step whose points fail or whose Newton does not converge is reverted
         and cut (by the points' ratio, else by half), down to min_fraction of a step. on_step(t, macro, history)
-        after every committed step."""
+        after every committed step, on_iteration(step, iteration, residual) after every macro iteration."""
         t, dt, cuts, k = 0.0, 1.0 / steps, 0, 0
         while t < 1.0 - 1e-12:
             dt = min(dt, 1.0 - t)
             ok, ratio, history = self.newton(fixed, values_at(t + dt), tol, max_iterations, k + 1,
-                                             external_at(t + dt) if external_at else None)
+                                             external_at(t + dt) if external_at else None, on_iteration)
             if not ok:
                 self.revert()
                 cuts += 1
