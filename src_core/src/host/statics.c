@@ -457,6 +457,8 @@ static sbc_status solve_once(const sbc_statics_problem *p, int turning, double *
     sbc_network net;
     double merit, shift = SHIFT_FIRST, ring[STALL_WINDOW];
     int it, q, since = 0; /* the iterations since the start or the last bond broken */
+    for (q = 0; q < STALL_WINDOW; ++q)
+        ring[q] = HUGE_VAL; /* an iteration without a step writes no merit: no stall measured against it */
     sbc_status st;
     memset(res, 0, sizeof *res);
     if ((st = work_init(&w, p, err)) != SBC_OK || (st = keep_candidates(&w, x, err)) != SBC_OK) {
@@ -492,6 +494,8 @@ static sbc_status solve_once(const sbc_statics_problem *p, int turning, double *
             res->residual = relative_residual(&w);
             shift = fmax(shift, SHIFT_CUT);
             since = 0;
+            for (q = 0; q < STALL_WINDOW; ++q)
+                ring[q] = HUGE_VAL;
             if (res->residual <= attainable(&w))
                 continue;
         }
