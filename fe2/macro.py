@@ -29,7 +29,14 @@ TANGENTS = ('condensed', 'affine', 'perturbation')
 
 class MacroFailure(RuntimeError):
     """A load step that cannot be completed: the points failed below the smallest step, or the Newton did not
-    converge; the message names the step, the iteration and the residual."""
+    converge; the message names the step, the iteration and the residual and ends with the last attempt's Newton
+    history, which `history` holds (the residual norms over the reaction, one per iteration)."""
+
+    def __init__(self, message, history=()):
+        self.history = list(history)
+        if self.history:
+            message += '; its Newton history: ' + ' '.join('%.2e' % h for h in self.history)
+        super().__init__(message)
 
 
 def _column_major(rows, dim=2):
@@ -197,7 +204,7 @@ class Macro:
                 dt *= ratio
                 if dt < min_fraction / steps:
                     raise MacroFailure('fe2: load step at t = %.6g cut below %.3g of a step: %s'
-                                       % (t, min_fraction, self.last_message))
+                                       % (t, min_fraction, self.last_message), history)
                 continue
             self.commit()
             t += dt

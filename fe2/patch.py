@@ -11,6 +11,8 @@ and top D, the sides P).
 3. (D) along the load path u = t (F2 - I) X on the boundary (F2 - I = 4 (F - I)) in one step with a Newton of at most 2 iterations, too few
    for the whole step: the step is reverted and cut in half, and the cut path ends bit for bit where two half steps
    from the start end, at the closed form's nodal forces.
+4. A step whose Newton cannot converge (a tolerance no residual meets) stops the path with MacroFailure, whose
+   message and `history` carry the last attempt's residuals.
 
 Prints one line per condition and tangent, then `patch max relative difference VALUE` (the largest over
 everything above with the condensed tangent, relative to the largest closed-form nodal force); exits 1 when it
@@ -111,5 +113,19 @@ if not (cuts >= 1 and cuts2 == 0 and same):
     print('FAIL patch D load path: expected a cut step ending where two half steps end')
     failures += 1
 worst = max(worst, path_diff)
+# a step that cannot converge (a tolerance no residual meets) stops the path with its last Newton history
+stuck = macro.Macro(W, H, NX, NY, lambda k, X: macro.lattice_point('D accuracy tight'), tangent='condensed')
+edge = stuck.dofs_where(lambda x, y, c: np.isclose(x, 0.0) or np.isclose(y, 0.0) or np.isclose(x, W) or
+                        np.isclose(y, H))
+goal = uniform(stuck, F_PATH)
+try:
+    stuck.load(edge, lambda t: t * goal[edge], 1, tol=-1.0, max_iterations=2, min_fraction=0.3)
+    history = None
+except macro.MacroFailure as e:
+    history, message = e.history, str(e)
+print('patch D failed load step: its Newton history %s in the exception' % history)
+if not (history is not None and len(history) == 3 and 'its Newton history: ' in message):
+    print('FAIL patch D failed load step: expected MacroFailure with the last attempt\'s 3 residuals')
+    failures += 1
 print('patch max relative difference %.3e' % worst)
 sys.exit(1 if failures or not worst <= LIMIT else 0)
