@@ -192,7 +192,7 @@ fuzz: $(FUZZ_NAMES:%=$(B)/fuzz/%_fuzzer) $(B)/fuzz/corpus/restart/seed.bin
 # The C suite under valgrind in two halves side by side (about 10 minutes each on
 # the CI machine): the suites named here, and all the others.
 VALGRIND = valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect -q
-VALGRIND_HALF = generate,irregular3d,point
+VALGRIND_HALF = generate,irregular3d,point,interior,interior-bonds
 check-valgrind: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot
 	@mkdir -p $(B)/valgrind-a $(B)/valgrind-b
 	@SBC_TEST_SUITE=$(VALGRIND_HALF) $(VALGRIND) $(B)/run_tests $(B)/servo-bc $(B)/valgrind-a > $(B)/valgrind-a.log 2>&1 & \
