@@ -388,9 +388,9 @@ static void frame_start(const sbc_frame *f, int dim, int n, const double *x0, do
  * every frame particle at its committed rotation (unknowns too, shared by a family, and by the corners),
  * x_q = c + M (x0_q - c0), M = E E0^-1, E = sum_c (x_c - c) (x) (x0_c - c0), E0 = sum_c (x0_c - c0) (x) (x0_c - c0)
  * over the corners (prescribed at F X, about their centroids c, c0), and not at the commands' F X_q, which drop
- * the fluctuations and turn the rotations to zero that the committed state had found (3.7 mean contact forces
- * out of balance at the start, a seventh of the contacts open, on a 55-disc point whose committed state was
- * balanced); the interior follows by affine_start. A family's members keep their periodic offsets:
+ * the fluctuations and turn the rotations to zero that the committed state had found (a balanced point then
+ * started far out of balance at its own committed F: docs/servo_bc.md, "Interior"); the interior follows by
+ * affine_start. A family's members keep their periodic offsets:
  * M (x0_a - x0_b) = M Fc (X_a - X_b) = F (X_a - X_b). */
 static void periodic_start(const sbc_frame *f, int dim, int n, const double *x0, const double *theta0, double *x,
                            double *theta)
