@@ -60,6 +60,23 @@ static int packing_path(char *path, size_t cap)
                         "strain 0.01\n", path, cap, &made);
 }
 
+/* a point of the frictional packing pk (kn KN, ks 5e3 N/m, mu 0.5, 2e3 kg/m^2, dt 1e-4 s) with words */
+static sbc_point_def frictional_point(const sbc_packing *pk, const char *words)
+{
+    sbc_point_def def = sbc_point_def_default();
+    def.n = pk->n;
+    def.x = pk->x;
+    def.r = pk->r;
+    def.box = pk->has_box ? pk->box : NULL;
+    def.words = words;
+    def.law.kn = KN;
+    def.law.ks = 5e3;
+    def.law.mu = 0.5;
+    def.density = 2e3;
+    def.dt = 1e-4;
+    return def;
+}
+
 /* the script (its last "%s" the csv path, before it the words) into rows; the row count or -1 */
 static int run_case(const char *tag, const char *script, const char *words, double rows[][CSV_COLS], int max,
                     char *csv, size_t cap)
@@ -312,18 +329,8 @@ static void consistent_tangent(void)
         return;
     }
     for (w = 0; w < 3; ++w) {
-        sbc_point_def def = sbc_point_def_default();
+        sbc_point_def def = frictional_point(&pk, words[w]);
         double C[81] = {0}, D[81] = {0}, gap;
-        def.n = pk.n;
-        def.x = pk.x;
-        def.r = pk.r;
-        def.box = pk.has_box ? pk.box : NULL;
-        def.words = words[w];
-        def.law.kn = KN;
-        def.law.ks = 5e3;
-        def.law.mu = 0.5;
-        def.density = 2e3;
-        def.dt = 1e-4;
         gap = tangent_map_gap(&def, 1, 0, C, D, &err); /* F12 = 0.001 k, F11 = 1 - 0.0005 k */
         if (gap < 0.0)
             printf("  interior: point: %s\n", err.message);
@@ -342,7 +349,7 @@ static void periodic_start_kept(void)
 {
     char path[512];
     sbc_packing pk;
-    sbc_point_def def = sbc_point_def_default();
+    sbc_point_def def;
     sbc_point *p = NULL;
     sbc_error err;
     double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, P[9], Fc[9], Pc[9], ratio, worst = 0.0;
@@ -352,16 +359,7 @@ static void periodic_start_kept(void)
         CHECK(0);
         return;
     }
-    def.n = pk.n;
-    def.x = pk.x;
-    def.r = pk.r;
-    def.box = pk.has_box ? pk.box : NULL;
-    def.words = "P accuracy tight";
-    def.law.kn = KN;
-    def.law.ks = 5e3;
-    def.law.mu = 0.5;
-    def.density = 2e3;
-    def.dt = 1e-4;
+    def = frictional_point(&pk, "P accuracy tight");
     p = sbc_point_create(&def, &err);
     for (k = 1; p && ok && k <= 3; ++k) {
         F[1] = 0.001 * k;
@@ -400,17 +398,7 @@ static void threads(void)
         return;
     }
     for (k = 0; k < COUNT; ++k) {
-        sbc_point_def def = sbc_point_def_default();
-        def.n = pk.n;
-        def.x = pk.x;
-        def.r = pk.r;
-        def.box = pk.has_box ? pk.box : NULL;
-        def.words = "P accuracy tight";
-        def.law.kn = KN;
-        def.law.ks = 5e3;
-        def.law.mu = 0.5;
-        def.density = 2e3;
-        def.dt = 1e-4;
+        sbc_point_def def = frictional_point(&pk, "P accuracy tight");
         memset(&F[9 * k], 0, sizeof(double) * 9);
         F[9 * k] = 1.0 - 0.0005 * k;
         F[9 * k + 1] = 0.001 * (k + 1);

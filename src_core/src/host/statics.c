@@ -350,6 +350,27 @@ done:
     free(in_frame);
 }
 
+/* the frame particles (but the corners, with skip_corners) at c + M (x0_q - c0): their committed places carried
+   by the map M about the centroids c0 (committed) and c (now), m */
+static void carry_frame(const sbc_frame *f, int dim, const double *x0, const double c0[3], const double c[3],
+                        const double M[9], int skip_corners, double *x)
+{
+    int q, k, l, at;
+    for (q = 0; q < f->n; ++q) {
+        const int i = f->particle[q];
+        for (at = 0; skip_corners && at < (dim == 3 ? 8 : 4) && f->corner[at] != q; ++at)
+            ;
+        if (skip_corners && at < (dim == 3 ? 8 : 4))
+            continue; /* a corner: at its command */
+        for (k = 0; k < dim; ++k) {
+            double y = c[k];
+            for (l = 0; l < dim; ++l)
+                y += M[SBC_IJ(k, l)] * (x0[dim * i + l] - c0[l]);
+            x[dim * i + k] = y;
+        }
+    }
+}
+
 /* (T): the frame starts as its committed shape carried by the map that gives it the commands' eq. 15 and mean
  * place: x_q = c + M (x0_q - c0), M = E(x) E(x0)^-1, E(y) = sum_q (y_q - c_y) (x) A_q, c the centroid of the
  * commanded frame, c0 of the committed one (the constraints of eq. 15 and of the mean translation then hold at
@@ -372,15 +393,7 @@ static void frame_start(const sbc_frame *f, int dim, int n, const double *x0, do
             }
     if (!sbc_tensor_right_divide(dim, E, E0, M))
         return;
-    for (q = 0; q < f->n; ++q) {
-        const int i = f->particle[q];
-        for (k = 0; k < dim; ++k) {
-            double y = c[k];
-            for (l = 0; l < dim; ++l)
-                y += M[SBC_IJ(k, l)] * (x0[dim * i + l] - c0[l]);
-            x[dim * i + k] = y;
-        }
-    }
+    carry_frame(f, dim, x0, c0, c, M, 0, x);
     affine_start(f, dim, n, x0, x);
 }
 
@@ -417,19 +430,7 @@ static void periodic_start(const sbc_frame *f, int dim, int n, const double *x0,
             theta[rd * f->particle[q] + k] = theta0[rd * f->particle[q] + k];
     if (!sbc_tensor_right_divide(dim, E, E0, M))
         return;
-    for (q = 0; q < f->n; ++q) {
-        const int i = f->particle[q];
-        for (at = 0; at < corners && f->corner[at] != q; ++at)
-            ;
-        if (at < corners)
-            continue; /* a corner: at F X */
-        for (k = 0; k < dim; ++k) {
-            double y = c[k];
-            for (l = 0; l < dim; ++l)
-                y += M[SBC_IJ(k, l)] * (x0[dim * i + l] - c0[l]);
-            x[dim * i + k] = y;
-        }
-    }
+    carry_frame(f, dim, x0, c0, c, M, 1, x); /* the corners stay at F X */
     affine_start(f, dim, n, x0, x);
 }
 
