@@ -11,6 +11,7 @@
 #   make figures  every figure and table of docs/reproduction-*.md, regenerated (hours; FIGURES=... for some)
 #   make fe2-patch   the FE^2 patch test on GetFEM (docs/fe2.md)
 #   make fe2-demo    the FE^2 biaxial test with (D), (P), (T) points beside a DNS: out/fe2/biaxial.csv, .svg
+#   make fe2-demo3d  the 3D FE^2 triaxial test with (D), (P) points beside a DNS: out/fe2/triaxial.csv, .svg
 #   make fuzz     libFuzzer campaigns over the core's input surfaces (FUZZ_RUNS per harness; docs/reliability.md)
 #   make install PREFIX=/usr/local   the library, headers, runner, Python modules, docs, pkg-config and CMake
 #                 files (DESTDIR too); make uninstall PREFIX=... removes them (docs/core.md, "Installing")
@@ -52,7 +53,7 @@ FUZZ_RUNS  ?= 1000000
 FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src -DSBC_PACKING_MAX=64L
 
 .PHONY: all demo compare check deps install uninstall check-install check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
-  check-yade fe2-patch fe2-demo lammps liggghts fuzz figures \
+  check-yade fe2-patch fe2-demo fe2-demo3d lammps liggghts fuzz figures \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
@@ -292,12 +293,20 @@ fe2-patch: $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(B)/fe2-deps.in
 	bash tests/fe2_mpi.sh $(B)/libservo_bc.so $(FE2_PYTHON)
 	bash tests/fe2_demo.sh $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(FE2_PYTHON)
 	bash tests/fe2_irregular.sh $(B)/libservo_bc.so $(B)/servo-bc $(FE2_PYTHON)
+	bash tests/fe2_demo3d.sh $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(FE2_PYTHON)
 
 # FE2_DEMO: fe2/biaxial.py's options, e.g. '--elements 4 --n0 100' for the full size (docs/fe2.md)
 FE2_DEMO ?=
 fe2-demo: $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(B)/fe2-deps.installed
 	SERVO_BC_LIB=$(B)/libservo_bc.so $(FE2_PYTHON) fe2/biaxial.py --runner $(B)/servo-bc --plot $(B)/servo-bc-plot \
 	  --out out/fe2 $(FE2_DEMO)
+
+# FE2_DEMO3D: fe2/triaxial.py's options, e.g. '--elements 2 --n0 60' for the full size, '--only D,P,T,DNS' to try
+# (T) points (docs/fe2.md, "The 3D macro model")
+FE2_DEMO3D ?=
+fe2-demo3d: $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(B)/fe2-deps.installed
+	SERVO_BC_LIB=$(B)/libservo_bc.so $(FE2_PYTHON) fe2/triaxial.py --runner $(B)/servo-bc --plot $(B)/servo-bc-plot \
+	  --out out/fe2 $(FE2_DEMO3D)
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)
@@ -329,6 +338,7 @@ bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangent
 	bash bench/remap_scaling.sh $(B)/servo-bc
 	bash bench/interior_scaling.sh $(B)/servo-bc
 	DIMENSION=3 bash bench/interior_scaling.sh $(B)/servo-bc
+	bash bench/generate_scaling.sh $(B)/servo-bc
 	@$(MAKE) --no-print-directory lammps liggghts > $(B)/bench-hosts.log 2>&1 || \
 	  { echo "bench: LAMMPS or LIGGGHTS could not be built (see $(B)/bench-hosts.log)"; exit 0; }; \
 	  bash bench/lammps_overhead.sh $(B)/lmp_servo && \

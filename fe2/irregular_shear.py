@@ -49,7 +49,7 @@ def run(bc, args, x, r, box, rows):
         return core.MaterialPoint(x, r, '%s accuracy %s' % (bc, args.accuracy), kn=1e4, ks=5e3, mu=0.5,
                                   density=2e3, dt=1e-4, box=box)
 
-    m = macro.Macro(W, H, 2, 2, make_point, tangent='condensed', threads=args.threads)
+    m = macro.Macro((W, H), (2, 2), make_point, tangent='condensed', threads=args.threads)
     bottom = m.dofs_where(lambda X, Y, c: abs(Y) < 1e-12)
     top_x = m.dofs_where(lambda X, Y, c: abs(Y - H) < 1e-12 and c == 0)
     top_y = m.dofs_where(lambda X, Y, c: abs(Y - H) < 1e-12 and c == 1)

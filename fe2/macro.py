@@ -1,18 +1,18 @@
-"""FE^2 on GetFEM: a plane-strain, finite-strain, quasi-static finite element model whose quadrature
+"""FE^2 on GetFEM: a finite-strain, quasi-static finite element model, plane strain (2D) or 3D, whose quadrature
 points are servo_bc material points (material_point.h through yade_adapter/servo_bc_core.py).
 
-Total Lagrangian: the unknown is the displacement u(X) on the reference mesh (bilinear quadrilaterals,
-2 x 2 Gauss points); at every Gauss point F = I + Grad u goes to the point, which returns the first
-Piola stress P (N/m: a 2D aggregate's force per unit length, so nodal forces are in N per unit
-thickness of the model). The residual and the tangent are GetFEM's generic assembly of
+Total Lagrangian: the unknown is the displacement u(X) on the reference mesh (bilinear quadrilaterals with 2 x 2
+Gauss points, or trilinear hexahedra with 2 x 2 x 2); at every Gauss point F = I + Grad u goes to the point, which
+returns the first Piola stress P (2D: N/m, a 2D aggregate's force per unit length, so nodal forces are in N per
+unit thickness of the model; 3D: N/m^2, nodal forces in N). The residual and the tangent are GetFEM's generic
+assembly of
 
-    r_a = int P : Grad N_a dA            K_ab = int (C : Grad N_b) : Grad N_a dA,   C_ijkl = dP_ij/dF_kl
+    r_a = int P : Grad N_a dV            K_ab = int (C : Grad N_b) : Grad N_a dV,   C_ijkl = dP_ij/dF_kl
 
 with P and C stored at the Gauss points (GetFEM im_data, column-major). The macro Newton, its
 convergence test, the commit / revert of every point and the cut of a load step are ours (docs/fe2.md).
 """
 import concurrent.futures
-import math
 import os
 import sys
 
@@ -63,49 +63,67 @@ def _tangent_column_major(rows, dim=2):
 
 
 class Macro:
-    """A rectangle [0, W] x [0, H] of nx x ny bilinear elements, a material point per Gauss point made by
-    make_point(index, X) (X the point's reference position, m). tangent: 'condensed', 'affine' or 'perturbation'
-    (step h)."""
+    """A rectangle [0, W] x [0, H] of nx x ny bilinear elements (lengths (W, H), divisions (nx, ny)), or a box
+    [0, W] x [0, H] x [0, D] of trilinear ones (lengths (W, H, D), divisions (nx, ny, nz)), a material point per
+    Gauss point made by make_point(index, X) (X the point's reference position, m). tangent: 'condensed', 'affine'
+    or 'perturbation' (step h)."""
 
-    def __init__(self, W, H, nx, ny, make_point, tangent='condensed', h=1e-5, threads=2, comm=None):
+    BOUNDARY = 1  # the mesh region of the outer faces
+
+    def __init__(self, lengths, divisions, make_point, tangent='condensed', h=1e-5, threads=2, comm=None):
         if tangent not in TANGENTS:
             raise ValueError("fe2: tangent '%s' (expected one of %s)" % (tangent, ', '.join(TANGENTS)))
+        if len(lengths) not in (2, 3) or len(divisions) != len(lengths):
+            raise ValueError('fe2: lengths %r and divisions %r (expected 2 or 3 of each)' % (lengths, divisions))
         self.tangent, self.h, self.threads, self.comm = tangent, h, threads, comm
-        self.mesh = gf.Mesh('cartesian', np.linspace(0.0, W, nx + 1), np.linspace(0.0, H, ny + 1))
-        self.mf = gf.MeshFem(self.mesh, 2)
+        self.dim = d = len(lengths)
+        self.mesh = gf.Mesh('cartesian', *[np.linspace(0.0, L, n + 1) for L, n in zip(lengths, divisions)])
+        self.mesh.set_region(self.BOUNDARY, self.mesh.outer_faces())
+        self.mf = gf.MeshFem(self.mesh, d)
         self.mf.set_classical_fem(1)
-        self.mim = gf.MeshIm(self.mesh, gf.Integ('IM_GAUSS_PARALLELEPIPED(2,3)'))
+        self.mim = gf.MeshIm(self.mesh, gf.Integ('IM_GAUSS_PARALLELEPIPED(%d,3)' % d))
         self.md = gf.Model('real')
         self.md.add_fem_variable('u', self.mf)
-        self.md.add_im_data('P', gf.MeshImData(self.mim, -1, [2, 2]))
-        self.md.add_im_data('C', gf.MeshImData(self.mim, -1, [2, 2, 2, 2]))
-        self.mimd_F = gf.MeshImData(self.mim, -1, [2, 2])
-        where = self.md.interpolation('X', gf.MeshImData(self.mim, -1, [2])).reshape(-1, 2)
+        self.md.add_im_data('P', gf.MeshImData(self.mim, -1, [d, d]))
+        self.md.add_im_data('C', gf.MeshImData(self.mim, -1, [d, d, d, d]))
+        self.md.add_initialized_data('P0', np.zeros(d * d), [d, d])
+        self.mimd_F = gf.MeshImData(self.mim, -1, [d, d])
+        where = self.md.interpolation('X', gf.MeshImData(self.mim, -1, [d])).reshape(-1, d)
         # on the ranks of comm (mpi4py), each rank keeps the points k = rank, rank + size, ...; every rank
         # assembles and solves the macro problem alike from the gathered P and C
         rank, size = (comm.Get_rank(), comm.Get_size()) if comm is not None else (0, 1)
         self.count = len(where)
         self.mine = list(range(rank, self.count, size))
         self.points = [make_point(k, where[k]) for k in self.mine]
-        self.X = self.mf.basic_dof_nodes()          # [2, ndof] the node of each dof
-        self.comp = np.arange(self.mf.nbdof()) % 2   # the component of each dof (Q1 vector: interleaved)
+        self.X = self.mf.basic_dof_nodes()          # [dim, ndof] the node of each dof
+        self.comp = np.arange(self.mf.nbdof()) % d   # the component of each dof (Q1 vector: interleaved)
         self.U = np.zeros(self.mf.nbdof())
         self.pool = concurrent.futures.ThreadPoolExecutor(max(1, threads))
 
     # the fields at the Gauss points
     def deformation(self, U):
-        """F at every Gauss point, 9-slot row-major (F33 = 1)."""
+        """F at every Gauss point, 9-slot row-major (2D: F33 = 1)."""
+        d = self.dim
         self.md.set_variable('u', U)
-        Fc = self.md.interpolation('Id(2)+Grad_u', self.mimd_F).reshape(-1, 4)
+        Fc = self.md.interpolation('Id(%d)+Grad_u' % d, self.mimd_F).reshape(-1, d * d)
+        if d == 3:
+            return [[f[0], f[3], f[6], f[1], f[4], f[7], f[2], f[5], f[8]] for f in Fc]
         return [[f[0], f[2], 0.0, f[1], f[3], 0.0, 0.0, 0.0, 1.0] for f in Fc]
 
     def internal_forces(self, P):
-        """r_a = int P : Grad N_a dA (N per unit thickness)."""
-        self.md.set_variable('P', _column_major(P))
+        """r_a = int P : Grad N_a dV (2D: N per unit thickness; 3D: N)."""
+        self.md.set_variable('P', _column_major(P, self.dim))
         return np.asarray(gf.asm_generic(self.mim, 1, 'P:Grad_Test_u', -1, self.md, 'select_output', 'u'))
 
+    def traction_forces(self, P):
+        """The nodal forces of a uniform first Piola stress P (9 slots) on the outer faces: f_a = int (P N) . N_a dS
+        (N the outward normal), per dof."""
+        self.md.set_variable('P0', _column_major([P], self.dim))
+        return np.asarray(gf.asm_generic(self.mim, 1, '(P0*Normal).Test_u', self.BOUNDARY, self.md,
+                                         'select_output', 'u'))
+
     def stiffness(self, C):
-        self.md.set_variable('C', _tangent_column_major(C))
+        self.md.set_variable('C', _tangent_column_major(C, self.dim))
         K = gf.asm_generic(self.mim, 2, '(C:Grad_Test2_u):Grad_Test_u', -1, self.md, 'select_output', 'u', 'u')
         jc, ir = K.csc_ind()
         n = self.mf.nbdof()
@@ -214,22 +232,26 @@ class Macro:
         return cuts
 
     def dofs_where(self, predicate):
-        """The dofs whose node satisfies predicate(x, y, component)."""
-        return np.array([k for k in range(self.mf.nbdof()) if predicate(self.X[0, k], self.X[1, k], self.comp[k])],
-                        dtype=int)
+        """The dofs whose node satisfies predicate(x, y, component) (3D: predicate(x, y, z, component))."""
+        return np.array([k for k in range(self.mf.nbdof()) if predicate(*self.X[:, k], self.comp[k])], dtype=int)
 
 
-def lattice_point(words, N=5, spacing=2e-3, radius=1.01e-3, kn=1e4, ks=2e3, mu=0.4, density=2e3, dt=2e-6):
-    """A material point on a prestressed N x N square lattice (radius > spacing / 2), frictional."""
-    x = [c * spacing for j in range(N) for i in range(N) for c in (i, j)]
-    return core.MaterialPoint(x, [radius] * (N * N), words, kn=kn, ks=ks, mu=mu, density=density, dt=dt)
+def lattice_point(words, N=5, spacing=2e-3, radius=1.01e-3, kn=1e4, ks=2e3, mu=0.4, density=2e3, dt=2e-6, dim=2):
+    """A material point on a prestressed N x N square lattice (radius > spacing / 2), frictional; dim 3: an
+    N x N x N cubic lattice of spheres (density then in kg/m^3)."""
+    if dim == 3:
+        x = [c * spacing for k in range(N) for j in range(N) for i in range(N) for c in (i, j, k)]
+    else:
+        x = [c * spacing for j in range(N) for i in range(N) for c in (i, j)]
+    return core.MaterialPoint(x, [radius] * N ** dim, words, kn=kn, ks=ks, mu=mu, density=density, dt=dt, dim=dim)
 
 
-def read_packing(path):
-    """A 2D packing written by the runner's `write_packing text`: x [2n], r [n], box [4] or None. ValueError when
-    the count its first line announces ('# servo_bc packing: 121 discs, ...') is not the discs it holds (a torn
-    file), or a line is not 'x y r'."""
+def read_packing(path, dim=2):
+    """A packing written by the runner's `write_packing text`: x [dim n], r [n], box [4] (2D) or None. ValueError
+    when the count its first line announces ('# servo_bc packing: 121 discs, ...') is not the particles it holds (a
+    torn file), or a line is not 'x y r' ('x y z r' in 3D)."""
     x, r, box, announced = [], [], None, None
+    expected = 'x y r' if dim == 2 else 'x y z r'
     with open(path) as f:
         for number, line in enumerate(f, 1):
             words = line.split()
@@ -237,33 +259,14 @@ def read_packing(path):
                 announced = int(words[3])
             if not words or words[0].startswith('#'):
                 continue
-            if words[0] != 'box' and len(words) != 3:
-                raise ValueError('%s line %d: %d values (expected x y r)' % (path, number, len(words)))
+            if words[0] != 'box' and len(words) != dim + 1:
+                raise ValueError('%s line %d: %d values (expected %s)' % (path, number, len(words), expected))
             if words[0] == 'box':
                 box = [float(v) for v in words[1:5]]
                 continue
-            x += [float(words[0]), float(words[1])]
-            r.append(float(words[2]))
+            x += [float(v) for v in words[:dim]]
+            r.append(float(words[dim]))
     if announced is not None and announced != len(r):
-        raise ValueError('%s: its first line announces %d discs and it holds %d (a torn or edited file)'
-                         % (path, announced, len(r)))
+        raise ValueError('%s: its first line announces %d %s and it holds %d (a torn or edited file)'
+                         % (path, announced, 'discs' if dim == 2 else 'spheres', len(r)))
     return x, r, box
-
-
-def boundary_forces(P, W, H, nx, ny, X, comp):
-    """The nodal forces of a uniform P on the rectangle's edges (f_a = P . int N_a N0 dS), per dof."""
-    f = np.zeros(len(comp))
-    hx, hy = W / nx, H / ny
-    for k in range(len(comp)):
-        x, y, i = X[0, k], X[1, k], comp[k]
-        for on, normal, share in ((math.isclose(x, 0.0, abs_tol=1e-12 * W), (-1.0, 0.0), hy),
-                                  (math.isclose(x, W, abs_tol=1e-12 * W), (1.0, 0.0), hy),
-                                  (math.isclose(y, 0.0, abs_tol=1e-12 * H), (0.0, -1.0), hx),
-                                  (math.isclose(y, H, abs_tol=1e-12 * H), (0.0, 1.0), hx)):
-            if not on:
-                continue
-            ends = (normal[0] != 0.0 and (math.isclose(y, 0.0, abs_tol=1e-12 * H) or math.isclose(y, H, abs_tol=1e-12 * H))) \
-                or (normal[1] != 0.0 and (math.isclose(x, 0.0, abs_tol=1e-12 * W) or math.isclose(x, W, abs_tol=1e-12 * W)))
-            length = share / 2.0 if ends else share
-            f[k] += (P[3 * i] * normal[0] + P[3 * i + 1] * normal[1]) * length
-    return f

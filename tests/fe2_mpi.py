@@ -20,7 +20,7 @@ if sys.argv[1:] == ['mpi']:
 rank = comm.Get_rank() if comm is not None else 0
 W = H = 0.2
 F = [0.9985, 0.0008, 0.0, -0.0003, 0.999, 0.0, 0.0, 0.0, 1.0]
-model = macro.Macro(W, H, 2, 2, lambda k, X: macro.lattice_point('P accuracy balanced'), tangent='condensed',
+model = macro.Macro((W, H), (2, 2), lambda k, X: macro.lattice_point('P accuracy balanced'), tangent='condensed',
                     threads=1, comm=comm)
 target = np.array([(F[3 * c] - (1.0 if c == 0 else 0.0)) * x + (F[3 * c + 1] - (1.0 if c == 1 else 0.0)) * y
                    for x, y, c in zip(model.X[0], model.X[1], model.comp)])

@@ -358,10 +358,47 @@ static void spheres(void)
     sbc_sphere_packing_free(&c);
 }
 
+/* 3D, polydispersity 2: a sphere of radius r crossing the three faces at the
+ * corner beside a corner sphere of radius R_c does not overlap it once r >=
+ * R_c / (sqrt 3 - 1) = 1.37 R_c, so the corner is the largest sphere where
+ * another would cross there (n0 60, seed 2: particle 0, r = 1.06 mm, was the
+ * corner and a sphere of 1.97 mm crossed its three faces, which no frame
+ * takes). Only the corner sphere's eight copies may cross every face. */
+static void corner_not_crossed(void)
+{
+    sbc_generate_def d = sbc_generate_def_default();
+    sbc_sphere_packing a;
+    sbc_error err;
+    int i, k, crossing = 0, corners = 0;
+    double rmax = 0.0, corner_r = 0.0;
+    d.n = 60;
+    d.r_min = 1e-3;
+    d.polydispersity = 2.0;
+    d.seed = 2;
+    d.strain = 0.01;
+    CHECK(sbc_generate_periodic_3d(&d, &a, NULL, &err) == SBC_OK);
+    for (i = 0; i < a.n; ++i) {
+        int all = 1, at = 1;
+        for (k = 0; k < 3; ++k) {
+            all &= a.x[3 * i + k] - a.r[i] < 0.0 || a.x[3 * i + k] + a.r[i] > a.L;
+            at &= a.x[3 * i + k] == 0.0 || a.x[3 * i + k] == a.L;
+        }
+        crossing += all && !at;
+        corners += at;
+        if (at) corner_r = a.r[i];
+        rmax = fmax(rmax, a.r[i]);
+    }
+    CHECK(crossing == 0 && corners == 8 && corner_r == rmax);
+    printf("  generate: 3D, n0 60, polydispersity 2, seed 2: %d spheres, the corner sphere the largest (%.4g mm), "
+           "%d others crossing the three faces at the corner\n", a.n, 1e3 * corner_r, crossing);
+    sbc_sphere_packing_free(&a);
+}
+
 void test_generate(void)
 {
     strained();
     spheres();
+    corner_not_crossed();
     sbc_generate_def d = sbc_generate_def_default();
     sbc_packing a, b;
     sbc_generate_info ia, ib;

@@ -24,17 +24,39 @@ sbc_generate_def sbc_generate_def_default(void)
     return d;
 }
 
-static double wrap(double a, double L) { return a - L * floor(a / L); }
 
 static double quantize(double a) { return ldexp(nearbyint(ldexp(a, 50)), -50); }
 
-static double image(double d, double L) { return d - L * floor(d / L + 0.5); }
+/* floor(t) for |t| < 2^62 without a libm call (the inner loop's): the same value */
+static double floor_small(double t)
+{
+    const double k = (double)(long long)t;
+    return k > t ? k - 1.0 : k;
+}
+
+static double image(double d, double L) { return d - L * floor_small(d / L + 0.5); }
+
+static double wrap(double a, double L) { return a - L * floor_small(a / L); }
 
 typedef struct box {
     int dim, n;
     double L, rmax, *x, *r, *v, *f; /* x, v, f [dim n] */
     int *head, *next, cells; /* periodic cell list, cells^dim heads */
+    /* the pairs that may touch (within r_i + r_j + skin when listed), in the
+       order in which the cell list visits them; -1 in listed: not listed */
+    int *pair, npair, cap, listed, *cell;
+    double skin, *x0; /* x0 [dim n]: the centres when listed */
 } box;
+
+/* the neighbour list's skin, in largest radii: a list is made again when a
+   particle has moved by half of it */
+#define SKIN 0.3
+
+static void box_free(box *b, box *keep)
+{
+    free(b->x); free(b->r); free(b->v); free(b->f); free(b->head); free(b->next); free(b->cell); free(b->x0);
+    free(b->pair); free(keep->x);
+}
 
 static double pair_force(box *b, int i, int j)
 {
@@ -68,20 +90,20 @@ static void cell_of(const box *b, int i, int nc, int c[3])
     }
 }
 
-/* Overlap forces (unit stiffness) and energy sum(overlap^2)/2 in the periodic
- * box: a periodic cell list (cells >= 2 rmax wide) when the box holds at least
- * 3 cells a side, all pairs otherwise. */
-static double forces(box *b)
+/* The pairs (i, j > i) in the order the overlap sum visits them: every pair
+ * when nc < 3 (or above the cells allocated), else i ascending and, for each,
+ * the 3^dim cells around its own in a periodic cell list of nc cells a side
+ * (each >= 2 rmax wide), each cell's particles newest first. visit(b, i, j)
+ * for each; cell[i] (when not NULL) gets particle i's cell. */
+static void visit_pairs(box *b, int nc, int *cell, void (*visit)(box *, int, int, void *), void *ctx)
 {
     const int dim = b->dim;
-    double e = 0.0;
-    int i, j, k, nc = (int)(b->L / (2.0 * b->rmax)), ncell = 1, oz, oy, ox;
-    memset(b->f, 0, sizeof(double) * (size_t)dim * (size_t)b->n);
+    int i, j, k, ncell = 1, oz, oy, ox;
     if (nc < 3 || nc > b->cells) {
         for (i = 0; i < b->n; ++i)
             for (j = i + 1; j < b->n; ++j)
-                e += pair_force(b, i, j);
-        return e;
+                visit(b, i, j, ctx);
+        return;
     }
     for (k = 0; k < dim; ++k)
         ncell *= nc;
@@ -93,6 +115,8 @@ static double forces(box *b)
         k = (c[2] * nc + c[1]) * nc + c[0];
         b->next[i] = b->head[k];
         b->head[k] = i;
+        if (cell)
+            cell[i] = k;
     }
     for (i = 0; i < b->n; ++i) {
         int c[3];
@@ -104,9 +128,89 @@ static double forces(box *b)
                     for (j = b->head[(z * nc + (c[1] + oy + nc) % nc) * nc + (c[0] + ox + nc) % nc]; j >= 0;
                          j = b->next[j])
                         if (j > i)
-                            e += pair_force(b, i, j);
+                            visit(b, i, j, ctx);
                 }
     }
+}
+
+static void sum_pair(box *b, int i, int j, void *e) { *(double *)e += pair_force(b, i, j); }
+
+/* the pair (i, j) goes to the list when its gap is below the skin; a full list
+   (out of memory) is marked by listed = 0 */
+static void list_pair(box *b, int i, int j, void *unused)
+{
+    double d2 = 0.0, reach = b->r[i] + b->r[j] + b->skin;
+    int k;
+    (void)unused;
+    for (k = 0; k < b->dim; ++k) {
+        const double d = image(b->x[b->dim * j + k] - b->x[b->dim * i + k], b->L);
+        d2 += d * d;
+    }
+    if (d2 >= reach * reach || !b->listed)
+        return;
+    if (b->npair == b->cap) {
+        int cap = b->cap ? 2 * b->cap : 8 * b->n, *more = realloc(b->pair, sizeof(int) * 2 * (size_t)cap);
+        if (!more) {
+            b->listed = 0;
+            return;
+        }
+        b->pair = more;
+        b->cap = cap;
+    }
+    b->pair[2 * b->npair] = i;
+    b->pair[2 * b->npair + 1] = j;
+    ++b->npair;
+}
+
+/* Whether the list still holds every pair that can touch, in the order of
+   visit_pairs: the same cell size, no particle in another cell, none moved by
+   more than half the skin since it was made. */
+static int list_holds(const box *b, int nc)
+{
+    const int dim = b->dim, direct = nc < 3 || nc > b->cells;
+    int i, k;
+    if (!b->listed || b->listed != (direct ? -1 : nc))
+        return 0;
+    for (i = 0; i < b->n; ++i) {
+        double d2 = 0.0;
+        for (k = 0; k < dim; ++k) {
+            const double d = image(b->x[dim * i + k] - b->x0[dim * i + k], b->L);
+            d2 += d * d;
+        }
+        if (4.0 * d2 >= b->skin * b->skin)
+            return 0;
+        if (!direct) {
+            int c[3];
+            cell_of(b, i, nc, c);
+            if ((c[2] * nc + c[1]) * nc + c[0] != b->cell[i])
+                return 0;
+        }
+    }
+    return 1;
+}
+
+/* Overlap forces (unit stiffness) and energy sum(overlap^2)/2 in the periodic
+ * box, the pairs summed in visit_pairs' order: from the list of the pairs that
+ * may touch while it holds (the pairs left out add exactly nothing, so the
+ * sums are the same to the bit), else over every visited pair. */
+static double forces(box *b)
+{
+    const int nc = (int)(b->L / (2.0 * b->rmax)), direct = nc < 3 || nc > b->cells;
+    double e = 0.0;
+    int k;
+    memset(b->f, 0, sizeof(double) * (size_t)b->dim * (size_t)b->n);
+    if (!list_holds(b, nc)) {
+        b->npair = 0;
+        b->listed = direct ? -1 : nc;
+        visit_pairs(b, nc, b->cell, list_pair, NULL);
+        memcpy(b->x0, b->x, sizeof(double) * (size_t)b->dim * (size_t)b->n);
+    }
+    if (!b->listed) {
+        visit_pairs(b, nc, NULL, sum_pair, &e);
+        return e;
+    }
+    for (k = 0; k < b->npair; ++k)
+        e += pair_force(b, b->pair[2 * k], b->pair[2 * k + 1]);
     return e;
 }
 
@@ -130,6 +234,7 @@ static double relax(box *b, double ftol)
     p.place = wrap_cb;
     p.ctx = b;
     p.dt_max = 1.0;
+    b->listed = 0; /* the box may have been put back (L and x) since */
     return sbc_fire_minimize(&p, ftol, 20000);
 }
 
@@ -139,6 +244,25 @@ static void scale_box(box *b, double L)
     for (k = 0; k < b->dim * b->n; ++k)
         b->x[k] *= L / b->L;
     b->L = L;
+    b->listed = 0;
+}
+
+/* Whether a particle other than `corner`, its centre taken relative to the
+   corner's, comes within its radius of every face of the box: it would cross
+   the faces at the corner as the corner particle does. */
+static int crosses_corner(const box *keep, const double *r, int corner)
+{
+    int k, a;
+    for (k = 0; k < keep->n; ++k) {
+        int all = k != corner;
+        for (a = 0; a < keep->dim && all; ++a) {
+            const double x = wrap(keep->x[keep->dim * k + a] - keep->x[keep->dim * corner + a], keep->L);
+            all = x < r[k] || x > keep->L - r[k];
+        }
+        if (all)
+            return 1;
+    }
+    return 0;
 }
 
 /* the generated packing: m particles, centres x [dim m], radii r [m], the
@@ -180,17 +304,23 @@ static sbc_status generate(const sbc_generate_def *def, int dim, generated *p, s
     b.cells = (int)(dim == 3 ? cbrt((double)n) : sqrt((double)n)) + 1;
     b.head = malloc(sizeof(int) * (size_t)(dim == 3 ? b.cells * b.cells * b.cells : b.cells * b.cells));
     b.next = malloc(sizeof(int) * (size_t)n);
+    b.cell = malloc(sizeof(int) * (size_t)n);
+    b.x0 = malloc(sizeof(double) * dn);
+    b.pair = NULL;
+    b.npair = b.cap = b.listed = 0;
     keep.x = malloc(sizeof(double) * dn);
-    if (!b.x || !b.r || !b.v || !b.f || !b.head || !b.next || !keep.x) {
-        free(b.x); free(b.r); free(b.v); free(b.f); free(b.head); free(b.next); free(keep.x);
+    if (!b.x || !b.r || !b.v || !b.f || !b.head || !b.next || !b.cell || !b.x0 || !keep.x) {
+        box_free(&b, &keep);
         return sbc_fail(err, SBC_ERR_NOMEM, "generate: out of memory");
     }
     b.rmax = 0.0;
+    b.skin = 0.0;
     for (k = 0; k < n; ++k) {
         b.r[k] = def->r_min * (1.0 + (def->polydispersity - 1.0) * sbc_uniform(&s));
         area += measure(dim, b.r[k]);
         if (b.r[k] > b.rmax) b.rmax = b.r[k];
     }
+    b.skin = SKIN * b.rmax;
     /* start at a packing fraction of 0.5 (discs) or 0.3 (spheres) */
     b.L = dim == 3 ? cbrt(area / 0.3) : sqrt(area / 0.5);
     for (k = 0; k < dim * n; ++k)
@@ -249,7 +379,7 @@ static sbc_status generate(const sbc_generate_def *def, int dim, generated *p, s
     p->x = malloc(sizeof(double) * (size_t)dim * (size_t)cap);
     p->r = malloc(sizeof(double) * (size_t)cap);
     if (!p->x || !p->r) {
-        free(b.x); free(b.r); free(b.v); free(b.f); free(b.head); free(b.next); free(keep.x);
+        box_free(&b, &keep);
         free(p->x);
         free(p->r);
         memset(p, 0, sizeof *p);
@@ -259,12 +389,14 @@ static sbc_status generate(const sbc_generate_def *def, int dim, generated *p, s
        exact, and every copy sits at exactly +-L from its original both ways */
     keep.L = quantize(keep.L);
     /* the corner particle: a particle of radius r crossing the dim faces beside
-       a corner particle of radius R_c at the origin would have its centre
-       within r sqrt(dim) of it, and overlap it unless r > (1 + sqrt(dim)) R_c;
-       that one would be a second corner. Particle 0 when it is large enough
-       (every packing of polydispersity up to 2 in 2D), else the largest. */
+       a corner particle of radius R_c at the origin has its centre within
+       r sqrt(dim) of it, and overlaps it unless r >= R_c / (sqrt(dim) - 1)
+       (2.41 R_c in 2D, 1.37 R_c in 3D); that one would be a second corner, which
+       no frame takes. Particle 0 when it is large enough (every packing of
+       polydispersity up to 2 in 2D) or no particle crosses its corner, else the
+       largest, which no particle can cross. */
     corner = 0;
-    if (b.rmax > (1.0 + sqrt((double)dim)) * b.r[0])
+    if (b.rmax > (1.0 + sqrt((double)dim)) * b.r[0] || crosses_corner(&keep, b.r, 0))
         for (k = 1; k < n; ++k)
             if (b.r[k] > b.r[corner])
                 corner = k;
@@ -334,7 +466,7 @@ static sbc_status generate(const sbc_generate_def *def, int dim, generated *p, s
         info->fraction = inside / (dim == 3 ? keep.L * keep.L * keep.L : keep.L * keep.L);
         info->coordination = counted ? contacts / counted : 0.0;
     }
-    free(b.x); free(b.r); free(b.v); free(b.f); free(b.head); free(b.next); free(keep.x);
+    box_free(&b, &keep);
     return SBC_OK;
 }
 
