@@ -6,8 +6,8 @@ and top D, the sides P).
    aggregate's P on the mesh's edges, f_a = P . int N_a N0 dS (zero inside).
 2. The boundary nodes at (F - I) X, the four inside nodes free and started at u = 0: the macro Newton with the
    condensed tangent finds the uniform state again, quadratically (its second contraction at most a tenth of its
-   first, or the residual at round-off after two iterations); its residual ratios and those of the perturbation and the affine tangents are printed, and the nodal
-   forces at convergence against the same closed form.
+   first, or the residual at round-off after two iterations); its residual ratios and those of the perturbation
+   and the affine tangents are printed, and the nodal forces at convergence against the same closed form.
 3. (D) along the load path u = t (F2 - I) X on the boundary (F2 - I = 4 (F - I)) in one step with a Newton of at most 2 iterations, too few
    for the whole step: the step is reverted and cut in half, and the cut path ends bit for bit where two half steps
    from the start end, at the closed form's nodal forces.

@@ -108,9 +108,20 @@ def arguments(doc, n0, pressure, only):
     a.add_argument('--plot', default='build/servo-bc-plot')
     a.add_argument('--threads', type=int, default=2)
     a.add_argument('--only', default=only)
+    a.add_argument('--specimen', type=int, default=0)
     args = a.parse_args()
     os.makedirs(args.out, exist_ok=True)
     return args
+
+
+def point_seed(args, k):
+    """The seed of Gauss point k's packing: k + 1 in specimen 0, 10000 S + k + 1 in specimen S (--specimen)."""
+    return 10000 * args.specimen + k + 1
+
+
+def dns_seed(args):
+    """The seed of the DNS's packing: 1000, 10000 S + 1000 in specimen S."""
+    return 10000 * args.specimen + 1000
 
 
 def compare(name, args, L, us, fe2, dns, title):

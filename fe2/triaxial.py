@@ -6,9 +6,9 @@ statistics.
 The material: spheres of radii uniform in [1, 2] mm (kn 1e4 N/m, ks 2e3 N/m, mu 0.4, 2000 kg/m^3, dt 2e-6 s), a
 periodic packing jammed by the runner's `generate periodic` and compressed by 1 % (`strain 0.01`), so that it
 carries a prestress. Gauss point k gets its own packing of n0 spheres (seed k + 1); the DNS packing has n0 times
-the number of Gauss points (seed 1000), and its box sets the specimen's side L. (T) points hold their frame's
-rotations (`rotation zero`: on irregular sphere packings the paper's free rotations carry nothing,
-docs/frame3d.md) and solve statically (`interior newton`).
+the number of Gauss points (seed 1000), and its box sets the specimen's side L; --specimen S adds 10000 S to every
+seed. (T) points hold their frame's rotations (`rotation zero`: on irregular sphere packings the paper's free
+rotations carry nothing, docs/frame3d.md) and solve statically (`interior newton`).
 
 The test: the four side faces under the lateral pressure p (N/m^2) from the start (dead load), the platens smooth
 (the bottom's vertical displacement 0, the top's -u; in FE the corner at the origin held in x and y and the corner
@@ -23,7 +23,8 @@ after writing everything. (T) points run on request (--only D,P,T,DNS): on these
 them lose their stress at F = I (docs/fe2.md, "The 3D macro model"), and the path stops. Usage (defaults: the
 smallest size, about 15 s on 2 cores; docs/fe2.md the full one):
   python3 fe2/triaxial.py [--n0 15] [--elements 1] [--steps 4] [--strain 0.01] [--pressure 2e4] [--out out/fe2]
-                          [--runner build/servo-bc] [--plot build/servo-bc-plot] [--threads 2] [--only D,P,DNS]"""
+                          [--runner build/servo-bc] [--plot build/servo-bc-plot] [--threads 2] [--only D,P,DNS]
+                          [--specimen 0]"""
 import os
 import sys
 import time
@@ -49,7 +50,7 @@ def fe2(bc, args, L, us):
     t0 = time.time()
 
     def make_point(k, X):
-        x, r, _ = packing(args.runner, args.out, args.n0, k + 1)
+        x, r, _ = packing(args.runner, args.out, args.n0, specimens.point_seed(args, k))
         return macro.core.MaterialPoint(x, r, WORDS[bc], kn=KN, ks=KS, mu=MU, density=DENSITY, dt=DT, dim=3)
 
     n = args.elements
@@ -70,20 +71,20 @@ def dns(args, L, us):
     t0 = time.time()
     csv = os.path.join(args.out, 'triaxial_dns_rows.csv')
     n0 = args.n0 * 8 * args.elements ** 3
-    packing(args.runner, args.out, n0, 1000)
+    packing(args.runner, args.out, n0, specimens.dns_seed(args))
     p = -args.pressure
     specimens.run(args.runner, 'dimension 3\n%s\nread_packing %s\n'
                   'servo_bc mixed xlo T D D xhi T D D ylo D T D yhi D T D zlo D D D zhi D D D '
                   'stress P11 %.17g 0 stress P22 %.17g 0 F 1 0 0 0 1 0 0 0 %.17g increments %d accuracy tight file %s\n'
-                  'run\n' % (LAW, specimens.packing_path(args.out, n0, 1000, 3), p, p, 1.0 - us[-1] / L, len(us) - 1,
-                             csv), os.path.join(args.out, 'triaxial_dns.sbc'))
+                  'run\n' % (LAW, specimens.packing_path(args.out, n0, specimens.dns_seed(args), 3), p, p,
+                             1.0 - us[-1] / L, len(us) - 1, csv), os.path.join(args.out, 'triaxial_dns.sbc'))
     head, *rows = [line.strip().split(',') for line in open(csv)]
     P33, F33 = head.index('P33'), head.index('F33')
     forces = [-float(row[P33]) * L * L for row in rows]
     got = [(1.0 - float(row[F33])) * L for row in rows]
     if len(rows) != len(us) or max(abs(a - b) for a, b in zip(got, us)) > 1e-9 * L:
         sys.exit('fe2/triaxial.py: the DNS rows (%d) are not at the platen displacements of FE^2' % len(rows))
-    with open(specimens.packing_path(args.out, n0, 1000, 3)) as f:
+    with open(specimens.packing_path(args.out, n0, specimens.dns_seed(args), 3)) as f:
         spheres = f.readline().strip('# \n')
     return forces, spheres, time.time() - t0
 
@@ -91,7 +92,7 @@ def dns(args, L, us):
 def main():
     args = specimens.arguments(__doc__, 15, 2e4, 'D,P,DNS')
     points = 8 * args.elements ** 3
-    _, _, box = packing(args.runner, args.out, args.n0 * points, 1000)
+    _, _, box = packing(args.runner, args.out, args.n0 * points, specimens.dns_seed(args))
     L = box[1] - box[0]
     us = [L * args.strain * k / args.steps for k in range(args.steps + 1)]
     print('fe2 triaxial: specimen a cube of %.6g m, %d^3 elements, %d points of n0 %d spheres, p %g N/m^2, u to '

@@ -1,7 +1,8 @@
 #!/bin/bash
 # make fe2-demo at its smallest (tests/, in make fe2-patch): fe2/biaxial.py with one element of four (D)
 # points of n0 20 discs and a DNS of n0 80, one step of u. The DNS holds the lateral stress P11 = -p at every
-# row (tight: 1e-6), both forces are compressive and grow with u, and the CSV has the issue's columns.
+# row (tight: 1e-6), both forces are compressive and grow with u, and the CSV has the issue's columns; then
+# fe2/size_study.py at its smallest (one specimen of n0 25, (D) only).
 # Prints "N passed, N failed". Usage: fe2_demo.sh LIBSERVO_BC RUNNER PLOT [PYTHON]
 lib=${1:?usage: fe2_demo.sh LIBSERVO_BC RUNNER PLOT [PYTHON]}
 runner=${2:?}; plot=${3:?}; py=${4:-python3}
@@ -32,5 +33,13 @@ SERVO_BC_LIB=$lib timeout 600 "$py" "$here/../fe2/biaxial.py" --n0 20 --steps 1 
   --runner "$runner" --plot "$plot" --out "$out" > "$out/log2" 2>&1
 grep -q "announces .* discs and it holds .*; generating it again" "$out/log2" && cmp -s "$out/first.csv" "$out/biaxial.csv"
 check $? "a torn cached packing is found by its count, made again, and gives the same rows ($(grep -o 'announces [0-9]* discs and it holds [0-9]*' "$out/log2"))"
+# the size study at its smallest: one specimen of n0 25, (D) only; its gain error recomputed from the run's own CSV
+SERVO_BC_LIB=$lib timeout 600 "$py" "$here/../fe2/size_study.py" --n0s 25 --specimens 1 --only D --steps 1 \
+  --runner "$runner" --plot "$plot" --out "$out/size" > "$out/size.log" 2>&1
+check $? "fe2/size_study.py at its smallest runs ($(tail -1 "$out/size.log"))"
+awk -F, 'FNR == 1 { next } FILENAME ~ /biaxial/ { f[FNR] = $2; d[FNR] = $3; n = FNR; next }
+         { want = (f[n] - f[2]) / (d[n] - d[2]) - 1; e = $6 - want; if (e < 0) e = -e; rows++; ok = e <= 1e-12 }
+         END { exit !(rows == 1 && ok) }' "$out/size/n25_s0/biaxial.csv" "$out/size/size_study.csv" 2>/dev/null
+check $? "size_study.csv: one (D) row whose gain error is its biaxial.csv's (F(u) - F(0)) / (F_DNS(u) - F_DNS(0)) - 1"
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
