@@ -68,11 +68,12 @@ def write_curves(out, name, us, curves, plot, title, ylabel):
     return names
 
 
-def platen_path(model, bottom, top, held, lateral, us, label, tolerance):
+def platen_path(model, bottom, top, held, lateral, us, label, tolerance, histories=None):
     """The platen test of the demos: the dofs bottom and held at 0, top at -u for each u of us in turn (one load
     step each, cut where it must), under the nodal loads lateral, the macro Newton to tolerance of the reaction.
     Returns the top force (N, compression positive: minus the reactions of top) at each u reached; a path that
-    stops (MacroFailure) prints why and returns the forces before it."""
+    stops (MacroFailure) prints why and returns the forces before it. histories (a list): gets the macro Newton's
+    residual history of every committed step."""
     fixed = np.concatenate([bottom, top, held])
     forces, u_prev, seen = [], 0.0, []
 
@@ -83,7 +84,8 @@ def platen_path(model, bottom, top, held, lateral, us, label, tolerance):
         seen.clear()
         try:
             cuts = model.load(fixed, values_at(u_prev, u), 1, tol=tolerance, max_iterations=15,
-                              on_step=lambda t, m, history: seen.append(len(history) - 1),
+                              on_step=lambda t, m, history: (seen.append(len(history) - 1),
+                                                             histories is not None and histories.append(history)),
                               external_at=lambda t: lateral)
         except macro.MacroFailure as e:  # the path ends here; the rows before it stand
             print('fe2 %s stopped at u = %g m: %s' % (label, u, e), flush=True)
