@@ -12,6 +12,7 @@
 #   make fe2-patch   the FE^2 patch test on GetFEM (docs/fe2.md)
 #   make fe2-demo    the FE^2 biaxial test with (D), (P), (T) points beside a DNS: out/fe2/biaxial.csv, .svg
 #   make fe2-demo3d  the 3D FE^2 triaxial test with (D), (P) points beside a DNS: out/fe2/triaxial.csv, .svg
+#   make femxdem  FEMxDEM (YADE + escript) beside servo_bc's FE^2 on one of its RVEs: out/femxdem/side_by_side.md
 #   make fuzz     libFuzzer campaigns over the core's input surfaces (FUZZ_RUNS per harness; docs/reliability.md)
 #   make install PREFIX=/usr/local   the library, headers, runner, Python modules, docs, pkg-config and CMake
 #                 files (DESTDIR too); make uninstall PREFIX=... removes them (docs/core.md, "Installing")
@@ -53,7 +54,7 @@ FUZZ_RUNS  ?= 1000000
 FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src -DSBC_PACKING_MAX=64L
 
 .PHONY: all demo compare check deps install uninstall check-install check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
-  check-yade fe2-patch fe2-demo fe2-demo3d lammps liggghts fuzz figures \
+  check-yade fe2-patch fe2-demo fe2-demo3d femxdem lammps liggghts fuzz figures \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
 
@@ -294,6 +295,7 @@ fe2-patch: $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(B)/fe2-deps.in
 	bash tests/fe2_demo.sh $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(FE2_PYTHON)
 	bash tests/fe2_irregular.sh $(B)/libservo_bc.so $(B)/servo-bc $(FE2_PYTHON)
 	bash tests/fe2_demo3d.sh $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(FE2_PYTHON)
+	SERVO_BC_LIB=$(B)/libservo_bc.so $(FE2_PYTHON) tests/fe2_femxdem_export.py $(B)/servo-bc $(B)/fe2-femxdem-export
 
 # FE2_DEMO: fe2/biaxial.py's options, e.g. '--elements 4 --n0 100' for the full size (docs/fe2.md)
 FE2_DEMO ?=
@@ -307,6 +309,12 @@ FE2_DEMO3D ?=
 fe2-demo3d: $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot $(B)/fe2-deps.installed
 	SERVO_BC_LIB=$(B)/libservo_bc.so $(FE2_PYTHON) fe2/triaxial.py --runner $(B)/servo-bc --plot $(B)/servo-bc-plot \
 	  --out out/fe2 $(FE2_DEMO3D)
+
+# FEMXDEM: the environment fe2/femxdem/run.sh takes, e.g. 'FEMXDEM_STEPS=16' (docs/fe2.md, "FEMxDEM side by side")
+FEMXDEM ?=
+femxdem: $(B)/libservo_bc.so $(B)/servo-bc-plot $(B)/fe2-deps.installed
+	bash scripts/install-deps.sh femxdem
+	env SERVO_BC_LIB=$(CURDIR)/$(B)/libservo_bc.so $(FEMXDEM) bash fe2/femxdem/run.sh out/femxdem
 
 $(B)/bench_engine: bench/engine_throughput.c $(B)/libservo_bc.a
 	$(CC) $(CFLAGS) -O3 -o $@ $< $(B)/libservo_bc.a $(LDLIBS)

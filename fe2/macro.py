@@ -15,6 +15,7 @@ convergence test, the commit / revert of every point and the cut of a load step 
 import concurrent.futures
 import os
 import sys
+import warnings
 
 import getfem as gf
 import numpy as np
@@ -191,7 +192,14 @@ class Macro:
             if iteration == max_iterations:
                 break
             K = self.stiffness(self.tangents())
-            U[free] -= scipy.sparse.linalg.spsolve(K[free][:, free].tocsc(), r[free])
+            with warnings.catch_warnings():
+                warnings.simplefilter('ignore', scipy.sparse.linalg.MatrixRankWarning)
+                dU = scipy.sparse.linalg.spsolve(K[free][:, free].tocsc(), r[free])
+            if not np.all(np.isfinite(dU)):
+                self.last_message = 'step %d, iteration %d: the macro stiffness is singular (the points\' tangents ' \
+                    'leave a mode of the mesh without stiffness)' % (step, iteration)
+                return False, 0.5, history
+            U[free] -= dU
         self.last_message = 'step %d: the macro Newton did not converge in %d iterations (residual %.3g of the ' \
             'reaction)' % (step, max_iterations, history[-1])
         return False, 0.5, history

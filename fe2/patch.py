@@ -12,7 +12,7 @@ and top D, the sides P).
    for the whole step: the step is reverted and cut in half, and the cut path ends bit for bit where two half steps
    from the start end, at the closed form's nodal forces.
 4. A step whose Newton cannot converge (a tolerance no residual meets) stops the path with MacroFailure, whose
-   message and `history` carry the last attempt's residuals.
+   message and `history` carry the last attempt's residuals; a singular macro stiffness fails the step by name.
 5. In 3D: a 2 x 2 x 2 mesh of trilinear hexahedra whose 64 Gauss points carry a prestressed 4 x 4 x 4 frictional
    cubic lattice of spheres under (D), (P) and (T) (`rotation zero interior newton`: docs/fe2.md, "The 3D macro
    model"), deformed by a full 3 x 3 F: 1. and 2. again, with the condensed tangent.
@@ -137,6 +137,13 @@ except macro.MacroFailure as e:
 print('patch D failed load step: its Newton history %s in the exception' % history)
 if not (history is not None and len(history) == 3 and 'its Newton history: ' in message):
     print('FAIL patch D failed load step: expected MacroFailure with the last attempt\'s 3 residuals')
+    failures += 1
+# a singular macro stiffness (points whose tangents leave a mode unresisted) fails the step by name, never a NaN F
+stuck.tangents = lambda: [[0.0] * 81] * stuck.count
+converged, _, history = stuck.newton(edge, 0.5 * goal[edge], tol=1e-8, max_iterations=4)
+print('patch D singular macro stiffness: converged %s, %s' % (converged, getattr(stuck, 'last_message', '')))
+if converged or 'the macro stiffness is singular' not in stuck.last_message:
+    print('FAIL patch D singular macro stiffness: expected the step to fail naming the singular stiffness')
     failures += 1
 
 # 5. in 3D

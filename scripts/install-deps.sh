@@ -7,6 +7,7 @@
 #   scripts/install-deps.sh yade     the Debian YADE package (make yade, make check)
 #   scripts/install-deps.sh fuzz     clang with libFuzzer (make fuzz)
 #   scripts/install-deps.sh fe2      GetFEM's Python module, NumPy, SciPy (make fe2-patch, make fe2-demo)
+#   scripts/install-deps.sh femxdem  YADE and esys-escript: FEMxDEM, the reference FEM x DEM code (make femxdem)
 #   scripts/install-deps.sh install  pkg-config, CMake, pip and setuptools (make check-install)
 # Already-installed tools are left alone; without root or apt-get it only reports.
 set -euo pipefail
@@ -56,7 +57,11 @@ for what in "$@"; do
     yade)
       command -v yade >/dev/null || need+=(yade python3-yade)
       ;;
-    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev, liggghts-dev, yade, fuzz, fe2 or install)" >&2; exit 2 ;;
+    femxdem)
+      command -v yade-double >/dev/null || need+=(yade python3-yade)
+      [ -d /usr/lib/python3-escript/esys ] || need+=(python3-escript)
+      ;;
+    *) echo "install-deps: unknown set '$what' (expected core, lammps, lammps-dev, liggghts-dev, yade, femxdem, fuzz, fe2 or install)" >&2; exit 2 ;;
   esac
 done
 [ ${#need[@]} -eq 0 ] && exit 0

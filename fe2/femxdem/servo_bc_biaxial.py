@@ -5,7 +5,7 @@ corner held sideways: a bilinear element has no bottom centre), the top moved do
 the condensed tangent, the macro Newton to 1e-4 of the reaction. Forces per unit thickness: servo_bc's 2D stress of
 a disc packing 0.1 m thick is the YADE stress (Pa) times 0.1 m.
 
-Writes OUT/servo_bc.csv (the columns of OUT/femxdem.csv). Usage: servo_bc_biaxial.py OUT; FEMXDEM_ELEMENTS (1),
+Writes OUT/servo_bc.csv (the columns of OUT/femxdem.csv, and the first Gauss point's committed F). Usage: servo_bc_biaxial.py OUT; FEMXDEM_ELEMENTS (1),
 FEMXDEM_STEPS (4), FEMXDEM_STRAIN (0.0025), FEMXDEM_WORDS ('P accuracy tight'), FEMXDEM_THREADS (2) by environment,
 as the FEMxDEM side takes them."""
 import json
@@ -50,7 +50,7 @@ def main():
     corner = np.flatnonzero(np.isclose(xs, 0.0) & np.isclose(ys, 0.0) & (c == 0))
     lateral = model.traction_forces([-CONFINING * t, 0, 0, 0, 0, 0, 0, 0, 0])
     with open(os.path.join(out, 'servo_bc.csv'), 'w') as f:
-        f.write('step,u,force,iterations,cpu_per_point,uncertified,residual,wall,point_bytes\n')
+        f.write('step,u,force,iterations,cpu_per_point,uncertified,residual,wall,point_bytes,F11,F12,F21,F22\n')
         for step in range(STEPS + 1):
             u = STRAIN * LY * step
             c0, t0, seen = time.process_time(), time.time(), []
@@ -59,9 +59,10 @@ def main():
             if not forces:
                 sys.exit('servo_bc_biaxial.py: the path stopped at step %d (above)' % step)
             cpu, wall = time.process_time() - c0, time.time() - t0
-            f.write('%d,%.17g,%.17g,%d,%.6f,%d,%.3g,%.3f,%d\n' % (step, u, forces[0] / t, sum(len(h) - 1 for h in seen),
-                                                                   cpu / model.count, model.uncertified,
-                                                                   seen[-1][-1], wall, state))
+            F = model.deformation(model.U)[0]
+            f.write('%d,%.17g,%.17g,%d,%.6f,%d,%.3g,%.3f,%d,%.17g,%.17g,%.17g,%.17g\n'
+                    % (step, u, forces[0] / t, sum(len(h) - 1 for h in seen), cpu / model.count, model.uncertified,
+                       seen[-1][-1], wall, state, F[0], F[1], F[3], F[4]))
             f.flush()
 
 
