@@ -4,6 +4,7 @@ import argparse
 import os
 import subprocess
 import sys
+import time
 
 import numpy as np
 
@@ -72,10 +73,15 @@ def platen_path(model, bottom, top, held, lateral, us, label, tolerance, histori
     """The platen test of the demos: the dofs bottom and held at 0, top at -u for each u of us in turn (one load
     step each, cut where it must), under the nodal loads lateral, the macro Newton to tolerance of the reaction.
     Returns the top force (N, compression positive: minus the reactions of top) at each u reached; a path that
-    stops (MacroFailure) prints why and returns the forces before it. histories (a list): gets the macro Newton's
+    stops (MacroFailure) prints why and returns the forces before it. A line per macro iteration (u, iteration,
+    residual over the reaction, seconds since the path began) and one per step. histories (a list): gets the macro Newton's
     residual history of every committed step."""
     fixed = np.concatenate([bottom, top, held])
-    forces, u_prev, seen = [], 0.0, []
+    forces, u_prev, seen, t0 = [], 0.0, [], time.time()
+
+    def progress(step, iteration, residual):   # a line per macro iteration: a long step is never silent
+        print('fe2 %s: u %.4e m, iteration %d, residual %.3e of the reaction, %.1f s'
+              % (label, u, iteration, residual, time.time() - t0), flush=True)
 
     def values_at(u0, u1):
         return lambda t: np.concatenate([np.zeros(len(bottom)), np.full(len(top), -(u0 + t * (u1 - u0))),
@@ -86,7 +92,7 @@ def platen_path(model, bottom, top, held, lateral, us, label, tolerance, histori
             cuts = model.load(fixed, values_at(u_prev, u), 1, tol=tolerance, max_iterations=15,
                               on_step=lambda t, m, history: (seen.append(len(history) - 1),
                                                              histories is not None and histories.append(history)),
-                              external_at=lambda t: lateral)
+                              external_at=lambda t: lateral, on_iteration=progress)
         except macro.MacroFailure as e:  # the path ends here; the rows before it stand
             print('fe2 %s stopped at u = %g m: %s' % (label, u, e), flush=True)
             return forces

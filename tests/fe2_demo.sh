@@ -14,6 +14,10 @@ check() { if [ "$1" = 0 ]; then passed=$((passed + 1)); echo "fe2 demo: $2"; els
 SERVO_BC_LIB=$lib timeout 600 "$py" "$here/../fe2/biaxial.py" --n0 20 --steps 1 --only D,DNS --pressure 50 \
   --runner "$runner" --plot "$plot" --out "$out" > "$out/log" 2>&1
 check $? "fe2/biaxial.py at its smallest runs ($(tail -1 "$out/log"))"
+n_it=$(grep -c '^fe2 (D): u .* m, iteration [0-9]*, residual .* of the reaction, .* s$' "$out/log")
+n_step=$(awk '/^fe2 \(D\): u .* Newton iterations/ { split($0, a, "Newton iterations "); split(a[2], b, ","); n = split(b[1], c, "+"); for (i = 1; i <= n; ++i) t += c[i] + 1 } END { print t + 0 }' "$out/log")
+[ "$n_it" -gt 0 ] && [ "$n_it" = "$n_step" ]
+check $? "a progress line per macro iteration, with its residual and elapsed time ($n_it lines, as many as the steps' iterations say)"
 [ "$(head -1 "$out/biaxial.csv" 2>/dev/null)" = "u,force_D,force_DNS" ] && [ "$(wc -l < "$out/biaxial.csv")" = 3 ]
 check $? "biaxial.csv: u,force_D,force_DNS and 2 rows"
 awk -F, 'NR == 2 { d0 = $2; n0 = $3 } NR == 3 { ok = d0 > 0 && n0 > 0 && $2 > d0 && $3 > n0 } END { exit !ok }' \
