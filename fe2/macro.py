@@ -66,7 +66,8 @@ def _tangent_column_major(rows, dim=2):
 class Macro:
     """A rectangle [0, W] x [0, H] of nx x ny bilinear elements (lengths (W, H), divisions (nx, ny)), or a box
     [0, W] x [0, H] x [0, D] of trilinear ones (lengths (W, H, D), divisions (nx, ny, nz)), a material point per
-    Gauss point made by make_point(index, X) (X the point's reference position, m). tangent: 'condensed', 'affine'
+    Gauss point made by make_point(index, X) (X the point's reference position, m), called from `threads` threads at
+    once (each call makes its own point; a make_point that writes a file shared with another call must lock it). tangent: 'condensed', 'affine'
     or 'perturbation' (step h)."""
 
     BOUNDARY = 1  # the mesh region of the outer faces
@@ -95,11 +96,12 @@ class Macro:
         rank, size = (comm.Get_rank(), comm.Get_size()) if comm is not None else (0, 1)
         self.count = len(where)
         self.mine = list(range(rank, self.count, size))
-        self.points = [make_point(k, where[k]) for k in self.mine]
+        self.pool = concurrent.futures.ThreadPoolExecutor(max(1, threads))
+        # the points are made on the threads (a point's creation, a relaxation at F = I, runs in C without the GIL)
+        self.points = list(self.pool.map(lambda k: make_point(k, where[k]), self.mine))
         self.X = self.mf.basic_dof_nodes()          # [dim, ndof] the node of each dof
         self.comp = np.arange(self.mf.nbdof()) % d   # the component of each dof (Q1 vector: interleaved)
         self.U = np.zeros(self.mf.nbdof())
-        self.pool = concurrent.futures.ThreadPoolExecutor(max(1, threads))
 
     # the fields at the Gauss points
     def deformation(self, U):
