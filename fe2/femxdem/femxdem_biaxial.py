@@ -5,7 +5,7 @@ smooth (the bottom's centre held), the top moved down by STRAIN of the height pe
 MultiScale with its own settings (rtol 1e-2 on the displacement correction, the tangent from
 utils.getStressAndTangent, 2 worker processes). Run by fe2/femxdem/run.sh (escript and yadeimport importable,
 the working folder out/femxdem); parameters by environment, as YADE rewrites sys.argv: FEMXDEM_ELEMENTS (1),
-FEMXDEM_STEPS (4), FEMXDEM_STRAIN (0.0025), FEMXDEM_WORKERS (2).
+FEMXDEM_STEPS (4), FEMXDEM_STRAIN (0.0025), FEMXDEM_WORKERS (2), FEMXDEM_RTOL (1e-2, the example's).
 
 Measures per step: the top force (N/m of thickness, compression positive), the macro iterations (FEMxDEM's own
 count), the CPU seconds per Gauss point (this process and its workers), each RVE's equilibrium after the step
@@ -32,6 +32,7 @@ ELEMENTS = int(os.environ.get('FEMXDEM_ELEMENTS', '1'))
 STEPS = int(os.environ.get('FEMXDEM_STEPS', '4'))
 STRAIN = float(os.environ.get('FEMXDEM_STRAIN', '0.0025'))
 WORKERS = int(os.environ.get('FEMXDEM_WORKERS', '2'))
+RTOL = float(os.environ.get('FEMXDEM_RTOL', '1e-2'))
 LX, LY, CONFINING = 0.05, 0.1, -1.e5   # m, m, Pa (the example's)
 
 
@@ -69,7 +70,7 @@ def main():
     domain = Rectangle(l0=LX, l1=LY, n0=nx, n1=ny, order=2, integrationOrder=2)
     ng = 4 * nx * ny
     c0, t0 = time.process_time() + children_cpu(), time.time()
-    prob = MultiScale(domain=domain, ng=ng, np=WORKERS, random=False, rtol=1e-2, usePert=False, verbose=True)
+    prob = MultiScale(domain=domain, ng=ng, np=WORKERS, random=False, rtol=RTOL, usePert=False, verbose=True)
     created = time.process_time() + children_cpu() - c0
     x, bx = domain.getX(), FunctionOnBoundary(domain).getX()
     top = whereZero(bx[1] - sup(bx[1]))
@@ -92,7 +93,7 @@ def main():
             prob.initialize(f=Nbc, specified_u_mask=Dbc, specified_u_val=Vbc)
             said = io.StringIO()
             with contextlib.redirect_stdout(said):
-                prob.solve(iter_max=100)
+                prob.solve(iter_max=100)   # after 100 iterations FEMxDEM commits the step as it stands
             cpu, wall = time.process_time() + children_cpu() - c0, time.time() - t0
             done = re.findall(r'Convergence reached after (\d+) iteration\(s\)! Relative error: (\S+)', said.getvalue())
             iterations = int(done[-1][0]) if done else -1
