@@ -15,12 +15,12 @@ saved scene), and the bytes of a stored RVE. Writes femxdem.csv, and rve.txt + r
 point (fe2/femxdem/rve_export.py)."""
 import contextlib
 import io
-import json
+import multiprocessing
 import os
 import re
 import time
 
-from esys.escript import Vector, Solution, FunctionOnBoundary, interpolate, integrate, matrix_mult, whereZero, sup
+from esys.escript import FunctionOnBoundary, interpolate, integrate, matrix_mult, whereZero, sup
 from esys.escript.pdetools import Projector
 from esys.finley import Rectangle
 from msFEM2D import MultiScale
@@ -38,7 +38,6 @@ LX, LY, CONFINING = 0.05, 0.1, -1.e5   # m, m, Pa (the example's)
 
 def children_cpu():
     """CPU seconds of this process's live children (FEMxDEM's pool workers), from /proc."""
-    import multiprocessing
     total = 0.0
     for child in multiprocessing.active_children():
         with open('/proc/%d/stat' % child.pid) as f:
@@ -85,9 +84,9 @@ def main():
     with open('femxdem.csv', 'w') as out:
         out.write('step,u,force,iterations,cpu_per_point,unbalanced_mean_max,unbalanced_largest_max,wall,'
                   'rve_bytes\n')
-        rows = [(0, 0.0, top_force(prob, top), 0, created / ng) + tuple(
-            max(v) for v in zip(*[equilibrium(s) for s in scenes])) + (time.time() - t0, len(scenes[0]))]
-        out.write('%d,%.17g,%.17g,%d,%.6f,%.6g,%.6g,%.3f,%d\n' % rows[0])
+        start = (0, 0.0, top_force(prob, top), 0, created / ng) + tuple(
+            max(v) for v in zip(*[equilibrium(s) for s in scenes])) + (time.time() - t0, len(scenes[0]))
+        out.write('%d,%.17g,%.17g,%d,%.6f,%.6g,%.6g,%.3f,%d\n' % start)
         for step in range(1, STEPS + 1):
             c0, t0 = time.process_time() + children_cpu(), time.time()
             prob.initialize(f=Nbc, specified_u_mask=Dbc, specified_u_val=Vbc)
