@@ -12,7 +12,8 @@ and top D, the sides P).
    for the whole step: the step is reverted and cut in half, and the cut path ends bit for bit where two half steps
    from the start end, at the closed form's nodal forces.
 4. A step whose Newton cannot converge (a tolerance no residual meets) stops the path with MacroFailure, whose
-   message and `history` carry the last attempt's residuals; a singular macro stiffness fails the step by name.
+   message and `history` carry the last attempt's residuals; a singular macro stiffness fails the step by name;
+   36 distinct points (lattices of spacings 1 + 1e-3 k) made on the model's 1 and 2 threads are the same bits.
 5. In 3D: a 2 x 2 x 2 mesh of trilinear hexahedra whose 64 Gauss points carry a prestressed 4 x 4 x 4 frictional
    cubic lattice of spheres under (D), (P) and (T) (`rotation zero interior newton`: docs/fe2.md, "The 3D macro
    model"), deformed by a full 3 x 3 F: 1. and 2. again, with the condensed tangent.
@@ -144,6 +145,16 @@ converged, _, history = stuck.newton(edge, 0.5 * goal[edge], tol=1e-8, max_itera
 print('patch D singular macro stiffness: converged %s, %s' % (converged, getattr(stuck, 'last_message', '')))
 if converged or 'the macro stiffness is singular' not in stuck.last_message:
     print('FAIL patch D singular macro stiffness: expected the step to fail naming the singular stiffness')
+    failures += 1
+# the points made on the model's threads: each point k its own (spacing by k), in order, the same bits on 1 and 2
+states = [[p.state() for p in macro.Macro((W, H), (NX, NY), lambda k, X: macro.lattice_point(
+    'P accuracy tight', spacing=2e-3 * (1.0 + 1e-3 * k), radius=1.01e-3 * (1.0 + 1e-3 * k)), threads=t).points]
+    for t in (1, 2)]
+distinct = len(set(states[0])) == len(states[0])
+print('patch P points made on 1 and 2 threads: %d points, distinct %s, the same bits in the same order %s'
+      % (len(states[0]), distinct, states[0] == states[1]))
+if not (distinct and states[0] == states[1]):
+    print('FAIL patch P points made on threads: expected distinct points, the same on 1 and 2 threads')
     failures += 1
 
 # 5. in 3D
