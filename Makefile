@@ -53,7 +53,7 @@ FUZZ_RUNS  ?= 1000000
 # under the sanitizers (a legitimate large packing is no finding)
 FUZZ_FLAGS  = -std=c11 -O1 -g -fno-omit-frame-pointer -Isrc_core/include -Isrc_core/src -DSBC_PACKING_MAX=64L
 
-.PHONY: all demo compare check deps install uninstall check-install check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
+.PHONY: all demo compare check check-core-and-sanitize deps install uninstall check-install check-core check-sanitize check-valgrind check-lammps check-liggghts check-cross-host \
   check-yade fe2-patch fe2-demo fe2-demo3d femxdem lammps liggghts fuzz figures \
   yade bench clean
 all: $(B)/libservo_bc.a $(B)/libservo_bc.so $(B)/servo-bc $(B)/servo-bc-plot
@@ -113,7 +113,7 @@ demo: all
 	$(B)/servo-bc inputs/demo_D_25.sbc
 
 # each part's wall time is printed after it (CI's budget is 30 minutes for all of them)
-CHECK_PARTS = check-core check-sanitize check-valgrind check-install check-lammps check-liggghts check-cross-host check-yade \
+CHECK_PARTS = check-core-and-sanitize check-valgrind check-install check-lammps check-liggghts check-cross-host check-yade \
   fe2-patch
 check: deps
 	@start=$$(date +%s); failed=; for part in $(CHECK_PARTS); do begun=$$(date +%s); \
@@ -125,6 +125,11 @@ check: deps
 
 deps:
 	@bash scripts/install-deps.sh core
+
+# make check's first part: check-core and check-sanitize side by side on two cores (each runs its suites one after
+# another; their scratch folders differ), each one's output printed whole when it ends (-O)
+check-core-and-sanitize:
+	@$(MAKE) --no-print-directory -j2 -O check-core check-sanitize
 
 # every public header in one C++ translation unit, linked without a wrapper
 $(B)/cxx_headers: tests/cxx_headers.cpp $(B)/libservo_bc.a $(wildcard src_core/include/sbc/*.h src_core/include/sbc/embedded/*.h)
@@ -161,7 +166,8 @@ check-core: $(B)/run_tests $(B)/servo-bc $(B)/servo-bc-plot $(B)/cxx_headers $(B
 	bash tests/newton.sh $(B)
 
 check-sanitize: $(B)/run_tests_san $(B)/servo-bc $(B)/servo-bc-plot $(FUZZ_REPLAY) $(B)/fuzz/corpus/restart/seed.bin
-	ASAN_OPTIONS=detect_leaks=1 $(B)/run_tests_san $(B)/servo-bc
+	@mkdir -p $(B)/test-tmp-san
+	ASAN_OPTIONS=detect_leaks=1 $(B)/run_tests_san $(B)/servo-bc $(B)/test-tmp-san
 	bash tests/reliability.sh $(B)
 
 # Fuzz harnesses (fuzz/): each surface replayed under ASan + UBSan with gcc in
