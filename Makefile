@@ -353,6 +353,7 @@ bench: $(B)/bench_engine $(B)/bench_spheres $(B)/bench_points $(B)/bench_tangent
 	bash bench/interior_scaling.sh $(B)/servo-bc
 	DIMENSION=3 bash bench/interior_scaling.sh $(B)/servo-bc
 	bash bench/generate_scaling.sh $(B)/servo-bc
+	bash bench/generate_scaling.sh $(B)/servo-bc "1000 10000 100000" "1000 10000" pressure
 	@$(MAKE) --no-print-directory femxdem FEMXDEM='FEMXDEM_DISCS=400' > $(B)/bench-femxdem.log 2>&1 && \
 	  tail -9 $(B)/bench-femxdem.log || echo "bench: FEMxDEM could not be run (see $(B)/bench-femxdem.log)"
 	@$(MAKE) --no-print-directory lammps liggghts > $(B)/bench-hosts.log 2>&1 || \

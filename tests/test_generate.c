@@ -394,8 +394,77 @@ static void corner_not_crossed(void)
     sbc_sphere_packing_free(&a);
 }
 
+/* protocol pressure: the same seed gives the same packing; touching (strain
+ * 0): no pair overlaps, and the pair that set the box touches within 1e-8 of
+ * its radii; strain 0.01 loads the contacts, a
+ * frictionless jammed packing's coordination (>= 2 dim less its rattlers),
+ * relaxed to 1e-6 of the mean contact force; spheres alike; the runner's
+ * keyword and its errors */
+static void pressure_protocol(void)
+{
+    sbc_generate_def d = sbc_generate_def_default();
+    sbc_packing a, b, c;
+    sbc_sphere_packing t;
+    sbc_generate_info ia, ib, ic, it;
+    sbc_error err;
+    double closest = 1.0, deepest = 0.0;
+    int i, j;
+    d.n = 300;
+    d.r_min = 1e-3;
+    d.protocol = SBC_GENERATE_PRESSURE;
+    CHECK(sbc_generate_periodic(&d, &a, &ia, &err) == SBC_OK);
+    CHECK(sbc_generate_periodic(&d, &b, &ib, &err) == SBC_OK);
+    CHECK(a.n == b.n && memcmp(a.x, b.x, sizeof(double) * 2 * (size_t)a.n) == 0 &&
+          memcmp(a.r, b.r, sizeof(double) * (size_t)a.n) == 0);
+    check_reconstruction(&a, &d, ia.L);
+    for (i = 0; i < a.n; ++i)
+        for (j = i + 1; j < a.n; ++j) {
+            const double dx = a.x[2 * j] - a.x[2 * i], dy = a.x[2 * j + 1] - a.x[2 * i + 1];
+            closest = fmin(closest, sqrt(dx * dx + dy * dy) / (a.r[i] + a.r[j]) - 1.0);
+        }
+    CHECK(closest >= 0.0 && closest < 1e-8 && ia.residual == 0.0);
+    CHECK(ia.fraction > 0.80 && ia.fraction < 0.87);
+    d.strain = 0.01;
+    CHECK(sbc_generate_periodic(&d, &c, &ic, &err) == SBC_OK);
+    /* the strained box is 0.99 of the jamming point extrapolated from the stages' pressures, the touching box
+       (every overlap opened) lies above that point by what the stages left unrelaxed */
+    CHECK(ic.L < 0.99 * ia.L && ic.L > 0.99 * 0.999 * ia.L);
+    for (i = 0; i < c.n; ++i)
+        for (j = i + 1; j < c.n; ++j) {
+            const double dx = c.x[2 * j] - c.x[2 * i], dy = c.x[2 * j + 1] - c.x[2 * i + 1];
+            deepest = fmax(deepest, (c.r[i] + c.r[j] - sqrt(dx * dx + dy * dy)) / d.r_min);
+        }
+    CHECK(deepest > 1e-3 && ic.fraction > 0.83 && ic.fraction < 0.87 && ic.coordination > 3.6 &&
+          ic.residual < 1e-6);
+    printf("  generate: protocol pressure, n0 300: touching at fraction %.4f (closest gap %.1e of the radii); strain "
+           "0.01: box %.6f of the touching one, fraction %.4f, coordination %.3f, largest net force %.1e of the "
+           "mean\n", ia.fraction, closest, ic.L / ia.L, ic.fraction, ic.coordination, ic.residual);
+    sbc_packing_free(&a);
+    sbc_packing_free(&b);
+    sbc_packing_free(&c);
+    d.n = 100;
+    d.protocol = SBC_GENERATE_PRESSURE;
+    CHECK(sbc_generate_periodic_3d(&d, &t, &it, &err) == SBC_OK);
+    CHECK(it.fraction > 0.58 && it.fraction < 0.72 && it.coordination > 5.0 && it.residual < 1e-6 && t.n > 100);
+    printf("  generate: protocol pressure, 100 spheres, strain 0.01: fraction %.4f, coordination %.3f, largest net "
+           "force %.1e of the mean\n", it.fraction, it.coordination, it.residual);
+    sbc_sphere_packing_free(&t);
+    CHECK(sbc_script_run_string("generate periodic n0 25 rmin 1e-3 polydispersity 2 seed 1 protocol fast\n", "bad",
+                                NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "bad:1: generate: protocol 'fast' is not known (expected shrink or pressure)"));
+    CHECK(sbc_script_run_string("generate periodic n0 25 rmin 1e-3 polydispersity 2 seed 1 strain 0.01 pressure 1\n",
+                                "bad", NULL, &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "bad:1: generate: keyword 'pressure' is not known (expected strain or protocol"));
+    CHECK(sbc_script_run_string("generate periodic n0 25 rmin 1e-3 polydispersity 2 seed 1 protocol\n", "bad", NULL,
+                                &err) == SBC_ERR_INPUT);
+    CHECK(sbc_script_run_string("generate periodic n0 2000001 rmin 1e-3 polydispersity 2 seed 1\n", "bad", NULL,
+                                &err) == SBC_ERR_INPUT &&
+          strstr(err.message, "n0 '2000001' is not valid (expected an integer from 4 to 2000000)"));
+}
+
 void test_generate(void)
 {
+    pressure_protocol();
     strained();
     spheres();
     corner_not_crossed();

@@ -24,33 +24,45 @@ static sbc_status generate_spheres(script *s, const sbc_generate_def *def, sbc_e
     if (s->log)
         fprintf(s->log,
                 "generate: n0 %d -> %d spheres after the periodic reconstruction; L = %.6g m, V = %.6g m^3, "
-                "volume fraction %.4f, coordination %.3f\n",
-                info.n0, info.n, info.L, info.L * info.L * info.L, info.fraction, info.coordination);
+                "volume fraction %.4f, coordination %.3f, largest net force %.1e of the mean contact force\n",
+                info.n0, info.n, info.L, info.L * info.L * info.L, info.fraction, info.coordination, info.residual);
     return SBC_OK;
 }
 
-/* generate periodic n0 N rmin R polydispersity PD seed S [strain E] (discs,
-   or spheres after 'dimension 3') */
+/* generate periodic n0 N rmin R polydispersity PD seed S [strain E] [protocol
+   shrink|pressure] (discs, or spheres after 'dimension 3') */
 sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
 {
-    static const char usage[] = "generate periodic n0 N rmin R polydispersity PD seed S [strain E]";
+    static const char usage[] =
+        "generate periodic n0 N rmin R polydispersity PD seed S [strain E] [protocol shrink|pressure]";
     sbc_generate_def def = sbc_generate_def_default();
     sbc_generate_info info;
     long n, seed;
-    sbc_status st = sbc_script_expect_count(nw == 12 ? 10 : nw, w, 10, usage, err);
+    int k;
+    sbc_status st = sbc_script_expect_count(nw > 10 && nw % 2 == 0 ? 10 : nw, w, 10, usage, err);
     if (st != SBC_OK) return st;
-    if (nw == 12) {
-        if ((st = sbc_script_expect_key("generate", w[10], "strain", usage, err)) != SBC_OK) return st;
-        if (sbc_parse_real(w[11], "strain", &def.strain, NULL) != SBC_OK || !(def.strain >= 0.0 && def.strain <= 0.05))
-            return sbc_fail(err, SBC_ERR_INPUT, "generate: strain '%s' is not valid (expected a real from 0 to 0.05, the "
-                            "linear compression of the jammed box)", w[11]);
+    for (k = 10; k + 1 < nw; k += 2) {
+        if (strcmp(w[k], "strain") == 0) {
+            if (sbc_parse_real(w[k + 1], "strain", &def.strain, NULL) != SBC_OK ||
+                !(def.strain >= 0.0 && def.strain <= 0.05))
+                return sbc_fail(err, SBC_ERR_INPUT, "generate: strain '%s' is not valid (expected a real from 0 to "
+                                "0.05, the linear compression of the jammed box)", w[k + 1]);
+        } else if (strcmp(w[k], "protocol") == 0) {
+            if (strcmp(w[k + 1], "shrink") != 0 && strcmp(w[k + 1], "pressure") != 0)
+                return sbc_fail(err, SBC_ERR_INPUT, "generate: protocol '%s' is not known (expected shrink or pressure)",
+                                w[k + 1]);
+            def.protocol = w[k + 1][0] == 'p' ? SBC_GENERATE_PRESSURE : SBC_GENERATE_SHRINK;
+        } else {
+            return sbc_fail(err, SBC_ERR_INPUT, "generate: keyword '%s' is not known (expected strain or protocol; "
+                            "usage: %s)", w[k], usage);
+        }
     }
     if (strcmp(w[1], "periodic") != 0)
         return sbc_fail(err, SBC_ERR_INPUT, "generate: style '%s' is not known (expected 'periodic')", w[1]);
     if ((st = sbc_script_expect_key("generate", w[2], "n0", usage, err)) != SBC_OK) return st;
-    if (sbc_parse_int(w[3], "n0", 4, 100000, &n, NULL) != SBC_OK)
-        return sbc_fail(err, SBC_ERR_INPUT, "generate: n0 '%s' is not valid (expected an integer from 4 to 100000)",
-                        w[3]);
+    if (sbc_parse_int(w[3], "n0", 4, SBC_GENERATE_MAX, &n, NULL) != SBC_OK)
+        return sbc_fail(err, SBC_ERR_INPUT, "generate: n0 '%s' is not valid (expected an integer from 4 to %d)",
+                        w[3], SBC_GENERATE_MAX);
     if ((st = sbc_script_expect_key("generate", w[4], "rmin", usage, err)) != SBC_OK) return st;
     if ((st = sbc_script_positive("generate", "rmin", w[5], &def.r_min, err)) != SBC_OK) return st;
     if ((st = sbc_script_expect_key("generate", w[6], "polydispersity", usage, err)) != SBC_OK) return st;
@@ -75,8 +87,8 @@ sbc_status sbc_script_generate(script *s, int nw, char **w, sbc_error *err)
     if (s->log)
         fprintf(s->log,
                 "generate: n0 %d -> %d particles after the periodic reconstruction; L = %.6g m, V = %.6g m^2, "
-                "volume fraction %.4f, coordination %.3f\n",
-                info.n0, info.n, info.L, info.L * info.L, info.fraction, info.coordination);
+                "volume fraction %.4f, coordination %.3f, largest net force %.1e of the mean contact force\n",
+                info.n0, info.n, info.L, info.L * info.L, info.fraction, info.coordination, info.residual);
     return SBC_OK;
 }
 

@@ -8,7 +8,8 @@
  * removed (jamming), and the last unjammed box is kept. We chose it over a
  * Lubachevsky-Stillinger event-driven code because it is short, deterministic
  * for a seed, needs no event calendar, and jams polydisperse discs at packing
- * fractions near the paper's 0.83-0.85.
+ * fractions near the paper's 0.83-0.85. A second protocol (SBC_GENERATE_PRESSURE,
+ * below) jams large packings in one compression instead.
  *
  * Then the geometrically periodic reconstruction of Sect. 4.2: the square is
  * shifted so that one particle's centre sits at a corner (that particle, copied
@@ -35,10 +36,21 @@ typedef struct sbc_generate_def {
     unsigned long seed;  /* random seed; the same seed gives the same packing */
     double strain;       /* > 0: the jammed box is compressed by this linear strain
                             and relaxed again, so that the packing carries load; 0: touching, free of force */
+    int protocol;        /* SBC_GENERATE_SHRINK (the default) or SBC_GENERATE_PRESSURE, below */
     FILE *log;           /* progress lines every SBC_GENERATE_PROGRESS seconds of a long generation (may be NULL) */
 } sbc_generate_def;
 
 #define SBC_GENERATE_PROGRESS 10.0
+#define SBC_GENERATE_MAX 2000000 /* particles before the reconstruction */
+
+/* The jamming protocols. SHRINK: the box shrinks by steps, the overlaps relaxed
+ * from scratch after each (FIRE to 1e-12 R_min), the step halved at each jam,
+ * down to 1e-5 of the box. PRESSURE: the enthalpy sum(overlap^2)/2 + P V
+ * minimized by FIRE over the centres and the box together, at overlaps of
+ * about 1e-2, 1e-3, ... 1e-6 R_min, each stage from the last (P = omega
+ * R_min^(2 - dim)), then the box stretched affinely until its largest overlap
+ * closes. The two give different packings of the same statistics. */
+enum { SBC_GENERATE_SHRINK = 0, SBC_GENERATE_PRESSURE = 1 };
 
 /* The paper's: n0 = 200, R_min = 0.67 mm, polydispersity 2, seed 1. */
 sbc_generate_def sbc_generate_def_default(void);
@@ -49,6 +61,8 @@ typedef struct sbc_generate_info {
     double fraction;    /* area of the discs inside the square / L^2 */
     double coordination;/* mean contacts per original disc (the n0 of the periodic square, images
                            included; touching within 1e-6 R_min) */
+    double residual;    /* the largest net force on a particle over the mean contact force (unit stiffness: the
+                           overlaps), 0 when none overlaps; how far from balance the relaxation left it */
 } sbc_generate_info;
 
 /* Generates the periodic packing; p is filled with the reconstructed discs
