@@ -12,7 +12,9 @@
 #   minutes); generating n0 1600 takes about 2 minutes, 6400 about 20.
 #   DIMENSION=3: sphere packings instead (`generate periodic n0 N rmin 1e-3
 #   polydispersity 1.5 seed 1 strain 0.01`, ks 5e3 N/m, mu 0.5, density 2650,
-#   dt 9e-6 s), F13 = 1e-4; defaults "100 300 600".
+#   dt 9e-6 s), F13 = 1e-4; defaults "100 300 600". PROTOCOL=pressure: the
+#   packings by `generate ... protocol pressure` (10^4 discs in 9 s, 10^5 in
+#   96 s; docs/benchmarks.md, "The packing generator").
 set -euo pipefail
 bin=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 export DIMENSION=${DIMENSION:-2}
@@ -24,13 +26,13 @@ trap 'rm -rf "$tmp"' EXIT
 contact='contact frictional kn 1e4 ks 2e3 mu 0.4
 density 2e3
 timestep 1e-6'
-generate='polydispersity 2 seed 1 strain 0.01'
+generate="polydispersity 2 seed 1 strain 0.01 protocol ${PROTOCOL:-shrink}"
 shear='F 1 0.0001 0 1'
 if [ "$DIMENSION" = 3 ]; then
   contact='contact frictional kn 1e4 ks 5e3 mu 0.5
 density 2650
 timestep 9e-6'
-  generate='polydispersity 1.5 seed 1 strain 0.01'
+  generate="polydispersity 1.5 seed 1 strain 0.01 protocol ${PROTOCOL:-shrink}"
   shear='F 1 0 0.0001 0 1 0 0 0 1'
 fi
 # shared: timed_run, particles, exponent
